@@ -1,0 +1,6 @@
+namespace OmronHostLink.Simulator;
+
+/// <summary>Placeholder until the simulator lands.</summary>
+public sealed class VirtualPlc
+{
+}

@@ -1,0 +1,2 @@
+namespace OmronHostLink;
+internal static class Placeholder { }

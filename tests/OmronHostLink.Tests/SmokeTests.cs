@@ -1,0 +1,2 @@
+namespace OmronHostLink.Tests;
+public class SmokeTests { [Fact] public void Builds() => true.Should().BeTrue(); }
