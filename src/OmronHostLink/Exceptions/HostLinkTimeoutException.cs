@@ -1,0 +1,15 @@
+namespace OmronHostLink;
+
+/// <summary>The PLC did not answer (or stopped answering in the middle of a frame) within the deadline.</summary>
+public sealed class HostLinkTimeoutException : HostLinkException
+{
+    /// <summary>Creates the exception.</summary>
+    public HostLinkTimeoutException(string message, TimeSpan timeout)
+        : base(message)
+    {
+        Timeout = timeout;
+    }
+
+    /// <summary>The deadline that passed.</summary>
+    public TimeSpan Timeout { get; }
+}

@@ -1,2 +1,0 @@
-namespace OmronHostLink;
-internal static class Placeholder { }

@@ -1,0 +1,58 @@
+using System.Globalization;
+
+namespace OmronHostLink.Protocol.Fins;
+
+/// <summary>
+/// A FINS response code (MRES × 256 + SRES). Bit 15 flags a network relay error, bit 7 a fatal CPU error and bit 6 a
+/// non-fatal CPU error; <see cref="Code"/> is the value with those flags masked off (<c>& 0x7F3F</c>).
+/// </summary>
+public readonly struct FinsEndCode : IEquatable<FinsEndCode>
+{
+    /// <summary>Creates the response code from its raw 16-bit value.</summary>
+    public FinsEndCode(ushort raw) => Raw = raw;
+
+    /// <summary>The response code as received, flags included.</summary>
+    public ushort Raw { get; }
+
+    /// <summary>The response code without its flags.</summary>
+    public ushort Code => (ushort)(Raw & 0x7F3F);
+
+    /// <summary>The main response code (MRES without the relay flag).</summary>
+    public byte MainCode => (byte)((Raw >> 8) & 0x7F);
+
+    /// <summary>The sub response code (SRES without the CPU flags).</summary>
+    public byte SubCode => (byte)(Raw & 0x3F);
+
+    /// <summary>Bit 15: an error occurred while relaying through a network.</summary>
+    public bool NetworkRelayError => (Raw & 0x8000) != 0;
+
+    /// <summary>Bit 7: the CPU Unit has a fatal error.</summary>
+    public bool FatalCpuError => (Raw & 0x0080) != 0;
+
+    /// <summary>Bit 6: the CPU Unit has a non-fatal error.</summary>
+    public bool NonFatalCpuError => (Raw & 0x0040) != 0;
+
+    /// <summary>True when the command completed (the CPU flags may still be set).</summary>
+    public bool IsSuccess => Code == 0x0000;
+
+    /// <summary>The meaning of <see cref="Code"/>, in the manuals' words.</summary>
+    public string Meaning => FinsEndCodes.Describe(Code);
+
+    /// <inheritdoc/>
+    public bool Equals(FinsEndCode other) => Raw == other.Raw;
+
+    /// <inheritdoc/>
+    public override bool Equals(object? obj) => obj is FinsEndCode other && Equals(other);
+
+    /// <inheritdoc/>
+    public override int GetHashCode() => Raw;
+
+    /// <summary>The code as four hex digits, as the manuals write it.</summary>
+    public override string ToString() => Raw.ToString("X4", CultureInfo.InvariantCulture);
+
+    /// <summary>Equality.</summary>
+    public static bool operator ==(FinsEndCode left, FinsEndCode right) => left.Equals(right);
+
+    /// <summary>Inequality.</summary>
+    public static bool operator !=(FinsEndCode left, FinsEndCode right) => !left.Equals(right);
+}
