@@ -1,0 +1,73 @@
+namespace OmronHostLink.Protocol.CMode;
+
+/// <summary>
+/// A C-mode command: a two-character header and its text. The message on the wire is <c>@</c> + unit + header + text,
+/// framed by <see cref="FrameWriter"/>.
+/// </summary>
+public abstract class CModeCommand
+{
+    /// <summary>Characters before the text: <c>@</c>, two unit digits, two header characters.</summary>
+    public const int PrefixLength = 5;
+
+    /// <summary>The two-character header, for example <c>RD</c>.</summary>
+    public abstract string Header { get; }
+
+    /// <summary>Length of the text after the header.</summary>
+    public abstract int TextLength { get; }
+
+    /// <summary>Characters at the start of the text that must stay in the first frame (address fields).</summary>
+    public virtual int FixedTextLength => TextLength;
+
+    /// <summary>Units the rest of the text may be cut between when the command spans frames (4 for word data).</summary>
+    public virtual int AtomLength => 1;
+
+    /// <summary>Whether the PLC answers the command (XZ gets no answer).</summary>
+    public virtual bool ExpectsResponse => true;
+
+    /// <summary>Whether the command may be divided into several frames (only area writes may).</summary>
+    public virtual bool MayUseSeveralFrames => false;
+
+    /// <summary>Characters a response spends on one data entry, for cutting a multi-frame response.</summary>
+    public virtual int ResponseAtomLength => 4;
+
+    /// <summary>Length of the unframed message: prefix and text.</summary>
+    public int MessageLength => PrefixLength + TextLength;
+
+    /// <summary>Writes the text after the header.</summary>
+    public abstract void WriteText(Span<byte> destination);
+
+    /// <summary>Writes the unframed message <c>@</c> + unit + header + text.</summary>
+    /// <returns>The number of characters written.</returns>
+    public int WriteMessage(int unit, Span<byte> destination)
+    {
+        Guard.Unit(unit);
+        destination[0] = (byte)'@';
+        HexAscii.WriteDecimal(unit, destination.Slice(1, 2));
+        destination[3] = (byte)Header[0];
+        destination[4] = (byte)Header[1];
+        WriteText(destination.Slice(PrefixLength, TextLength));
+        return MessageLength;
+    }
+
+    /// <summary>The unframed message as a new array.</summary>
+    public byte[] ToMessage(int unit)
+    {
+        var message = new byte[MessageLength];
+        WriteMessage(unit, message);
+        return message;
+    }
+
+    /// <summary>
+    /// Rebuilds a typed command from a received header and text, as a PLC does. A command the PLC would refuse raises
+    /// <see cref="CModeCommandRejectedException"/> carrying the end code the PLC answers with.
+    /// </summary>
+    public static CModeCommand Parse(ReadOnlySpan<byte> header, ReadOnlySpan<byte> text) => CModeCommandParser.Parse(header, text);
+
+    /// <summary>The header and text in printable form.</summary>
+    public override string ToString()
+    {
+        Span<byte> text = TextLength <= 256 ? stackalloc byte[TextLength] : new byte[TextLength];
+        WriteText(text);
+        return Header + FrameText.Printable(text);
+    }
+}

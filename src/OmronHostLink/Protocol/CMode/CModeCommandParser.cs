@@ -1,0 +1,176 @@
+using System.Text;
+
+namespace OmronHostLink.Protocol.CMode;
+
+/// <summary>Rebuilds typed C-mode commands from received text, refusing what a CS/CJ PLC refuses with the end code it answers.</summary>
+internal static class CModeCommandParser
+{
+    public static CModeCommand Parse(ReadOnlySpan<byte> header, ReadOnlySpan<byte> text)
+    {
+        if (header.Length != 2)
+        {
+            throw Reject(EndCode.UndefinedHeader, "A header has two characters.");
+        }
+
+        if (CModeAreaInfo.TryFromHeader(header, out CModeArea area, out bool write))
+        {
+            return write ? ParseWrite(area, text) : ParseRead(area, text);
+        }
+
+        string h = Encoding.ASCII.GetString(header.ToArray());
+        switch (h)
+        {
+            case "MS":
+                ExpectLength(text, 0, h);
+                return StatusReadCommand.Instance;
+            case "MM":
+                ExpectLength(text, 0, h);
+                return ModelReadCommand.Instance;
+            case "KC":
+                ExpectLength(text, 0, h);
+                return ForcedCancelCommand.Instance;
+            case "XZ":
+                ExpectLength(text, 0, h);
+                return AbortCommand.Instance;
+            case "SC":
+                ExpectLength(text, 2, h);
+                if (!HexAscii.TryParseByte(text, out byte mode) || mode is not (0x00 or 0x02 or 0x03))
+                {
+                    throw Reject(EndCode.EntryNumberDataError, "SC mode must be 00, 02 or 03.");
+                }
+
+                return new StatusChangeCommand(mode switch { 0x00 => PlcMode.Program, 0x02 => PlcMode.Monitor, _ => PlcMode.Run });
+            case "MF":
+                ExpectLength(text, 2, h);
+                if (!HexAscii.TryParseDecimal(text, out int clear) || clear > 1)
+                {
+                    throw Reject(EndCode.EntryNumberDataError, "MF error clear must be 00 or 01.");
+                }
+
+                return new ErrorReadCommand(clear == 1);
+            case "TS":
+                if (text.Length > TestCommand.MaxTextLength)
+                {
+                    throw Reject(EndCode.FrameLengthError, "TS text is too long.");
+                }
+
+                return new TestCommand(Encoding.ASCII.GetString(text.ToArray()));
+            case "KS":
+            case "KR":
+                return ParseForce(h == "KS", text);
+            case "FK":
+                return ParseMultipleForce(text);
+            default:
+                throw Reject(EndCode.UndefinedHeader, $"Unknown header {FrameText.Printable(header)}.");
+        }
+    }
+
+    private static AreaReadCommand ParseRead(CModeArea area, ReadOnlySpan<byte> text)
+    {
+        int bankLength = area == CModeArea.Em ? 2 : 0;
+        ExpectLength(text, bankLength + 8, CModeAreaInfo.ReadHeader(area));
+        int bank = ParseBank(area, text);
+        if (!HexAscii.TryParseDecimal(text.Slice(bankLength, 4), out int begin) || !HexAscii.TryParseDecimal(text.Slice(bankLength + 4, 4), out int count))
+        {
+            throw Reject(EndCode.EntryNumberDataError, "Begin word and count must be decimal digits.");
+        }
+
+        return Checked(() => new AreaReadCommand(area, begin, count, bank));
+    }
+
+    private static AreaWriteCommand ParseWrite(CModeArea area, ReadOnlySpan<byte> text)
+    {
+        int fixedLength = area == CModeArea.Em ? 6 : 4;
+        if (text.Length < fixedLength + 4 || (text.Length - fixedLength) % 4 != 0)
+        {
+            throw Reject(EndCode.FormatError, "Write data must be whole 4-digit words after the begin word.");
+        }
+
+        int bank = ParseBank(area, text);
+        if (!HexAscii.TryParseDecimal(text.Slice(fixedLength - 4, 4), out int begin))
+        {
+            throw Reject(EndCode.EntryNumberDataError, "Begin word must be decimal digits.");
+        }
+
+        var words = new ushort[(text.Length - fixedLength) / 4];
+        if (!HexAscii.TryParseWords(text.Slice(fixedLength), words))
+        {
+            throw Reject(EndCode.EntryNumberDataError, "Write data must be hexadecimal.");
+        }
+
+        return Checked(() => new AreaWriteCommand(area, begin, words, bank));
+    }
+
+    private static int ParseBank(CModeArea area, ReadOnlySpan<byte> text)
+    {
+        if (area != CModeArea.Em)
+        {
+            return 0;
+        }
+
+        if (!HexAscii.TryParseByte(text.Slice(0, 2), out byte bank))
+        {
+            throw Reject(EndCode.EntryNumberDataError, "EM bank must be two hex digits.");
+        }
+
+        return bank;
+    }
+
+    private static ForceBitCommand ParseForce(bool set, ReadOnlySpan<byte> text)
+    {
+        ExpectLength(text, 10, set ? "KS" : "KR");
+        if (!ForceAreaInfo.TryParse(text.Slice(0, 4), out ForceArea area)
+            || !HexAscii.TryParseDecimal(text.Slice(4, 4), out int word)
+            || !HexAscii.TryParseDecimal(text.Slice(8, 2), out int bit))
+        {
+            throw Reject(EndCode.EntryNumberDataError, "Area name, word or bit is not valid.");
+        }
+
+        return Checked(() => new ForceBitCommand(set, area, word, bit));
+    }
+
+    private static MultipleForceCommand ParseMultipleForce(ReadOnlySpan<byte> text)
+    {
+        ExpectLength(text, 24, "FK");
+        if (!ForceAreaInfo.TryParse(text.Slice(0, 4), out ForceArea area) || !HexAscii.TryParseDecimal(text.Slice(4, 4), out int word))
+        {
+            throw Reject(EndCode.EntryNumberDataError, "Area name or word is not valid.");
+        }
+
+        var actions = new ForceAction[16];
+        for (int i = 0; i < 16; i++)
+        {
+            int digit = text[8 + i] - '0';
+            if (digit is not (0 or 2 or 3 or 4 or 5 or 8))
+            {
+                throw Reject(EndCode.EntryNumberDataError, $"FK action for bit {15 - i} is not valid.");
+            }
+
+            actions[i] = (ForceAction)digit;
+        }
+
+        return Checked(() => new MultipleForceCommand(area, word, actions));
+    }
+
+    private static void ExpectLength(ReadOnlySpan<byte> text, int length, string header)
+    {
+        if (text.Length != length)
+        {
+            throw Reject(EndCode.FormatError, $"{header} takes {length} characters of text; {text.Length} were sent.");
+        }
+    }
+
+    private static T Checked<T>(Func<T> create)
+    {
+        try
+        {
+            return create();
+        }
+        catch (ArgumentException e)
+        {
+            throw Reject(EndCode.EntryNumberDataError, e.Message);
+        }
+    }
+
+    private static CModeCommandRejectedException Reject(EndCode code, string message) => new(code, message);
+}
