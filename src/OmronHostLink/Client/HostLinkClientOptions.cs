@@ -1,0 +1,78 @@
+using Microsoft.Extensions.Logging;
+using OmronHostLink.Link;
+
+namespace OmronHostLink;
+
+/// <summary>How a <see cref="HostLinkClient"/> talks to its PLCs. The defaults suit a CS/CJ at 9600 7E2.</summary>
+public sealed class HostLinkClientOptions
+{
+    /// <summary>The unit number the client itself addresses (0-31); other units through <see cref="HostLinkUnit.Unit"/>.</summary>
+    public int UnitNumber { get; set; }
+
+    /// <summary>
+    /// The line's character timing used for deadlines when the transport does not know it (TCP, streams).
+    /// Defaults to 9600 bps, 11 bits a character.
+    /// </summary>
+    public LineTiming LineTiming { get; set; } = LineTiming.Default;
+
+    /// <summary>
+    /// The time the PLC (and anything between it and us: a gateway, a network) may take to start answering a frame.
+    /// Each frame's deadline is this plus the frame's wire time. Default 300 ms.
+    /// </summary>
+    public TimeSpan TurnaroundAllowance { get; set; } = TimeSpan.FromMilliseconds(300);
+
+    /// <summary>How many times a read is repeated after a timeout or a damaged frame (ours or the PLC's: 13, A3). Default 2.</summary>
+    public int ReadRetries { get; set; } = 2;
+
+    /// <summary>
+    /// How many times a write is repeated after a timeout or damaged frame. Default 0: a write whose answer was lost may
+    /// have been executed, so repeating it is the caller's decision.
+    /// </summary>
+    public int WriteRetries { get; set; }
+
+    /// <summary>Which protocol reads and writes use where both can do the job. Default C-mode.</summary>
+    public HostLinkProtocol Protocol { get; set; } = HostLinkProtocol.CMode;
+
+    /// <summary>
+    /// Allow bit writes by reading the word, changing the bit and writing the word back, where FINS bit write is not wanted.
+    /// Off by default: anything that changes the word between the read and the write (the PLC program) is overwritten.
+    /// </summary>
+    public bool AllowReadModifyWriteBits { get; set; }
+
+    /// <summary>Word order for 32-bit values (Omron: low word first).</summary>
+    public WordOrder WordOrder { get; set; } = WordOrder.LowWordFirst;
+
+    /// <summary>
+    /// The line echoes what we send before the PLC answers (2-wire RS-485 adapters without echo suppression): expect and
+    /// check our own frames before each answer.
+    /// </summary>
+    public bool LocalEcho { get; set; }
+
+    /// <summary>The FINS response wait time, 0-15 in units of 10 ms, sent in every FA frame.</summary>
+    public int FinsResponseWait { get; set; }
+
+    /// <summary>Where the client logs (frames at Trace, transactions at Debug, retries as warnings).</summary>
+    public ILoggerFactory? LoggerFactory { get; set; }
+
+    /// <summary>Checks the options and says what is wrong.</summary>
+    /// <exception cref="ArgumentException">An option is out of range.</exception>
+    public void Validate()
+    {
+        Guard.Unit(UnitNumber, nameof(UnitNumber));
+        if (LineTiming is null)
+        {
+            throw new ArgumentException("LineTiming is required.", nameof(LineTiming));
+        }
+
+        if (TurnaroundAllowance <= TimeSpan.Zero || TurnaroundAllowance > TimeSpan.FromMinutes(1))
+        {
+            throw new ArgumentOutOfRangeException(nameof(TurnaroundAllowance), TurnaroundAllowance, "TurnaroundAllowance must be more than 0 and at most 1 minute.");
+        }
+
+        Guard.InRange(ReadRetries, 0, 10, nameof(ReadRetries));
+        Guard.InRange(WriteRetries, 0, 10, nameof(WriteRetries));
+        Guard.InRange(FinsResponseWait, 0, 15, nameof(FinsResponseWait));
+    }
+
+    internal HostLinkClientOptions Clone() => (HostLinkClientOptions)MemberwiseClone();
+}

@@ -1,0 +1,193 @@
+using System.Text;
+using OmronHostLink.Link;
+using OmronHostLink.Protocol;
+using OmronHostLink.Protocol.CMode;
+
+namespace OmronHostLink;
+
+/// <summary>
+/// One PLC on a Host Link line, addressed by its unit number. Every unit view of a client shares the client's single
+/// link: their exchanges queue and never interleave on the wire. Every method validates its arguments before
+/// anything is sent, and every value returned comes from a complete, validated answer.
+/// </summary>
+public partial class HostLinkUnit
+{
+    private protected readonly HostLinkConnection Connection;
+    private protected readonly HostLinkClientOptions Options;
+
+    private protected HostLinkUnit(HostLinkConnection connection, HostLinkClientOptions options, int unitNumber)
+    {
+        Guard.Unit(unitNumber);
+        Connection = connection;
+        Options = options;
+        UnitNumber = unitNumber;
+    }
+
+    /// <summary>The unit number (0-31) this view addresses.</summary>
+    public int UnitNumber { get; }
+
+    /// <summary>The character timing frame deadlines are derived from.</summary>
+    public LineTiming LineTiming => Connection.Timing;
+
+    /// <summary>A view of another unit on the same line (multidrop), sharing this link.</summary>
+    /// <exception cref="ArgumentOutOfRangeException">The unit number is not 0-31.</exception>
+    public HostLinkUnit Unit(int unitNumber) => new UnitView(Connection, Options, unitNumber);
+
+    // ---- Words ----
+
+    /// <summary>
+    /// Reads <paramref name="count"/> consecutive words. With C-mode the read is one command, however long (the answer
+    /// spans frames), so the words are one consistent snapshot. FINS reads longer than
+    /// <see cref="Protocol.Fins.FinsLimits.MaxReadWords"/> are split into the fewest commands, and are then not one snapshot.
+    /// </summary>
+    /// <exception cref="FormatException">The address is not valid.</exception>
+    /// <exception cref="ArgumentException">The range does not fit the area or the protocol (nothing is sent).</exception>
+    public ValueTask<ushort[]> ReadWordsAsync(string address, int count, CancellationToken cancellationToken = default)
+        => ReadWordsAsync(PlcAddress.Parse(address), count, cancellationToken);
+
+    /// <inheritdoc cref="ReadWordsAsync(string, int, CancellationToken)"/>
+    public ValueTask<ushort[]> ReadWordsAsync(PlcAddress address, int count, CancellationToken cancellationToken = default)
+    {
+        address = address.AsWord();
+        address.EnsureRange(count, Options.Protocol, forWrite: false);
+        return Options.Protocol == HostLinkProtocol.Fins
+            ? FinsReadWordsAsync(address, count, cancellationToken)
+            : CModeReadWordsAsync(address, count, cancellationToken);
+    }
+
+    /// <summary>Reads one word.</summary>
+    public async ValueTask<ushort> ReadWordAsync(string address, CancellationToken cancellationToken = default)
+        => (await ReadWordsAsync(address, 1, cancellationToken).ConfigureAwait(false))[0];
+
+    /// <summary>
+    /// Writes consecutive words as one command (C-mode spans frames as needed; FINS splits writes longer than
+    /// <see cref="Protocol.Fins.FinsLimits.MaxWriteWords"/>). Completes only when the PLC answered end code 00.
+    /// </summary>
+    /// <exception cref="HostLinkEndCodeException">The PLC refused the write (for example 01: C-mode writes are refused in RUN mode).</exception>
+    public ValueTask WriteWordsAsync(string address, ReadOnlyMemory<ushort> words, CancellationToken cancellationToken = default)
+        => WriteWordsAsync(PlcAddress.Parse(address), words, cancellationToken);
+
+    /// <inheritdoc cref="WriteWordsAsync(string, ReadOnlyMemory{ushort}, CancellationToken)"/>
+    public ValueTask WriteWordsAsync(PlcAddress address, ReadOnlyMemory<ushort> words, CancellationToken cancellationToken = default)
+    {
+        address = address.AsWord();
+        address.EnsureRange(words.Length, Options.Protocol, forWrite: true);
+        return Options.Protocol == HostLinkProtocol.Fins
+            ? FinsWriteWordsAsync(address, words, cancellationToken)
+            : CModeWriteWordsAsync(address, words, cancellationToken);
+    }
+
+    /// <summary>Writes one word.</summary>
+    public ValueTask WriteWordAsync(string address, ushort value, CancellationToken cancellationToken = default)
+        => WriteWordsAsync(address, new[] { value }, cancellationToken);
+
+    // ---- Status, mode, errors, model, test ----
+
+    /// <summary>Reads the operating mode, the status word and any FAL/FALS message (MS).</summary>
+    public ValueTask<PlcStatus> ReadStatusAsync(CancellationToken cancellationToken = default)
+        => CModeAsync(StatusReadCommand.Instance, 2 + 20, retryable: true, static (data, _) => CModeResponse.ReadStatus(data), 0, cancellationToken);
+
+    /// <summary>
+    /// Changes the operating mode (SC). Leaving RUN or MONITOR stops the machine's program: callers decide that, not the library.
+    /// </summary>
+    public async ValueTask SetModeAsync(PlcMode mode, CancellationToken cancellationToken = default)
+        => await CModeAsync(new StatusChangeCommand(mode), 2, retryable: false, static (data, _) => ExpectEmpty(data, "SC"), 0, cancellationToken).ConfigureAwait(false);
+
+    /// <summary>Reads the error information (MF), clearing the errors afterwards when <paramref name="clear"/> is true.</summary>
+    public ValueTask<PlcErrorInfo> ReadErrorsAsync(bool clear = false, CancellationToken cancellationToken = default)
+        => CModeAsync(new ErrorReadCommand(clear), 2 + 8, retryable: !clear, static (data, _) => CModeResponse.ReadErrors(data), 0, cancellationToken);
+
+    /// <summary>Reads the PLC model code (MM).</summary>
+    public ValueTask<PlcModel> ReadModelAsync(CancellationToken cancellationToken = default)
+        => CModeAsync(ModelReadCommand.Instance, 2 + 2, retryable: true, static (data, _) => CModeResponse.ReadModel(data), 0, cancellationToken);
+
+    /// <summary>
+    /// Sends TS (TEST) with <paramref name="text"/> and checks that the PLC echoes it unchanged. Returns the round-trip time.
+    /// </summary>
+    /// <exception cref="ArgumentException">The text is over 122 characters or holds characters that cannot travel in a frame.</exception>
+    public async ValueTask<TimeSpan> TestAsync(string text = "OMRONHOSTLINK", CancellationToken cancellationToken = default)
+    {
+        var command = new TestCommand(text);
+        byte[] sent = Encoding.ASCII.GetBytes(text);
+        var clock = System.Diagnostics.Stopwatch.StartNew();
+        await Connection.ExecuteAsync(
+            Request(command, TestCommand.MaxTextLength, retryable: true),
+            Options.ReadRetries,
+            static (echo, state) =>
+            {
+                CModeResponse.CheckTestEcho(echo, state.sent, state.unit);
+                return true;
+            },
+            (sent, unit: UnitNumber),
+            cancellationToken).ConfigureAwait(false);
+        return clock.Elapsed;
+    }
+
+    /// <summary>Sends XZ (ABORT) to this unit: it drops the exchange it is in. The PLC sends no answer.</summary>
+    public async ValueTask AbortAsync(CancellationToken cancellationToken = default)
+        => await Connection.ExecuteAsync(Request(AbortCommand.Instance, 0, retryable: false), 0, static (_, _) => true, 0, cancellationToken).ConfigureAwait(false);
+
+    /// <summary>Sends <c>@**</c> (INITIALIZE): every unit on the line resets its Host Link transmission control. No answer.</summary>
+    public ValueTask InitializeAsync(CancellationToken cancellationToken = default)
+        => Connection.SendRawAsync(CModeFrames.Initialize.ToArray(), cancellationToken);
+
+    // ---- C-mode plumbing ----
+
+    private protected HostLinkRequest Request(CModeCommand command, int maxResponseText, bool retryable)
+        => new(
+            UnitNumber,
+            command.Header,
+            command.ToMessage(UnitNumber),
+            CModeCommand.PrefixLength + command.FixedTextLength,
+            command.AtomLength,
+            command.MayUseSeveralFrames,
+            command.ExpectsResponse,
+            maxResponseText,
+            retryable);
+
+    private protected ValueTask<TResult> CModeAsync<TState, TResult>(CModeCommand command, int maxResponseText, bool retryable, Func<ReadOnlySpan<byte>, TState, TResult> decodeData, TState state, CancellationToken cancellationToken)
+        => Connection.ExecuteAsync(
+            Request(command, maxResponseText, retryable),
+            retryable ? Options.ReadRetries : Options.WriteRetries,
+            static (text, s) => s.decodeData(CModeResponse.GetData(text, s.header, s.unit), s.state),
+            (decodeData, state, header: command.Header, unit: UnitNumber),
+            cancellationToken);
+
+    private async ValueTask<ushort[]> CModeReadWordsAsync(PlcAddress address, int count, CancellationToken cancellationToken)
+    {
+        (CModeArea area, int begin) = CModeAddressing.Map(address);
+        var command = new AreaReadCommand(area, begin, count, address.Bank);
+        return await CModeAsync(
+            command,
+            2 + command.ResponseDataLength,
+            retryable: true,
+            static (data, n) =>
+            {
+                var words = new ushort[n];
+                CModeResponse.ReadWords(data, words);
+                return words;
+            },
+            count,
+            cancellationToken).ConfigureAwait(false);
+    }
+
+    private async ValueTask CModeWriteWordsAsync(PlcAddress address, ReadOnlyMemory<ushort> words, CancellationToken cancellationToken)
+    {
+        (CModeArea area, int begin) = CModeAddressing.Map(address);
+        var command = new AreaWriteCommand(area, begin, words.Span, address.Bank);
+        await CModeAsync(command, 2, retryable: Options.WriteRetries > 0, static (data, h) => ExpectEmpty(data, h), command.Header, cancellationToken).ConfigureAwait(false);
+    }
+
+    private static bool ExpectEmpty(ReadOnlySpan<byte> data, string header)
+    {
+        if (!data.IsEmpty)
+        {
+            throw new HostLinkFrameException(FrameError.WrongLength, $"The answer to {header} should carry no data but carried {data.Length} characters.", data);
+        }
+
+        return true;
+    }
+
+    private sealed class UnitView(HostLinkConnection connection, HostLinkClientOptions options, int unitNumber)
+        : HostLinkUnit(connection, options, unitNumber);
+}

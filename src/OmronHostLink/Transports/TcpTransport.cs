@@ -1,0 +1,101 @@
+using System.Net.Sockets;
+
+namespace OmronHostLink.Transports;
+
+/// <summary>
+/// A TCP connection to a serial-device server (or the simulator). It connects on first use and reconnects on the next
+/// call after a drop. Nagle's delay is off: Host Link frames are small and every one waits for an answer.
+/// </summary>
+public sealed class TcpTransport : IHostLinkTransport
+{
+    private TcpClient? _client;
+
+    /// <summary>Creates the transport; nothing connects until the first exchange.</summary>
+    public TcpTransport(string host, int port, TimeSpan? connectTimeout = null, Link.LineTiming? lineTiming = null)
+    {
+        if (string.IsNullOrWhiteSpace(host))
+        {
+            throw new ArgumentException("The host name is empty.", nameof(host));
+        }
+
+        Guard.InRange(port, 1, 65535);
+        Host = host;
+        Port = port;
+        ConnectTimeout = connectTimeout ?? TimeSpan.FromSeconds(5);
+        LineTiming = lineTiming;
+    }
+
+    /// <summary>The server's host name or address.</summary>
+    public string Host { get; }
+
+    /// <summary>The server's port.</summary>
+    public int Port { get; }
+
+    /// <summary>How long a connection attempt may take.</summary>
+    public TimeSpan ConnectTimeout { get; }
+
+    /// <inheritdoc/>
+    public string Description => $"{Host}:{Port}";
+
+    /// <inheritdoc/>
+    public Link.LineTiming? LineTiming { get; }
+
+    /// <summary>Parses <c>host:port</c>.</summary>
+    /// <exception cref="FormatException">The text is not host:port with a port 1-65535.</exception>
+    public static (string Host, int Port) ParseEndpoint(string text)
+    {
+        Guard.NotNull(text);
+        int colon = text.LastIndexOf(':');
+        if (colon <= 0 || !int.TryParse(text.Substring(colon + 1), System.Globalization.NumberStyles.None, System.Globalization.CultureInfo.InvariantCulture, out int port) || port is < 1 or > 65535)
+        {
+            throw new FormatException($"'{text}' is not host:port with a port number 1-65535.");
+        }
+
+        return (text.Substring(0, colon).Trim('[', ']'), port);
+    }
+
+    /// <inheritdoc/>
+    public async ValueTask<Stream> OpenAsync(CancellationToken cancellationToken)
+    {
+        if (_client is { Connected: true } c)
+        {
+            return c.GetStream();
+        }
+
+        _client?.Dispose();
+        var client = new TcpClient { NoDelay = true };
+        using var timeout = CancellationTokenSource.CreateLinkedTokenSource(cancellationToken);
+        timeout.CancelAfter(ConnectTimeout);
+        try
+        {
+#if NET
+            await client.ConnectAsync(Host, Port, timeout.Token).ConfigureAwait(false);
+#else
+            using (timeout.Token.Register(client.Dispose))
+            {
+                await client.ConnectAsync(Host, Port).ConfigureAwait(false);
+            }
+#endif
+        }
+        catch (Exception e) when (e is SocketException or OperationCanceledException or ObjectDisposedException && !cancellationToken.IsCancellationRequested)
+        {
+            client.Dispose();
+            string why = e is SocketException se ? se.Message : $"no connection within {ConnectTimeout.TotalSeconds:0.#} s";
+            throw new HostLinkConnectionException($"Cannot connect to {Description}: {why}.", e);
+        }
+
+        _client = client;
+        return client.GetStream();
+    }
+
+    /// <inheritdoc/>
+    public ValueTask CloseAsync()
+    {
+        _client?.Dispose();
+        _client = null;
+        return default;
+    }
+
+    /// <inheritdoc/>
+    public ValueTask DisposeAsync() => CloseAsync();
+}
