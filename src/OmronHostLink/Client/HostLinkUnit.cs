@@ -38,7 +38,7 @@ public partial class HostLinkUnit
     /// <summary>
     /// Reads <paramref name="count"/> consecutive words. With C-mode the read is one command, however long (the answer
     /// spans frames), so the words are one consistent snapshot. FINS reads longer than
-    /// <see cref="Protocol.Fins.FinsLimits.MaxReadWords"/> are split into the fewest commands, and are then not one snapshot.
+    /// the FINS per-command limit are split into the fewest commands, and are then not one snapshot.
     /// </summary>
     /// <exception cref="FormatException">The address is not valid.</exception>
     /// <exception cref="ArgumentException">The range does not fit the area or the protocol (nothing is sent).</exception>
@@ -61,7 +61,7 @@ public partial class HostLinkUnit
 
     /// <summary>
     /// Writes consecutive words as one command (C-mode spans frames as needed; FINS splits writes longer than
-    /// <see cref="Protocol.Fins.FinsLimits.MaxWriteWords"/>). Completes only when the PLC answered end code 00.
+    /// the FINS per-command limit). Completes only when the PLC answered end code 00.
     /// </summary>
     /// <exception cref="HostLinkEndCodeException">The PLC refused the write (for example 01: C-mode writes are refused in RUN mode).</exception>
     public ValueTask WriteWordsAsync(string address, ReadOnlyMemory<ushort> words, CancellationToken cancellationToken = default)
@@ -145,7 +145,7 @@ public partial class HostLinkUnit
             maxResponseText,
             retryable);
 
-    private protected ValueTask<TResult> CModeAsync<TState, TResult>(CModeCommand command, int maxResponseText, bool retryable, Func<ReadOnlySpan<byte>, TState, TResult> decodeData, TState state, CancellationToken cancellationToken)
+    private protected ValueTask<TResult> CModeAsync<TState, TResult>(CModeCommand command, int maxResponseText, bool retryable, ResponseDecoder<TState, TResult> decodeData, TState state, CancellationToken cancellationToken)
         => Connection.ExecuteAsync(
             Request(command, maxResponseText, retryable),
             retryable ? Options.ReadRetries : Options.WriteRetries,
@@ -176,6 +176,30 @@ public partial class HostLinkUnit
         (CModeArea area, int begin) = CModeAddressing.Map(address);
         var command = new AreaWriteCommand(area, begin, words.Span, address.Bank);
         await CModeAsync(command, 2, retryable: Options.WriteRetries > 0, static (data, h) => ExpectEmpty(data, h), command.Header, cancellationToken).ConfigureAwait(false);
+    }
+
+    private async ValueTask<bool> ReadCompletionFlagAsync(PlcAddress address, CancellationToken cancellationToken)
+    {
+        address.EnsureRange(1, Options.Protocol, forWrite: false);
+        if (Options.Protocol == HostLinkProtocol.Fins)
+        {
+            return await FinsReadCompletionFlagAsync(address, cancellationToken).ConfigureAwait(false);
+        }
+
+        int begin = address.Area == PlcArea.Counter ? 2048 + address.Word : address.Word;
+        var command = new AreaReadCommand(CModeArea.TimerCounterStatus, begin, 1);
+        return await CModeAsync(
+            command,
+            2 + 1,
+            retryable: true,
+            static (data, _) =>
+            {
+                Span<bool> flag = stackalloc bool[1];
+                CModeResponse.ReadFlags(data, flag);
+                return flag[0];
+            },
+            0,
+            cancellationToken).ConfigureAwait(false);
     }
 
     private static bool ExpectEmpty(ReadOnlySpan<byte> data, string header)

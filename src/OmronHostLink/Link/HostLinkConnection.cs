@@ -92,7 +92,7 @@ internal sealed class HostLinkConnection : IAsyncDisposable
                 await EnsureOpenAsync(cancellationToken).ConfigureAwait(false);
                 if (_needsResync)
                 {
-                    await ResyncAsync(cancellationToken).ConfigureAwait(false);
+                    await ResyncAsync(request.Unit, cancellationToken).ConfigureAwait(false);
                 }
 
                 return await AttemptAsync(request, decode, state, cancellationToken).ConfigureAwait(false);
@@ -549,7 +549,7 @@ internal sealed class HostLinkConnection : IAsyncDisposable
         }
     }
 
-    private async ValueTask ResyncAsync(CancellationToken cancellationToken)
+    private async ValueTask ResyncAsync(int requestUnit, CancellationToken cancellationToken)
     {
         long discarded = 0;
         int unit = _resyncUnit;
@@ -612,7 +612,16 @@ internal sealed class HostLinkConnection : IAsyncDisposable
             outcome = "garbled";
         }
 
-        _needsResync = outcome != "answered" && outcome != "unanswered";
         HostLinkLog.Resync(_logger, unit, discarded, outcome);
+        if (outcome == "answered")
+        {
+            _needsResync = false;
+            return;
+        }
+
+        // Not in step yet: this exchange fails and the next attempt fences again. A unit that did not echo a fresh TS
+        // within its deadline is not talking, so the next fence goes to the unit the caller wants.
+        _resyncUnit = requestUnit;
+        throw new HostLinkTimeoutException($"The link could not be resynchronised: unit {unit:D2} did not echo the TS fence within {timeout.TotalMilliseconds:0} ms.", timeout);
     }
 }

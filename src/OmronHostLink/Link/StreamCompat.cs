@@ -32,4 +32,14 @@ internal static class StreamCompat
         return new ValueTask(stream.WriteAsync(segment.Array!, segment.Offset, segment.Count, cancellationToken));
 #endif
     }
+
+    public static ValueTask DisposeAsync(Stream stream)
+    {
+#if NET
+        return stream.DisposeAsync();
+#else
+        stream.Dispose();
+        return default;
+#endif
+    }
 }

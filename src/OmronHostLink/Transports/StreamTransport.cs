@@ -41,7 +41,7 @@ public sealed class StreamTransport : IHostLinkTransport
         _stream = null;
         if (s is not null && !_leaveOpen)
         {
-            await s.DisposeAsync().ConfigureAwait(false);
+            await Link.StreamCompat.DisposeAsync(s).ConfigureAwait(false);
         }
     }
 
