@@ -1,0 +1,85 @@
+using System.Globalization;
+
+namespace OmronHostLink;
+
+/// <summary>Facts about each CS/CJ memory area, kept in one place so that parsing, formatting and range checks agree.</summary>
+internal static class PlcAreaInfo
+{
+    /// <summary>EM banks 0x0–0xC exist on CS/CJ; later banks (CJ2) need other FINS area codes.</summary>
+    public const int EmBankCount = 13;
+
+    /// <summary>A0–A447 are written by the CPU only.</summary>
+    public const int FirstWritableAuxiliaryWord = 448;
+
+    public static bool IsDefined(PlcArea area) => area >= PlcArea.Cio && area <= PlcArea.Em;
+
+    public static int Size(PlcArea area) => area switch
+    {
+        PlcArea.Cio => 6144,
+        PlcArea.Work => 512,
+        PlcArea.Holding => 512,
+        PlcArea.Auxiliary => 960,
+        PlcArea.Dm => 32768,
+        PlcArea.Timer => 4096,
+        PlcArea.Counter => 4096,
+        PlcArea.Em => 32768,
+        _ => throw new ArgumentOutOfRangeException(nameof(area), area, $"{area} is not a PLC area."),
+    };
+
+    /// <summary>Words (or T/C numbers) reachable with C-mode, counted from 0 (W342 p128).</summary>
+    public static int CModeLimit(PlcArea area) => area switch
+    {
+        PlcArea.Work => 0,
+        PlcArea.Dm or PlcArea.Em => 10000,
+        PlcArea.Timer or PlcArea.Counter => 2048,
+        _ => Size(area),
+    };
+
+    /// <summary>The C-mode command that would carry the transfer, so messages can name it.</summary>
+    public static string CModeCommand(PlcArea area, bool forWrite) => area switch
+    {
+        PlcArea.Cio => forWrite ? "WR" : "RR",
+        PlcArea.Holding => forWrite ? "WH" : "RH",
+        PlcArea.Auxiliary => forWrite ? "WJ" : "RJ",
+        PlcArea.Dm => forWrite ? "WD" : "RD",
+        PlcArea.Timer or PlcArea.Counter => forWrite ? "WC" : "RC",
+        PlcArea.Em => forWrite ? "WE" : "RE",
+        _ => "(none)",
+    };
+
+    /// <summary>Timers and counters name a T/C, not a word of bits.</summary>
+    public static bool AllowsBit(PlcArea area) => area is not (PlcArea.Timer or PlcArea.Counter);
+
+    public static string Name(PlcArea area) => area switch
+    {
+        PlcArea.Cio => "CIO area",
+        PlcArea.Work => "work area (W)",
+        PlcArea.Holding => "holding area (H)",
+        PlcArea.Auxiliary => "auxiliary area (A)",
+        PlcArea.Dm => "DM area",
+        PlcArea.Timer => "timer area",
+        PlcArea.Counter => "counter area",
+        _ => "EM area",
+    };
+
+    /// <summary>The area as the user would write its extent, e.g. "DM area (D0–D32767)".</summary>
+    public static string Extent(PlcArea area, int bank) =>
+        $"{Name(area)} ({Format(area, 0, -1, bank)}–{Format(area, Size(area) - 1, -1, bank)})";
+
+    /// <summary>Canonical CX-Programmer spelling; also used to name computed addresses in messages.</summary>
+    public static string Format(PlcArea area, int word, int bit, int bank)
+    {
+        var text = area switch
+        {
+            PlcArea.Cio => "CIO",
+            PlcArea.Work => "W",
+            PlcArea.Holding => "H",
+            PlcArea.Auxiliary => "A",
+            PlcArea.Dm => "D",
+            PlcArea.Timer => "T",
+            PlcArea.Counter => "C",
+            _ => "E" + bank.ToString("X", CultureInfo.InvariantCulture) + "_",
+        } + word.ToString(CultureInfo.InvariantCulture);
+        return bit < 0 ? text : text + "." + bit.ToString("00", CultureInfo.InvariantCulture);
+    }
+}
