@@ -76,7 +76,7 @@ public partial class HostLinkUnit
     /// Reads scattered words and bits in one exchange (FINS 0104): a word address gives its value, a bit address (or a
     /// timer/counter completion flag) 0 or 1.
     /// </summary>
-    public async ValueTask<ushort[]> ReadManyAsync(IReadOnlyList<string> addresses, CancellationToken cancellationToken = default)
+    public async ValueTask<ushort[]> ReadMultipleAsync(IReadOnlyList<string> addresses, CancellationToken cancellationToken = default)
     {
         Guard.NotNull(addresses);
         var items = new FinsMemoryAddress[addresses.Count];
