@@ -44,7 +44,9 @@ public sealed class VirtualPlc
 
     /// <summary>Creates a PLC with the given options (or the defaults: unit 0, PROGRAM mode, model code 30).</summary>
     /// <param name="options">Units, initial mode and memory, wire-time emulation, faults. The instance is kept; do not change it once sessions run.</param>
-    /// <exception cref="ArgumentException">The options are not valid, or the initial memory file cannot be read.</exception>
+    /// <exception cref="ArgumentException">The options are not valid.</exception>
+    /// <exception cref="FormatException">The initial memory file does not follow the format of <see cref="InitialMemory"/>.</exception>
+    /// <exception cref="IOException">The initial memory file cannot be read.</exception>
     public VirtualPlc(VirtualPlcOptions? options = null)
     {
         Options = options ?? new VirtualPlcOptions();

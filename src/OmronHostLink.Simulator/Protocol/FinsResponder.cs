@@ -107,11 +107,8 @@ public sealed class FinsResponder
         }
         else
         {
-            if (!bitArea && address.Bit != 0)
-            {
-                return false;
-            }
-
+            // The bit field of a word address is ignored: a published capture reads HR words with bit field 0D
+            // and gets normal completion.
             word += index;
         }
 
