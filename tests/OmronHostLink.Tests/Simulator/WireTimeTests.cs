@@ -5,6 +5,7 @@ using Xunit.Abstractions;
 namespace OmronHostLink.Tests.Simulator;
 
 /// <summary>Wire-time emulation and PLC turnaround.</summary>
+[Collection(TimingCollection.Name)]
 public class WireTimeTests(ITestOutputHelper output)
 {
     [Fact]
