@@ -1,0 +1,124 @@
+using System.Buffers;
+using System.IO.Pipelines;
+using OmronHostLink.Protocol;
+using OmronHostLink.Simulator.Faults;
+using OmronHostLink.Simulator.Protocol;
+
+namespace OmronHostLink.Simulator.Hosting;
+
+/// <summary>
+/// One Host Link session of a <see cref="VirtualPlc"/> over a stream: cuts frames out of the received bytes (noise
+/// skipped), runs them through a <see cref="HostLinkExchange"/>, and writes the answers with turnaround, wire-time
+/// pacing and injected faults.
+/// </summary>
+internal sealed class HostLinkSession
+{
+    private readonly VirtualPlc _plc;
+    private readonly HostLinkExchange _exchange;
+    private readonly WirePacer _pacer;
+    private readonly FaultInjector _faults;
+
+    public HostLinkSession(VirtualPlc plc)
+    {
+        _plc = plc;
+        _exchange = new HostLinkExchange(new HostLinkResponder(plc), plc.Options.Units);
+        _pacer = new WirePacer(plc.Options.BaudRate, plc.Options.BitsPerCharacter);
+        _faults = plc.Faults;
+    }
+
+    public async Task RunAsync(Stream stream, CancellationToken cancellationToken)
+    {
+        ArgumentNullException.ThrowIfNull(stream);
+        PipeReader reader = PipeReader.Create(stream, new StreamPipeReaderOptions(leaveOpen: true));
+        try
+        {
+            while (true)
+            {
+                ReadResult result = await reader.ReadAsync(cancellationToken).ConfigureAwait(false);
+                ReadOnlySequence<byte> buffer = result.Buffer;
+                while (true)
+                {
+                    FrameScanResult scan = FrameReader.TryReadFrame(ref buffer, _exchange.ExpectsFirstFrame, out ReadOnlySequence<byte> frame, out _);
+                    if (scan == FrameScanResult.NeedMoreData)
+                    {
+                        break;
+                    }
+
+                    if (scan == FrameScanResult.Overflow)
+                    {
+                        // No CR within the reception buffer: a real unit discards it silently and starts over.
+                        _exchange.Reset();
+                        if (buffer.Length > FrameReader.MaxFrameLength)
+                        {
+                            buffer = buffer.Slice(buffer.End);
+                        }
+
+                        continue;
+                    }
+
+                    byte[] received = frame.ToArray();
+                    LinkReply reply = _exchange.Receive(received);
+                    if (reply.Bytes is not null)
+                    {
+                        await SendAsync(stream, received, reply, cancellationToken).ConfigureAwait(false);
+                    }
+                }
+
+                reader.AdvanceTo(buffer.Start, buffer.End);
+                if (result.IsCompleted || result.IsCanceled)
+                {
+                    return;
+                }
+            }
+        }
+        catch (OperationCanceledException) when (cancellationToken.IsCancellationRequested)
+        {
+            // The session was stopped.
+        }
+        catch (IOException)
+        {
+            // The line went away.
+        }
+        catch (ObjectDisposedException)
+        {
+            // The stream was closed under us.
+        }
+        finally
+        {
+            await reader.CompleteAsync().ConfigureAwait(false);
+        }
+    }
+
+    private async Task SendAsync(Stream stream, byte[] received, LinkReply reply, CancellationToken cancellationToken)
+    {
+        TimeSpan turnaround = _plc.Options.Turnaround;
+        FaultPlan plan = reply.IsHandshake ? FaultPlan.None : _faults.Plan(reply.Bytes!);
+        if (plan.Drop)
+        {
+            return;
+        }
+
+        if (plan.Echo)
+        {
+            // On a 2-wire line the host hears its own command; that happens while it is sent, before the turnaround.
+            await _pacer.WriteAsync(stream, received, cancellationToken).ConfigureAwait(false);
+        }
+
+        if (plan.Late)
+        {
+            turnaround += _faults.LateBy;
+        }
+
+        if (turnaround > TimeSpan.Zero)
+        {
+            await Task.Delay(turnaround, cancellationToken).ConfigureAwait(false);
+        }
+
+        if (plan.Noise is { } noise)
+        {
+            await _pacer.WriteAsync(stream, noise, cancellationToken).ConfigureAwait(false);
+        }
+
+        await _pacer.WriteAsync(stream, plan.Shape(reply.Bytes!), cancellationToken).ConfigureAwait(false);
+    }
+}

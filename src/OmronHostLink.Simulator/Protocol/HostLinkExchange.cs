@@ -1,0 +1,289 @@
+using OmronHostLink.Protocol;
+
+namespace OmronHostLink.Simulator.Protocol;
+
+/// <summary>
+/// The PLC side of the Host Link frame exchange on one line: first-frame checks (unit, frame length, FCS), the
+/// multi-frame command handshake (a bare CR after every non-final frame, end codes A3/A4/A5/A8 for later frames), the
+/// multi-frame answer handshake (the next frame after the host's CR; XZ or <c>@**</c> abandon it; any other command
+/// counts as a delimiter), and silence towards other unit numbers. Pure: no I/O, no clock.
+/// </summary>
+internal sealed class HostLinkExchange
+{
+    /// <summary>The longest text a multi-frame write may accumulate (10,000 words and the address), a guard against endless frames.</summary>
+    private const int MaxCommandText = 6 + (4 * 10000);
+
+    private readonly HostLinkResponder _responder;
+    private readonly HashSet<int> _units;
+    private State _state;
+    private int _unit;
+    private byte[] _header = [];
+    private readonly List<byte> _text = new();
+    private SimResponse? _response;
+    private int _responseOffset;
+
+    public HostLinkExchange(HostLinkResponder responder, IEnumerable<int> units)
+    {
+        _responder = responder;
+        _units = new HashSet<int>(units);
+    }
+
+    private enum State
+    {
+        Idle,
+        ReceivingCommand,
+        SendingResponse,
+    }
+
+    /// <summary>Whether the next frame must start with <c>@</c> (no exchange is in progress), so noise before it can be skipped.</summary>
+    public bool ExpectsFirstFrame => _state == State.Idle;
+
+    /// <summary>Whether the exchange is in the middle of a multi-frame command or answer.</summary>
+    public bool InProgress => _state != State.Idle;
+
+    /// <summary>Forgets any exchange in progress (the line was reset).</summary>
+    public void Reset()
+    {
+        _state = State.Idle;
+        _text.Clear();
+        _response = null;
+        _responseOffset = 0;
+    }
+
+    /// <summary>Handles one received frame (up to and including its CR) and returns what to send.</summary>
+    public LinkReply Receive(ReadOnlySpan<byte> frame)
+    {
+        if (_state != State.Idle)
+        {
+            int at = frame.IndexOf((byte)'@');
+            if (at > 0)
+            {
+                // Noise ahead of a new first frame.
+                frame = frame.Slice(at);
+            }
+        }
+
+        if (IsInitialize(frame))
+        {
+            Reset();
+            return LinkReply.None;
+        }
+
+        switch (_state)
+        {
+            case State.SendingResponse:
+                return WhileSending(frame);
+            case State.ReceivingCommand when frame.Length > 0 && frame[0] != (byte)'@':
+                return Continuation(frame);
+            default:
+                if (_state == State.ReceivingCommand)
+                {
+                    // A new command interrupts the divided one.
+                    Reset();
+                }
+
+                return First(frame);
+        }
+    }
+
+    private static bool IsInitialize(ReadOnlySpan<byte> frame)
+        => frame.Length >= 3 && frame[0] == (byte)'@' && frame[1] == (byte)'*' && frame[2] == (byte)'*';
+
+    private static bool TryUnit(ReadOnlySpan<byte> frame, out int unit)
+    {
+        unit = -1;
+        return frame.Length >= 3 && frame[0] == (byte)'@' && HexAscii.TryParseDecimal(frame.Slice(1, 2), out unit);
+    }
+
+    private LinkReply WhileSending(ReadOnlySpan<byte> frame)
+    {
+        if (frame.Length > 0 && frame[0] == (byte)'@')
+        {
+            if (!TryUnit(frame, out int unit) || !_units.Contains(unit))
+            {
+                // Another unit's traffic: not ours, and not a delimiter for us.
+                return LinkReply.None;
+            }
+
+            if (frame.Length >= 5 && frame[3] == (byte)'X' && frame[4] == (byte)'Z')
+            {
+                Reset();
+                return LinkReply.None;
+            }
+        }
+
+        // The bare CR (or, per the manual, any other command) asks for the next frame.
+        return NextResponseFrame();
+    }
+
+    private LinkReply NextResponseFrame()
+    {
+        byte[] frame = _response!.NextFrame(ref _responseOffset, out bool final);
+        if (final)
+        {
+            Reset();
+        }
+        else
+        {
+            _state = State.SendingResponse;
+        }
+
+        return LinkReply.Frame(frame);
+    }
+
+    private LinkReply Send(SimResponse? response)
+    {
+        if (response is null)
+        {
+            Reset();
+            return LinkReply.None;
+        }
+
+        _response = response;
+        _responseOffset = 0;
+        return NextResponseFrame();
+    }
+
+    private LinkReply Error(ReadOnlySpan<byte> header, EndCode code)
+    {
+        int unit = _unit;
+        Reset();
+        return Send(HostLinkResponder.EndCodeOnly(unit, header, code));
+    }
+
+    private LinkReply First(ReadOnlySpan<byte> frame)
+    {
+        if (!TryUnit(frame, out int unit) || !_units.Contains(unit) || frame.Length < 6)
+        {
+            // Not for us, or too damaged to know whom to answer.
+            return LinkReply.None;
+        }
+
+        _unit = unit;
+        ReadOnlySpan<byte> header = frame.Slice(3, 2);
+        if (frame.Length > FrameWriter.MaxFirstFrameLength)
+        {
+            return Error(header, EndCode.FrameLengthError);
+        }
+
+        FrameInfo info;
+        try
+        {
+            info = FrameParser.ParseFirst(frame);
+        }
+        catch (HostLinkFrameException e)
+        {
+            return Error(header, e.Error == FrameError.BadFcs ? EndCode.FcsError : EndCode.FormatError);
+        }
+
+        ReadOnlySpan<byte> text = info.Text(frame);
+        if (info.IsFinal)
+        {
+            return Send(_responder.Respond(unit, header, text));
+        }
+
+        if (!HostLinkResponder.IsDivisible(header))
+        {
+            return Error(header, HostLinkResponder.IsKnownHeader(header) ? EndCode.FormatError : EndCode.UndefinedHeader);
+        }
+
+        // A divided write: the address and at least the first word must be in the first frame, in whole words.
+        int fixedLength = header[1] == (byte)'E' ? 6 : 4;
+        if (text.Length < fixedLength + 4 || (text.Length - fixedLength) % 4 != 0)
+        {
+            return Error(header, EndCode.FormatError);
+        }
+
+        if (!AllHex(text.Slice(fixedLength)) || !AllDigits(text.Slice(fixedLength - 4, 4)) || (fixedLength == 6 && !AllHex(text.Slice(0, 2))))
+        {
+            return Error(header, EndCode.EntryNumberDataError);
+        }
+
+        _header = header.ToArray();
+        _text.Clear();
+        AddText(text);
+        _state = State.ReceivingCommand;
+        return LinkReply.Handshake;
+    }
+
+    private LinkReply Continuation(ReadOnlySpan<byte> frame)
+    {
+        if (frame.Length > FrameWriter.MaxContinuationFrameLength)
+        {
+            return Error(_header, EndCode.AbortedFrameLengthError);
+        }
+
+        FrameInfo info;
+        try
+        {
+            info = FrameParser.ParseContinuation(frame);
+        }
+        catch (HostLinkFrameException e)
+        {
+            return Error(_header, e.Error == FrameError.BadFcs ? EndCode.AbortedFcsError : EndCode.AbortedFormatError);
+        }
+
+        ReadOnlySpan<byte> text = info.Text(frame);
+        if (text.Length <= 2)
+        {
+            // W342: two data characters or fewer in a later frame aborts with A3.
+            return Error(_header, EndCode.AbortedFcsError);
+        }
+
+        if (text.Length % 4 != 0)
+        {
+            return Error(_header, EndCode.AbortedFormatError);
+        }
+
+        if (!AllHex(text) || _text.Count + text.Length > MaxCommandText)
+        {
+            return Error(_header, EndCode.AbortedEntryNumberDataError);
+        }
+
+        AddText(text);
+        if (!info.IsFinal)
+        {
+            return LinkReply.Handshake;
+        }
+
+        byte[] all = _text.ToArray();
+        byte[] header = _header;
+        int unit = _unit;
+        Reset();
+        return Send(_responder.Respond(unit, header, all));
+    }
+
+    private void AddText(ReadOnlySpan<byte> text)
+    {
+        foreach (byte b in text)
+        {
+            _text.Add(b);
+        }
+    }
+
+    private static bool AllHex(ReadOnlySpan<byte> text)
+    {
+        foreach (byte b in text)
+        {
+            if (!HexAscii.TryParseNibble(b, out _))
+            {
+                return false;
+            }
+        }
+
+        return true;
+    }
+
+    private static bool AllDigits(ReadOnlySpan<byte> text)
+    {
+        foreach (byte b in text)
+        {
+            if (b is < (byte)'0' or > (byte)'9')
+            {
+                return false;
+            }
+        }
+
+        return true;
+    }
+}

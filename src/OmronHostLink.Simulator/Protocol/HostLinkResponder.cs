@@ -1,0 +1,308 @@
+using System.Text;
+using OmronHostLink.Protocol;
+using OmronHostLink.Protocol.CMode;
+
+namespace OmronHostLink.Simulator.Protocol;
+
+/// <summary>
+/// Executes one complete C-mode command (all its frames joined) against a <see cref="VirtualPlc"/> and returns the
+/// answer, as a CS/CJ CPU Unit does: every command <see cref="CModeCommand.Parse"/> knows, IC for any other header,
+/// end code 01 for area writes and forcing in RUN mode, 14 and 15 for format and range errors, no answer to XZ.
+/// Frame-level checks (FCS, frame length, the CR handshake of multi-frame exchanges) belong to the caller.
+/// </summary>
+public sealed class HostLinkResponder
+{
+    /// <summary>Characters an answer keeps in its first frame: <c>@</c>, unit, header, end code.</summary>
+    public const int ResponseFixedLength = 7;
+
+    private readonly VirtualPlc _plc;
+
+    /// <summary>Creates a responder for <paramref name="plc"/>.</summary>
+    /// <param name="plc">The PLC whose memory and state the commands use.</param>
+    public HostLinkResponder(VirtualPlc plc)
+    {
+        ArgumentNullException.ThrowIfNull(plc);
+        _plc = plc;
+    }
+
+    /// <summary>Whether a header names a command that may be divided into several frames (the area writes).</summary>
+    /// <param name="header">The two header characters.</param>
+    /// <returns>True for WR, WL, WH, WC, WD, WJ, WE.</returns>
+    public static bool IsDivisible(ReadOnlySpan<byte> header)
+        => CModeAreaInfo.TryFromHeader(header, out _, out bool write) && write;
+
+    /// <summary>Whether the simulator knows the header (anything else is answered with IC).</summary>
+    /// <param name="header">The two header characters.</param>
+    /// <returns>True for the C-mode commands the simulator executes.</returns>
+    public static bool IsKnownHeader(ReadOnlySpan<byte> header)
+    {
+        if (CModeAreaInfo.TryFromHeader(header, out _, out _))
+        {
+            return true;
+        }
+
+        return header.Length == 2 && Encoding.ASCII.GetString(header) is "MS" or "SC" or "MF" or "MM" or "TS" or "KS" or "KR" or "FK" or "KC" or "XZ";
+    }
+
+    /// <summary>An answer carrying only an end code (error answers carry no text).</summary>
+    /// <param name="unit">The unit number 0-31.</param>
+    /// <param name="header">The header echoed.</param>
+    /// <param name="code">The end code; <see cref="EndCode.UndefinedHeader"/> gives the IC answer.</param>
+    /// <returns>The answer.</returns>
+    public static SimResponse EndCodeOnly(int unit, ReadOnlySpan<byte> header, EndCode code)
+    {
+        if (code == EndCode.UndefinedHeader)
+        {
+            var ic = new byte[CModeCommand.PrefixLength];
+            CModeResponse.WriteMessageWithoutEndCode(ic, unit, "IC", default);
+            return new SimResponse(ic, CModeCommand.PrefixLength, 1);
+        }
+
+        var message = new byte[ResponseFixedLength];
+        CModeResponse.WriteMessage(message, unit, HeaderString(header), code, default);
+        return new SimResponse(message, ResponseFixedLength, 1);
+    }
+
+    /// <summary>Executes a command message <c>@</c> + unit + header + text (FCS and ending already removed).</summary>
+    /// <param name="message">The unframed message.</param>
+    /// <returns>The answer, or null when the PLC sends none (XZ; a message too short to carry a unit and header).</returns>
+    public SimResponse? Respond(ReadOnlySpan<byte> message)
+    {
+        if (message.Length < CModeCommand.PrefixLength || message[0] != (byte)'@' || !HexAscii.TryParseDecimal(message.Slice(1, 2), out int unit) || unit > 31)
+        {
+            return null;
+        }
+
+        return Respond(unit, message.Slice(3, 2), message.Slice(CModeCommand.PrefixLength));
+    }
+
+    /// <summary>Executes a command for <paramref name="unit"/> with its joined text.</summary>
+    /// <param name="unit">The unit number 0-31 (echoed in the answer).</param>
+    /// <param name="header">The two header characters.</param>
+    /// <param name="text">The command text of every frame, joined.</param>
+    /// <returns>The answer, or null when the PLC sends none (XZ).</returns>
+    public SimResponse? Respond(int unit, ReadOnlySpan<byte> header, ReadOnlySpan<byte> text)
+    {
+        if ((uint)unit > 31)
+        {
+            throw new ArgumentOutOfRangeException(nameof(unit), unit, "Unit numbers are 0-31.");
+        }
+
+        if (header.Length != 2)
+        {
+            throw new ArgumentException("A header has two characters.", nameof(header));
+        }
+
+        if (header[0] == (byte)'T' && header[1] == (byte)'S')
+        {
+            // TS echoes its text exactly, without an end code (the text is not checked like a command's).
+            if (text.Length > TestCommand.MaxTextLength)
+            {
+                return EndCodeOnly(unit, header, EndCode.FrameLengthError);
+            }
+
+            var echo = new byte[CModeCommand.PrefixLength + text.Length];
+            CModeResponse.WriteMessageWithoutEndCode(echo, unit, "TS", text);
+            return new SimResponse(echo, CModeCommand.PrefixLength, 1);
+        }
+
+        CModeCommand command;
+        try
+        {
+            command = CModeCommand.Parse(header, text);
+        }
+        catch (CModeCommandRejectedException e)
+        {
+            return EndCodeOnly(unit, header, e.EndCode);
+        }
+        catch (ArgumentException)
+        {
+            return EndCodeOnly(unit, header, EndCode.FormatError);
+        }
+
+        lock (_plc.SyncRoot)
+        {
+            return Execute(unit, command);
+        }
+    }
+
+    private static string HeaderString(ReadOnlySpan<byte> header) => Encoding.ASCII.GetString(header);
+
+    private static SimResponse Ok(int unit, string header, ReadOnlySpan<byte> data, int atomLength = 4)
+    {
+        var message = new byte[ResponseFixedLength + data.Length];
+        CModeResponse.WriteMessage(message, unit, header, EndCode.NormalCompletion, data);
+        return new SimResponse(message, ResponseFixedLength, atomLength);
+    }
+
+    private static (PlcArea Area, int Word) MapEntry(CModeArea area, int entry) => area switch
+    {
+        CModeArea.Cio => (PlcArea.Cio, entry),
+        CModeArea.Lr => (PlcArea.Cio, 1000 + entry),
+        CModeArea.Holding => (PlcArea.Holding, entry),
+        CModeArea.TimerCounterPv or CModeArea.TimerCounterStatus => entry < 2048 ? (PlcArea.Timer, entry) : (PlcArea.Counter, entry - 2048),
+        CModeArea.Dm => (PlcArea.Dm, entry),
+        CModeArea.Auxiliary => (PlcArea.Auxiliary, entry),
+        CModeArea.Em => (PlcArea.Em, entry),
+        _ => throw new ArgumentOutOfRangeException(nameof(area), area, "Unknown C-mode area."),
+    };
+
+    private static (PlcArea Area, int Word) MapForce(ForceArea area, int word) => area switch
+    {
+        ForceArea.Cio => (PlcArea.Cio, word),
+        ForceArea.Lr => (PlcArea.Cio, 1000 + word),
+        ForceArea.Holding => (PlcArea.Holding, word),
+        ForceArea.Auxiliary => (PlcArea.Auxiliary, word),
+        ForceArea.Timer => (PlcArea.Timer, word),
+        _ => (PlcArea.Counter, word),
+    };
+
+    private SimResponse? Execute(int unit, CModeCommand command)
+    {
+        switch (command)
+        {
+            case AreaReadCommand read:
+                return Read(unit, read);
+            case AreaWriteCommand write:
+                if (_plc.Mode == PlcMode.Run)
+                {
+                    return EndCodeOnly(unit, Encoding.ASCII.GetBytes(write.Header), EndCode.NotExecutableInRunMode);
+                }
+
+                for (int i = 0; i < write.Words.Length; i++)
+                {
+                    (PlcArea area, int word) = MapEntry(write.Area, write.Begin + i);
+                    _plc.WriteWord(area, word, write.Words[i], write.Bank);
+                }
+
+                return Ok(unit, write.Header, default);
+            case StatusReadCommand:
+            {
+                string? message = _plc.FalMessage;
+                Span<byte> data = stackalloc byte[message is null ? 4 : 20];
+                HexAscii.WriteWord(CModeResponse.StatusWord(_plc.Mode), data);
+                if (message is not null)
+                {
+                    data.Slice(4).Fill((byte)' ');
+                    Encoding.ASCII.GetBytes(message, data.Slice(4));
+                }
+
+                return Ok(unit, "MS", data, 1);
+            }
+
+            case StatusChangeCommand change:
+                _plc.Mode = change.Mode;
+                return Ok(unit, "SC", default);
+            case ErrorReadCommand errorRead:
+            {
+                PlcErrorInfo errors = _plc.Errors;
+                Span<byte> data = stackalloc byte[8];
+                HexAscii.WriteWord(errors.FirstWord, data);
+                HexAscii.WriteWord(errors.SecondWord, data.Slice(4));
+                if (errorRead.Clear)
+                {
+                    _plc.ClearErrors();
+                }
+
+                return Ok(unit, "MF", data);
+            }
+
+            case ModelReadCommand:
+            {
+                Span<byte> data = stackalloc byte[2];
+                HexAscii.WriteByte(_plc.ModelCode, data);
+                return Ok(unit, "MM", data, 2);
+            }
+
+            case ForceBitCommand force:
+            {
+                if (_plc.Mode == PlcMode.Run)
+                {
+                    return EndCodeOnly(unit, Encoding.ASCII.GetBytes(force.Header), EndCode.NotExecutableInRunMode);
+                }
+
+                (PlcArea area, int word) = MapForce(force.Area, force.Word);
+                _plc.ForceBit(area, word, force.Bit, force.Set);
+                return Ok(unit, force.Header, default);
+            }
+
+            case MultipleForceCommand multiple:
+                if (_plc.Mode == PlcMode.Run)
+                {
+                    return EndCodeOnly(unit, "FK"u8, EndCode.NotExecutableInRunMode);
+                }
+
+                MultipleForce(multiple);
+                return Ok(unit, "FK", default);
+            case ForcedCancelCommand:
+                if (_plc.Mode == PlcMode.Run)
+                {
+                    return EndCodeOnly(unit, "KC"u8, EndCode.NotExecutableInRunMode);
+                }
+
+                _plc.ReleaseAllForced();
+                return Ok(unit, "KC", default);
+            case AbortCommand:
+                return null;
+            default:
+                return EndCodeOnly(unit, Encoding.ASCII.GetBytes(command.Header), EndCode.UndefinedHeader);
+        }
+    }
+
+    private SimResponse Read(int unit, AreaReadCommand read)
+    {
+        int atom = read.ResponseAtomLength;
+        var data = new byte[read.Count * atom];
+        for (int i = 0; i < read.Count; i++)
+        {
+            (PlcArea area, int word) = MapEntry(read.Area, read.Begin + i);
+            if (read.Area == CModeArea.TimerCounterStatus)
+            {
+                data[i] = _plc.GetFlag(area, word) ? (byte)'1' : (byte)'0';
+            }
+            else
+            {
+                HexAscii.WriteWord(_plc.ReadWord(area, word, read.Bank), data.AsSpan(i * 4, 4));
+            }
+        }
+
+        return Ok(unit, read.Header, data, atom);
+    }
+
+    private void MultipleForce(MultipleForceCommand command)
+    {
+        (PlcArea area, int word) = MapForce(command.Area, command.Word);
+        bool flag = area is PlcArea.Timer or PlcArea.Counter;
+        for (int i = 0; i < 16; i++)
+        {
+            int bit = 15 - i;
+            ForceAction action = command.Actions[i];
+            if (flag && bit != 15)
+            {
+                continue;
+            }
+
+            int target = flag ? 0 : bit;
+            switch (action)
+            {
+                case ForceAction.Reset or ForceAction.Set:
+                    if (flag)
+                    {
+                        _plc.SetFlag(area, word, action == ForceAction.Set);
+                    }
+                    else
+                    {
+                        _plc.SetBit(area, word, target, action == ForceAction.Set);
+                    }
+
+                    break;
+                case ForceAction.ForcedReset or ForceAction.ForcedSet:
+                    _plc.ForceBit(area, word, target, action == ForceAction.ForcedSet);
+                    break;
+                case ForceAction.Cancel:
+                    _plc.ReleaseForced(area, word, target);
+                    break;
+            }
+        }
+    }
+}

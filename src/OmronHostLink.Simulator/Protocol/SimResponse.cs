@@ -1,0 +1,60 @@
+using OmronHostLink.Protocol;
+
+namespace OmronHostLink.Simulator.Protocol;
+
+/// <summary>
+/// An answer the PLC sends: the unframed message (<c>@</c> + unit + header + end code + data) and how it may be cut
+/// into frames when it is longer than one frame.
+/// </summary>
+public sealed class SimResponse
+{
+    /// <summary>Creates the answer.</summary>
+    /// <param name="message">The unframed message.</param>
+    /// <param name="fixedLength">Characters at the start that must stay in the first frame (7: <c>@uuHH</c> + end code).</param>
+    /// <param name="atomLength">Characters of one data entry, never split between frames (4 for words, 1 for RG flags and text).</param>
+    public SimResponse(byte[] message, int fixedLength, int atomLength)
+    {
+        ArgumentNullException.ThrowIfNull(message);
+        Message = message;
+        FixedLength = fixedLength;
+        AtomLength = atomLength;
+    }
+
+    /// <summary>The unframed message.</summary>
+    public byte[] Message { get; }
+
+    /// <summary>Characters that stay in the first frame.</summary>
+    public int FixedLength { get; }
+
+    /// <summary>Characters of one data entry.</summary>
+    public int AtomLength { get; }
+
+    /// <summary>The message as text (for logs and tests).</summary>
+    public override string ToString() => FrameText.Printable(Message);
+
+    /// <summary>Every frame of the answer, as sent one after another (the host asks for each later frame with a bare CR).</summary>
+    /// <returns>The frames, each with FCS and ending.</returns>
+    public IReadOnlyList<byte[]> ToFrames()
+    {
+        var frames = new List<byte[]>();
+        int offset = 0;
+        bool final;
+        do
+        {
+            frames.Add(NextFrame(ref offset, out final));
+        }
+        while (!final);
+
+        return frames;
+    }
+
+    /// <summary>Cuts the frame that starts at <paramref name="offset"/> and moves the offset past it.</summary>
+    internal byte[] NextFrame(ref int offset, out bool final)
+    {
+        int length = FrameWriter.NextSegmentLength(Message.Length - offset, offset == 0, FixedLength, AtomLength, out final);
+        var frame = new byte[length + FrameWriter.FinalOverhead];
+        int written = FrameWriter.WriteFrame(Message.AsSpan(offset, length), final, frame);
+        offset += length;
+        return written == frame.Length ? frame : frame.AsSpan(0, written).ToArray();
+    }
+}

@@ -1,0 +1,75 @@
+namespace OmronHostLink.Simulator;
+
+/// <summary>How a <see cref="VirtualPlc"/> starts and how it behaves on the line.</summary>
+public sealed class VirtualPlcOptions
+{
+    /// <summary>The Host Link unit numbers (0-31) the PLC answers to; frames for any other unit are ignored. Default: unit 0.</summary>
+    public IReadOnlyList<int> Units { get; set; } = [0];
+
+    /// <summary>The operating mode at start. Default PROGRAM.</summary>
+    public PlcMode InitialMode { get; set; } = PlcMode.Program;
+
+    /// <summary>The model code MM reports. Default 0x30 (CS/CJ).</summary>
+    public byte ModelCode { get; set; } = 0x30;
+
+    /// <summary>
+    /// A JSON file with initial memory and state, applied after the other options (so its <c>mode</c> and
+    /// <c>model</c> win). Format: see <see cref="Memory.InitialMemory"/>. Null for none.
+    /// </summary>
+    public string? InitialMemoryFile { get; set; }
+
+    /// <summary>
+    /// The emulated line speed in bits per second; 0 (the default) sends answers as fast as the stream takes them.
+    /// When set, each frame the PLC sends occupies the line for length × <see cref="BitsPerCharacter"/> / baud seconds.
+    /// </summary>
+    public int BaudRate { get; set; }
+
+    /// <summary>Bits on the line per character: start + data + parity + stop. Default 11 (7E2: 1 + 7 + 1 + 2).</summary>
+    public int BitsPerCharacter { get; set; } = 11;
+
+    /// <summary>The PLC's turnaround: the time between the last byte of a command frame and the first byte of its answer. Default zero.</summary>
+    public TimeSpan Turnaround { get; set; } = TimeSpan.Zero;
+
+    /// <summary>Faults to inject into answers. Default none.</summary>
+    public Faults.FaultOptions Faults { get; set; } = new();
+
+    /// <summary>Checks the options.</summary>
+    /// <exception cref="ArgumentException">A value is out of range.</exception>
+    public void Validate()
+    {
+        if (Units is null || Units.Count == 0)
+        {
+            throw new ArgumentException("The PLC needs at least one unit number.", nameof(Units));
+        }
+
+        foreach (int unit in Units)
+        {
+            if ((uint)unit > 31)
+            {
+                throw new ArgumentException($"Unit numbers are 0-31; {unit} is not.", nameof(Units));
+            }
+        }
+
+        if (BaudRate < 0)
+        {
+            throw new ArgumentException("The baud rate cannot be negative.", nameof(BaudRate));
+        }
+
+        if (BitsPerCharacter is < 7 or > 12)
+        {
+            throw new ArgumentException("Bits per character (start + data + parity + stop) must be 7-12.", nameof(BitsPerCharacter));
+        }
+
+        if (Turnaround < TimeSpan.Zero)
+        {
+            throw new ArgumentException("The turnaround cannot be negative.", nameof(Turnaround));
+        }
+
+        if (Faults is null)
+        {
+            throw new ArgumentException("Faults cannot be null; use new FaultOptions() for none.", nameof(Faults));
+        }
+
+        Faults.Validate();
+    }
+}
