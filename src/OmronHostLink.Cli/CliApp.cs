@@ -16,7 +16,8 @@ internal static class CliApp
     {
         var context = new CliContext(stdout, stderr);
         RootCommand root = BuildRoot(context);
-        ParseResult parse = root.Parse(args);
+        // No response files: Host Link frames start with '@', which would otherwise name a file to read arguments from.
+        ParseResult parse = root.Parse(args, new ParserConfiguration { ResponseFileTokenReplacer = null });
         bool helpOrVersion = parse.Action is { ClearsParseErrors: true };
         if (parse.Errors.Count > 0 && !helpOrVersion)
         {

@@ -91,6 +91,15 @@ internal static class FrameExplainer
     {
         byte[] frame = Normalise(input);
         var x = new FrameExplanation { Frame = FrameText.Printable(frame), IsResponse = response };
+        if (frame.AsSpan().SequenceEqual("@**\r"u8) || frame.AsSpan().SequenceEqual("@**"u8))
+        {
+            x.Header = "**";
+            x.Name = Names["**"];
+            x.Final = true;
+            x.Notes.Add("INITIALIZE carries no unit number and no FCS; no unit answers it.");
+            return x;
+        }
+
         int end = frame.Length;
         bool hasCr = frame[end - 1] == (byte)'\r';
         if (hasCr)
@@ -122,14 +131,6 @@ internal static class FrameExplainer
                 x.Problems.Add($"The frame holds the control character 0x{body[i]:X2} at position {i}.");
                 return x;
             }
-        }
-
-        if (body.SequenceEqual("@**"u8))
-        {
-            x.Header = "**";
-            x.Name = Names["**"];
-            x.Notes.Add("INITIALIZE carries no unit number and no FCS; no unit answers it.");
-            return x;
         }
 
         if (body.Length < 2)
@@ -212,6 +213,11 @@ internal static class FrameExplainer
         try
         {
             command = CModeCommand.Parse(Encoding.ASCII.GetBytes(header), text);
+        }
+        catch (CModeCommandRejectedException) when (x.Final == false)
+        {
+            x.Notes.Add("The fields cannot be decoded from this frame alone.");
+            return;
         }
         catch (CModeCommandRejectedException e)
         {

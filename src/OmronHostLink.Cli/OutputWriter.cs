@@ -12,7 +12,13 @@ namespace OmronHostLink.Cli;
 /// </summary>
 internal sealed class OutputWriter
 {
-    private static readonly JsonWriterOptions JsonOptions = new() { Indented = false };
+    private static readonly JsonWriterOptions JsonOptions = new()
+    {
+        Indented = false,
+
+        // Console output, not HTML: keep quotes and apostrophes readable.
+        Encoder = System.Text.Encodings.Web.JavaScriptEncoder.UnsafeRelaxedJsonEscaping,
+    };
     private readonly object _gate = new();
 
     public OutputWriter(TextWriter output, TextWriter error, bool json = false, bool verbose = false)

@@ -1,3 +1,4 @@
+using System.Runtime.InteropServices;
 using OmronHostLink.Cli;
 
 using var cancellation = new CancellationTokenSource();
@@ -10,5 +11,15 @@ Console.CancelKeyPress += (_, e) =>
         cancellation.Cancel();
     }
 };
+
+// SIGTERM (a service manager, kill) stops as cleanly as Ctrl+C.
+using PosixSignalRegistration terminate = PosixSignalRegistration.Create(PosixSignal.SIGTERM, context =>
+{
+    if (!cancellation.IsCancellationRequested)
+    {
+        context.Cancel = true;
+        cancellation.Cancel();
+    }
+});
 
 return await CliApp.RunAsync(args, Console.Out, Console.Error, cancellation.Token).ConfigureAwait(false);

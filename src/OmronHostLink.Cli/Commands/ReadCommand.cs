@@ -48,6 +48,10 @@ internal static class ReadCommand
     {
         string a = parse.GetValue(address)!;
         string? c = parse.GetValue(count);
+        if (c is not null && c.StartsWith("--", StringComparison.Ordinal))
+        {
+            throw new UsageException($"Unknown option '{c}'.");
+        }
         PlcAddress plcAddress;
         if (Addresses.TryJoin(a, c, out PlcAddress joined))
         {

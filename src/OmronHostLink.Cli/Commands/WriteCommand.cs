@@ -25,6 +25,10 @@ internal static class WriteCommand
         {
             string a = parse.GetValue(address)!;
             string[] v = parse.GetValue(values) ?? [];
+            if (v.FirstOrDefault(x => x.StartsWith("--", StringComparison.Ordinal)) is { } unknown)
+            {
+                throw new UsageException($"Unknown option '{unknown}'.");
+            }
             PlcAddress target;
             if (v.Length > 1 && Addresses.TryJoin(a, v[0], out PlcAddress joined))
             {
