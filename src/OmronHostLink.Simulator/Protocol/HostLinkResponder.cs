@@ -15,6 +15,9 @@ public sealed class HostLinkResponder
     /// <summary>Characters an answer keeps in its first frame: <c>@</c>, unit, header, end code.</summary>
     public const int ResponseFixedLength = 7;
 
+    /// <summary>Completion flags an RG answer carries in each frame after the first.</summary>
+    public const int MaxFlagsPerLaterFrame = 124;
+
     private readonly VirtualPlc _plc;
 
     /// <summary>Creates a responder for <paramref name="plc"/>.</summary>
@@ -132,7 +135,9 @@ public sealed class HostLinkResponder
     {
         var message = new byte[ResponseFixedLength + data.Length];
         CModeResponse.WriteMessage(message, unit, header, EndCode.NormalCompletion, data);
-        return new SimResponse(message, ResponseFixedLength, atomLength);
+
+        // RG: 121 points in the first frame, 124 in later ones (C200HX RG page), one short of what 128 characters hold.
+        return new SimResponse(message, ResponseFixedLength, atomLength, header == "RG" ? MaxFlagsPerLaterFrame : 0);
     }
 
     private static (PlcArea Area, int Word) MapEntry(CModeArea area, int entry) => area switch

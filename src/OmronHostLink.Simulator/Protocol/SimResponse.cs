@@ -12,13 +12,21 @@ public sealed class SimResponse
     /// <param name="message">The unframed message.</param>
     /// <param name="fixedLength">Characters at the start that must stay in the first frame (7: <c>@uuHH</c> + end code).</param>
     /// <param name="atomLength">Characters of one data entry, never split between frames (4 for words, 1 for RG flags and text).</param>
-    public SimResponse(byte[] message, int fixedLength, int atomLength)
+    /// <param name="maxContinuationText">
+    /// The most text characters a later frame carries, when the PLC stops short of the 128-character frame limit
+    /// (RG: 124 points a frame); 0 for no limit beyond the frame length.
+    /// </param>
+    public SimResponse(byte[] message, int fixedLength, int atomLength, int maxContinuationText = 0)
     {
         ArgumentNullException.ThrowIfNull(message);
         Message = message;
         FixedLength = fixedLength;
         AtomLength = atomLength;
+        MaxContinuationText = maxContinuationText;
     }
+
+    /// <summary>The most text characters a later frame carries; 0 for the frame-length limit only.</summary>
+    public int MaxContinuationText { get; }
 
     /// <summary>The unframed message.</summary>
     public byte[] Message { get; }
@@ -52,6 +60,12 @@ public sealed class SimResponse
     internal byte[] NextFrame(ref int offset, out bool final)
     {
         int length = FrameWriter.NextSegmentLength(Message.Length - offset, offset == 0, FixedLength, AtomLength, out final);
+        if (offset > 0 && MaxContinuationText > 0 && length > MaxContinuationText)
+        {
+            length = MaxContinuationText - (MaxContinuationText % AtomLength);
+            final = false;
+        }
+
         var frame = new byte[length + FrameWriter.FinalOverhead];
         int written = FrameWriter.WriteFrame(Message.AsSpan(offset, length), final, frame);
         offset += length;

@@ -6,7 +6,7 @@ namespace OmronHostLink;
 /// <summary>
 /// A Host Link client: one link to a serial line (directly, through a TCP serial-device server, or over any stream)
 /// and the PLC at <see cref="HostLinkClientOptions.UnitNumber"/> on it. Other units on a multidrop line are reached
-/// with <see cref="HostLinkUnit.Unit"/>. Safe for concurrent callers: their exchanges queue and never interleave.
+/// with <see cref="HostLinkUnit.Unit(int)"/>. Safe for concurrent callers: their exchanges queue and never interleave.
 /// </summary>
 /// <example>
 /// <code>

@@ -6,7 +6,7 @@ namespace OmronHostLink;
 /// <summary>How a <see cref="HostLinkClient"/> talks to its PLCs. The defaults suit a CS/CJ at 9600 7E2.</summary>
 public sealed class HostLinkClientOptions
 {
-    /// <summary>The unit number the client itself addresses (0-31); other units through <see cref="HostLinkUnit.Unit"/>.</summary>
+    /// <summary>The unit number the client itself addresses (0-31); other units through <see cref="HostLinkUnit.Unit(int)"/>.</summary>
     public int UnitNumber { get; set; }
 
     /// <summary>

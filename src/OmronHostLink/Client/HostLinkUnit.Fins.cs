@@ -1,8 +1,214 @@
+using OmronHostLink.Link;
+using OmronHostLink.Protocol.Fins;
+
 namespace OmronHostLink;
+
+/// <summary>FINS over Host Link (header FA): memory, CPU data and status, cycle time, clock, run/stop, errors, forcing.</summary>
 public partial class HostLinkUnit
 {
-    private ValueTask<ushort[]> FinsReadWordsAsync(PlcAddress a, int c, CancellationToken t) => throw new NotSupportedException();
-    private ValueTask FinsWriteWordsAsync(PlcAddress a, ReadOnlyMemory<ushort> w, CancellationToken t) => throw new NotSupportedException();
-    private ValueTask FinsWriteBitAsync(PlcAddress a, bool v, CancellationToken t) => throw new NotSupportedException();
-    private ValueTask<bool> FinsReadCompletionFlagAsync(PlcAddress a, CancellationToken t) => throw new NotSupportedException();
+    /// <summary>Reads the CPU Unit's model and version (FINS 0501).</summary>
+    public ValueTask<FinsCpuUnitData> ReadCpuUnitDataAsync(CancellationToken cancellationToken = default)
+        => FinsAsync(new CpuUnitDataReadCommand(), 160, retryable: true, static (data, _) => FinsCpuUnitData.Read(data), 0, cancellationToken);
+
+    /// <summary>Reads the CPU Unit's status, mode, error flags and error message (FINS 0601).</summary>
+    public ValueTask<FinsCpuStatus> ReadCpuStatusAsync(CancellationToken cancellationToken = default)
+        => FinsAsync(new CpuUnitStatusReadCommand(), FinsCpuStatus.Length, retryable: true, static (data, _) => FinsCpuStatus.Read(data), 0, cancellationToken);
+
+    /// <summary>Reads the average, longest and shortest cycle times (FINS 0620); <paramref name="initialize"/> restarts the measurement instead.</summary>
+    public ValueTask<FinsCycleTime?> ReadCycleTimeAsync(bool initialize = false, CancellationToken cancellationToken = default)
+        => FinsAsync(new CycleTimeReadCommand(initialize), 12, retryable: !initialize, static (data, init) => init ? null : FinsCycleTime.Read(data), initialize, cancellationToken);
+
+    /// <summary>Reads the PLC's clock (FINS 0701).</summary>
+    public ValueTask<FinsClock> ReadClockAsync(CancellationToken cancellationToken = default)
+        => FinsAsync(new ClockReadCommand(), FinsClock.Length, retryable: true, static (data, _) => FinsClock.Read(data), 0, cancellationToken);
+
+    /// <summary>Sets the PLC's clock (FINS 0702), seconds and day of week included.</summary>
+    public async ValueTask WriteClockAsync(DateTime time, CancellationToken cancellationToken = default)
+        => await FinsAsync(new ClockWriteCommand(time, includeSecond: true, time.DayOfWeek), 0, retryable: false, ExpectNoData, "0702", cancellationToken).ConfigureAwait(false);
+
+    /// <summary>Starts the program in MONITOR or RUN mode (FINS 0401).</summary>
+    public async ValueTask RunAsync(PlcMode mode = PlcMode.Monitor, CancellationToken cancellationToken = default)
+    {
+        if (mode == PlcMode.Program)
+        {
+            throw new ArgumentException("RUN takes MONITOR or RUN; use StopAsync for PROGRAM mode.", nameof(mode));
+        }
+
+        var command = new RunCommand(mode == PlcMode.Run ? FinsCpuMode.Run : FinsCpuMode.Monitor);
+        await FinsAsync(command, 0, retryable: false, ExpectNoData, "0401", cancellationToken).ConfigureAwait(false);
+    }
+
+    /// <summary>Stops the program: PROGRAM mode (FINS 0402).</summary>
+    public async ValueTask StopAsync(CancellationToken cancellationToken = default)
+        => await FinsAsync(new StopCommand(), 0, retryable: false, ExpectNoData, "0402", cancellationToken).ConfigureAwait(false);
+
+    /// <summary>Clears one error, or all with the default <c>FFFF</c> (FINS 2101).</summary>
+    public async ValueTask ClearErrorsAsync(ushort errorCode = ErrorClearCommand.AllErrors, CancellationToken cancellationToken = default)
+        => await FinsAsync(new ErrorClearCommand(errorCode), 0, retryable: false, ExpectNoData, "2101", cancellationToken).ConfigureAwait(false);
+
+    /// <summary>Reads error log records (FINS 2102), up to 53 in one exchange.</summary>
+    public ValueTask<FinsErrorLog> ReadErrorLogAsync(int firstRecord = 0, int count = 20, CancellationToken cancellationToken = default)
+    {
+        var command = new ErrorLogReadCommand(firstRecord, count);
+        return FinsAsync(command, 6 + (count * FinsErrorLogRecord.Length), retryable: true, static (data, _) => FinsErrorLog.Read(data), 0, cancellationToken);
+    }
+
+    /// <summary>Writes <paramref name="value"/> to <paramref name="count"/> words (FINS 0103).</summary>
+    public async ValueTask FillAsync(string address, int count, ushort value, CancellationToken cancellationToken = default)
+    {
+        PlcAddress a = PlcAddress.Parse(address).AsWord();
+        a.EnsureRange(count, HostLinkProtocol.Fins, forWrite: true);
+        await FinsAsync(new MemoryAreaFillCommand(FinsAddressing.Word(a), count, value), 0, retryable: Options.WriteRetries > 0, ExpectNoData, "0103", cancellationToken).ConfigureAwait(false);
+    }
+
+    /// <summary>Copies <paramref name="count"/> words inside the PLC (FINS 0105).</summary>
+    public async ValueTask TransferAsync(string source, string destination, int count, CancellationToken cancellationToken = default)
+    {
+        PlcAddress from = PlcAddress.Parse(source).AsWord();
+        PlcAddress to = PlcAddress.Parse(destination).AsWord();
+        from.EnsureRange(count, HostLinkProtocol.Fins, forWrite: false);
+        to.EnsureRange(count, HostLinkProtocol.Fins, forWrite: true);
+        var command = new MemoryAreaTransferCommand(FinsAddressing.Word(from), FinsAddressing.Word(to), count);
+        await FinsAsync(command, 0, retryable: Options.WriteRetries > 0, ExpectNoData, "0105", cancellationToken).ConfigureAwait(false);
+    }
+
+    /// <summary>
+    /// Reads scattered words and bits in one exchange (FINS 0104): a word address gives its value, a bit address (or a
+    /// timer/counter completion flag) 0 or 1.
+    /// </summary>
+    public async ValueTask<ushort[]> ReadMultipleAsync(IReadOnlyList<string> addresses, CancellationToken cancellationToken = default)
+    {
+        Guard.NotNull(addresses);
+        var items = new FinsMemoryAddress[addresses.Count];
+        for (int i = 0; i < items.Length; i++)
+        {
+            PlcAddress a = PlcAddress.Parse(addresses[i]);
+            a.EnsureRange(1, HostLinkProtocol.Fins, forWrite: false);
+            items[i] = FinsAddressing.Item(a);
+        }
+
+        var command = new MultipleMemoryAreaReadCommand(items);
+        FinsMultipleReadValue[] values = await FinsAsync(command, items.Length * 3, retryable: true, static (data, c) => FinsMultipleReadValue.ReadAll(data, c), command, cancellationToken).ConfigureAwait(false);
+        return values.Select(v => v.Word).ToArray();
+    }
+
+    /// <summary>Force-sets, force-resets or releases one bit (FINS 2301).</summary>
+    public async ValueTask ForceBitAsync(string address, FinsForceAction action, CancellationToken cancellationToken = default)
+    {
+        PlcAddress a = PlcAddress.Parse(address);
+        if (!a.IsBit && a.Area is not (PlcArea.Timer or PlcArea.Counter))
+        {
+            throw new ArgumentException($"{a} names a word; forcing takes a bit address.", nameof(address));
+        }
+
+        await FinsAsync(new ForcedSetResetCommand(action, FinsAddressing.Item(a)), 0, retryable: false, ExpectNoData, "2301", cancellationToken).ConfigureAwait(false);
+    }
+
+    /// <summary>Releases every forced bit (FINS 2302).</summary>
+    public async ValueTask CancelForcedBitsAsync(CancellationToken cancellationToken = default)
+        => await FinsAsync(new ForcedSetResetCancelCommand(), 0, retryable: false, ExpectNoData, "2302", cancellationToken).ConfigureAwait(false);
+
+    // ---- Used by the protocol-neutral members ----
+
+    private async ValueTask<ushort[]> FinsReadWordsAsync(PlcAddress address, int count, CancellationToken cancellationToken)
+    {
+        // Beyond one command's limit the read is split into the fewest commands; the words are then not one snapshot.
+        var words = new ushort[count];
+        for (int done = 0; done < count;)
+        {
+            int n = Math.Min(MemoryAreaReadCommand.MaxWords, count - done);
+            var command = new MemoryAreaReadCommand(FinsAddressing.Word(address.Offset(done)), n);
+            await FinsAsync(
+                command,
+                n * 2,
+                retryable: true,
+                static (data, s) =>
+                {
+                    FinsWords.Read(data, s.words.AsSpan(s.done, s.n));
+                    return true;
+                },
+                (words, done, n),
+                cancellationToken).ConfigureAwait(false);
+            done += n;
+        }
+
+        return words;
+    }
+
+    private async ValueTask FinsWriteWordsAsync(PlcAddress address, ReadOnlyMemory<ushort> words, CancellationToken cancellationToken)
+    {
+        for (int done = 0; done < words.Length;)
+        {
+            int n = Math.Min(MemoryAreaWriteCommand.MaxWords, words.Length - done);
+            var command = MemoryAreaWriteCommand.Words(FinsAddressing.Word(address.Offset(done)), words.Span.Slice(done, n));
+            await FinsAsync(command, 0, retryable: Options.WriteRetries > 0, ExpectNoData, "0102", cancellationToken).ConfigureAwait(false);
+            done += n;
+        }
+    }
+
+    private async ValueTask FinsWriteBitAsync(PlcAddress address, bool value, CancellationToken cancellationToken)
+    {
+        address.EnsureRange(1, HostLinkProtocol.Fins, forWrite: true);
+        var command = MemoryAreaWriteCommand.Bits(FinsAddressing.Bit(address), new[] { value });
+        await FinsAsync(command, 0, retryable: Options.WriteRetries > 0, ExpectNoData, "0102", cancellationToken).ConfigureAwait(false);
+    }
+
+    private ValueTask<bool> FinsReadCompletionFlagAsync(PlcAddress address, CancellationToken cancellationToken)
+        => FinsAsync(
+            new MemoryAreaReadCommand(FinsAddressing.Item(address), 1),
+            1,
+            retryable: true,
+            static (data, _) => FinsBits.Read(data, 1)[0],
+            0,
+            cancellationToken);
+
+    private async ValueTask<PlcStatus> FinsReadStatusAsync(CancellationToken cancellationToken)
+    {
+        FinsCpuStatus status = await ReadCpuStatusAsync(cancellationToken).ConfigureAwait(false);
+        PlcMode mode = status.Mode switch
+        {
+            FinsCpuMode.Run => PlcMode.Run,
+            FinsCpuMode.Monitor => PlcMode.Monitor,
+            _ => PlcMode.Program,
+        };
+        string message = status.ErrorMessage.Trim();
+        return new PlcStatus(mode, global::OmronHostLink.Protocol.CMode.CModeResponse.StatusWord(mode), message.Length == 0 ? null : message);
+    }
+
+    private static bool ExpectNoData(ReadOnlySpan<byte> data, string command)
+    {
+        if (!data.IsEmpty)
+        {
+            throw new HostLinkFrameException(FrameError.WrongLength, $"The answer to FINS {command} should carry no data but carried {data.Length} bytes.");
+        }
+
+        return true;
+    }
+
+    /// <summary>Sends one FINS command in an FA frame and decodes the data of a successful answer.</summary>
+    private protected ValueTask<TResult> FinsAsync<TState, TResult>(FinsCommand command, int maxResponseData, bool retryable, ResponseDecoder<TState, TResult> decodeData, TState state, CancellationToken cancellationToken)
+    {
+        FinsHeader header = FinsHeader.Direct(Connection.NextSid(), Options.FinsResponseWait);
+        var message = new byte[FinsMessage.GetCommandLength(header, command)];
+        FinsMessage.WriteCommand(message, UnitNumber, header, command);
+
+        // Host Link end code, then ICF DA2 SA2 SID, MRC SRC, MRES SRES and the data, two characters a byte.
+        int maxText = 2 + (2 * (header.Length + 4 + maxResponseData));
+        var request = new HostLinkRequest(UnitNumber, "FA", message, message.Length, 1, multiFrame: false, expectsResponse: true, maxText, retryable, singleFrameOnly: true);
+        return Connection.ExecuteAsync(
+            request,
+            retryable ? Options.ReadRetries : Options.WriteRetries,
+            static (text, s) =>
+            {
+                FinsResponse response = FinsResponse.Parse(text, s.unit, s.header, s.code);
+                if (!response.IsSuccess)
+                {
+                    throw new FinsEndCodeException(response.EndCode, s.code, s.unit);
+                }
+
+                return s.decodeData(response.Data.Span, s.state);
+            },
+            (decodeData, state, header, code: command.CommandCode, unit: UnitNumber),
+            cancellationToken);
+    }
 }

@@ -29,16 +29,28 @@ public partial class HostLinkUnit
     /// <summary>The character timing frame deadlines are derived from.</summary>
     public LineTiming LineTiming => Connection.Timing;
 
+    /// <summary>Which protocol this view uses for reads, writes, status and mode where both can do the job.</summary>
+    public HostLinkProtocol Protocol => Options.Protocol;
+
     /// <summary>A view of another unit on the same line (multidrop), sharing this link.</summary>
     /// <exception cref="ArgumentOutOfRangeException">The unit number is not 0-31.</exception>
     public HostLinkUnit Unit(int unitNumber) => new UnitView(Connection, Options, unitNumber);
+
+    /// <summary>A view of a unit on the same line that uses <paramref name="protocol"/> where both protocols can do a job.</summary>
+    /// <exception cref="ArgumentOutOfRangeException">The unit number is not 0-31.</exception>
+    public HostLinkUnit Unit(int unitNumber, HostLinkProtocol protocol)
+    {
+        HostLinkClientOptions options = Options.Clone();
+        options.Protocol = protocol;
+        return new UnitView(Connection, options, unitNumber);
+    }
 
     // ---- Words ----
 
     /// <summary>
     /// Reads <paramref name="count"/> consecutive words. With C-mode the read is one command, however long (the answer
     /// spans frames), so the words are one consistent snapshot. FINS reads longer than
-    /// the FINS per-command limit are split into the fewest commands, and are then not one snapshot.
+    /// <see cref="global::OmronHostLink.Protocol.Fins.MemoryAreaReadCommand.MaxWords"/> are split into the fewest commands, and are then not one snapshot.
     /// </summary>
     /// <exception cref="FormatException">The address is not valid.</exception>
     /// <exception cref="ArgumentException">The range does not fit the area or the protocol (nothing is sent).</exception>
@@ -61,7 +73,7 @@ public partial class HostLinkUnit
 
     /// <summary>
     /// Writes consecutive words as one command (C-mode spans frames as needed; FINS splits writes longer than
-    /// the FINS per-command limit). Completes only when the PLC answered end code 00.
+    /// <see cref="global::OmronHostLink.Protocol.Fins.MemoryAreaWriteCommand.MaxWords"/>). Completes only when the PLC answered end code 00.
     /// </summary>
     /// <exception cref="HostLinkEndCodeException">The PLC refused the write (for example 01: C-mode writes are refused in RUN mode).</exception>
     public ValueTask WriteWordsAsync(string address, ReadOnlyMemory<ushort> words, CancellationToken cancellationToken = default)
@@ -83,15 +95,26 @@ public partial class HostLinkUnit
 
     // ---- Status, mode, errors, model, test ----
 
-    /// <summary>Reads the operating mode, the status word and any FAL/FALS message (MS).</summary>
+    /// <summary>Reads the operating mode, the status word and any FAL/FALS message (C-mode MS; FINS 0601 when the protocol is FINS).</summary>
     public ValueTask<PlcStatus> ReadStatusAsync(CancellationToken cancellationToken = default)
-        => CModeAsync(StatusReadCommand.Instance, 2 + 20, retryable: true, static (data, _) => CModeResponse.ReadStatus(data), 0, cancellationToken);
+        => Options.Protocol == HostLinkProtocol.Fins
+            ? FinsReadStatusAsync(cancellationToken)
+            : CModeAsync(StatusReadCommand.Instance, 2 + 20, retryable: true, static (data, _) => CModeResponse.ReadStatus(data), 0, cancellationToken);
 
     /// <summary>
-    /// Changes the operating mode (SC). Leaving RUN or MONITOR stops the machine's program: callers decide that, not the library.
+    /// Changes the operating mode (C-mode SC; FINS 0401/0402 when the protocol is FINS). Leaving RUN or MONITOR stops
+    /// the machine's program: callers decide that, not the library.
     /// </summary>
     public async ValueTask SetModeAsync(PlcMode mode, CancellationToken cancellationToken = default)
-        => await CModeAsync(new StatusChangeCommand(mode), 2, retryable: false, static (data, _) => ExpectEmpty(data, "SC"), 0, cancellationToken).ConfigureAwait(false);
+    {
+        if (Options.Protocol == HostLinkProtocol.Fins)
+        {
+            await (mode == PlcMode.Program ? StopAsync(cancellationToken) : RunAsync(mode, cancellationToken)).ConfigureAwait(false);
+            return;
+        }
+
+        await CModeAsync(new StatusChangeCommand(mode), 2, retryable: false, static (data, _) => ExpectEmpty(data, "SC"), 0, cancellationToken).ConfigureAwait(false);
+    }
 
     /// <summary>Reads the error information (MF), clearing the errors afterwards when <paramref name="clear"/> is true.</summary>
     public ValueTask<PlcErrorInfo> ReadErrorsAsync(bool clear = false, CancellationToken cancellationToken = default)

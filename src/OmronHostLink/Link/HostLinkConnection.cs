@@ -49,6 +49,7 @@ internal sealed class HostLinkConnection : IAsyncDisposable
     private int _resyncUnit;
     private bool _midExchange;
     private bool _disposed;
+    private int _sid;
 
     public HostLinkConnection(IHostLinkTransport transport, HostLinkClientOptions options)
     {
@@ -62,6 +63,9 @@ internal sealed class HostLinkConnection : IAsyncDisposable
     public LineTiming Timing { get; }
 
     public string Description => _transport.Description;
+
+    /// <summary>The next FINS service ID: every FINS exchange carries its own, so an answer to another one is refused.</summary>
+    public byte NextSid() => unchecked((byte)Interlocked.Increment(ref _sid));
 
     /// <summary>Observes every frame sent and received (for the console's --verbose).</summary>
     public Action<bool, ReadOnlyMemory<byte>>? FrameObserver { get; set; }

@@ -31,7 +31,8 @@ public static class Fcs
     /// <param name="expected">The FCS the characters should have had.</param>
     public static bool Verify(ReadOnlySpan<byte> characters, ReadOnlySpan<byte> found, out byte expected)
     {
+        // Exact characters: Omron writes the FCS in upper case, so "5e" for "5E" is a changed character, not a match.
         expected = Compute(characters);
-        return HexAscii.TryParseByte(found, out byte value) && value == expected;
+        return found.Length == 2 && found[0] == HexAscii.Nibble(expected >> 4) && found[1] == HexAscii.Nibble(expected);
     }
 }

@@ -1,21 +1,12 @@
 using System.Globalization;
-using System.Text.Json;
+using OmronHostLink.Tests.Vectors;
 
 namespace OmronHostLink.Tests.Infrastructure;
 
 /// <summary>Frames taken from ../shared/hostlink/vectors.json by name, for scripted-PLC tests.</summary>
 internal static class GoldenFrames
 {
-    private static readonly Lazy<Dictionary<string, string[]>> All = new(() =>
-    {
-        string path = Path.Combine(AppContext.BaseDirectory, "vectors", "vectors.json");
-        using JsonDocument doc = JsonDocument.Parse(File.ReadAllText(path));
-        return doc.RootElement.EnumerateArray().ToDictionary(
-            v => v.GetProperty("name").GetString()!,
-            v => v.GetProperty("frames").EnumerateArray().Select(f => f.GetString()!).ToArray());
-    });
-
-    public static string[] Frames(string name) => All.Value[name];
+    public static string[] Frames(string name) => GoldenVectors.Get(name).Frames;
 
     public static string[] Rd40Frames => Frames("c_rd_multi_response_40w");
 

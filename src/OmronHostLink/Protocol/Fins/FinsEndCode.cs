@@ -4,7 +4,7 @@ namespace OmronHostLink.Protocol.Fins;
 
 /// <summary>
 /// A FINS response code (MRES × 256 + SRES). Bit 15 flags a network relay error, bit 7 a fatal CPU error and bit 6 a
-/// non-fatal CPU error; <see cref="Code"/> is the value with those flags masked off (<c>& 0x7F3F</c>).
+/// non-fatal CPU error; <see cref="Code"/> is the value with those flags masked off (<c>&amp; 0x7F3F</c>).
 /// </summary>
 public readonly struct FinsEndCode : IEquatable<FinsEndCode>
 {

@@ -1,0 +1,44 @@
+namespace OmronHostLink.Protocol.Fins;
+
+/// <summary>
+/// 0501 CPU UNIT DATA READ: model, version and configuration of the CPU Unit. Parameter (optional): one byte
+/// selecting the data (00 = all) [unverified: the meaning of other values].
+/// </summary>
+public sealed class CpuUnitDataReadCommand : FinsCommand
+{
+    /// <summary>The command code, 0501.</summary>
+    public const ushort Code = FinsCommandCodes.CpuUnitDataRead;
+
+    /// <summary>Reads the CPU Unit data with no parameter.</summary>
+    public CpuUnitDataReadCommand()
+    {
+    }
+
+    /// <summary>Reads the CPU Unit data with the given selector byte (00 = all data).</summary>
+    public CpuUnitDataReadCommand(byte selector) => Selector = selector;
+
+    /// <inheritdoc/>
+    public override ushort CommandCode => Code;
+
+    /// <inheritdoc/>
+    public override int ParameterLength => Selector is null ? 0 : 1;
+
+    /// <summary>The selector byte sent, if any.</summary>
+    public byte? Selector { get; }
+
+    /// <inheritdoc/>
+    public override void WriteParameters(Span<byte> destination)
+    {
+        CheckDestination(destination);
+        if (Selector is byte selector)
+        {
+            destination[0] = selector;
+        }
+    }
+
+    internal static CpuUnitDataReadCommand ParseParameters(ReadOnlySpan<byte> parameters)
+    {
+        CheckLength(Code, parameters, 0, 1);
+        return parameters.Length == 0 ? new CpuUnitDataReadCommand() : new CpuUnitDataReadCommand(parameters[0]);
+    }
+}

@@ -1,0 +1,25 @@
+namespace OmronHostLink.Protocol.Fins;
+
+/// <summary>0601 CPU UNIT STATUS READ: operating status, mode and errors (see <see cref="FinsCpuStatus"/>). No parameters.</summary>
+public sealed class CpuUnitStatusReadCommand : FinsCommand
+{
+    /// <summary>The command code, 0601.</summary>
+    public const ushort Code = FinsCommandCodes.CpuUnitStatusRead;
+
+    /// <inheritdoc/>
+    public override ushort CommandCode => Code;
+
+    /// <inheritdoc/>
+    public override int ParameterLength => 0;
+
+    /// <inheritdoc/>
+    public override void WriteParameters(Span<byte> destination)
+    {
+    }
+
+    internal static CpuUnitStatusReadCommand ParseParameters(ReadOnlySpan<byte> parameters)
+    {
+        CheckLength(Code, parameters, 0, 0);
+        return new CpuUnitStatusReadCommand();
+    }
+}

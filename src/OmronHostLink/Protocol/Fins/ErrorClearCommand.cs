@@ -1,0 +1,40 @@
+namespace OmronHostLink.Protocol.Fins;
+
+/// <summary>
+/// 2101 ERROR CLEAR: clears one error, or all of them. Parameter: error code(2); <see cref="AllErrors"/> (FFFF)
+/// clears every error that can be cleared [unverified: the meaning of FFFE].
+/// </summary>
+public sealed class ErrorClearCommand : FinsCommand
+{
+    /// <summary>The command code, 2101.</summary>
+    public const ushort Code = FinsCommandCodes.ErrorClear;
+
+    /// <summary>The error code that clears all errors.</summary>
+    public const ushort AllErrors = 0xFFFF;
+
+    /// <summary>Creates the command.</summary>
+    /// <param name="errorCode">The error to clear; <see cref="AllErrors"/> by default.</param>
+    public ErrorClearCommand(ushort errorCode = AllErrors) => ErrorCode = errorCode;
+
+    /// <inheritdoc/>
+    public override ushort CommandCode => Code;
+
+    /// <inheritdoc/>
+    public override int ParameterLength => 2;
+
+    /// <summary>The error code cleared.</summary>
+    public ushort ErrorCode { get; }
+
+    /// <inheritdoc/>
+    public override void WriteParameters(Span<byte> destination)
+    {
+        CheckDestination(destination);
+        FinsBytes.WriteUInt16(destination, 0, ErrorCode);
+    }
+
+    internal static ErrorClearCommand ParseParameters(ReadOnlySpan<byte> parameters)
+    {
+        CheckLength(Code, parameters, 2, 2);
+        return new ErrorClearCommand(FinsBytes.ReadUInt16(parameters, 0));
+    }
+}

@@ -1,0 +1,92 @@
+namespace OmronHostLink.Protocol.Fins;
+
+/// <summary>
+/// 0104 MULTIPLE MEMORY AREA READ: reads one element at each of several addresses.
+/// Parameters: [area(1) address(2) bit(1)] repeated. The response repeats [area(1) data(element size)].
+/// </summary>
+public sealed class MultipleMemoryAreaReadCommand : FinsCommand
+{
+    /// <summary>The command code, 0104.</summary>
+    public const ushort Code = FinsCommandCodes.MultipleMemoryAreaRead;
+
+    /// <summary>The most items one command carries (<see cref="FinsCommand.MaxParameterLength"/> / 4).</summary>
+    public const int MaxItems = MaxParameterLength / FinsMemoryAddress.Length;
+
+    private readonly FinsMemoryAddress[] _items;
+
+    /// <summary>Creates the command.</summary>
+    /// <param name="items">The addresses read, 1–<see cref="MaxItems"/>, in order.</param>
+    /// <exception cref="ArgumentException">No items, too many, or a response that would not fit in one frame.</exception>
+    public MultipleMemoryAreaReadCommand(IEnumerable<FinsMemoryAddress> items)
+    {
+        _items = Guard.NotNull(items).ToArray();
+        if (_items.Length == 0 || _items.Length > MaxItems)
+        {
+            throw new ArgumentException($"MULTIPLE MEMORY AREA READ reads 1-{MaxItems} items; {_items.Length} were given.", nameof(items));
+        }
+
+        int response = 0;
+        foreach (FinsMemoryAddress item in _items)
+        {
+            if (item.ElementSize == 0)
+            {
+                throw new ArgumentException("An item address is not initialised.", nameof(items));
+            }
+
+            response += 1 + item.ElementSize;
+        }
+
+        if (response > MemoryAreaReadCommand.MaxResponseDataBytes)
+        {
+            throw new ArgumentException($"The response to these {_items.Length} items would carry {response} bytes; at most {MemoryAreaReadCommand.MaxResponseDataBytes} fit in a Host Link frame. Split the read.", nameof(items));
+        }
+
+        ResponseDataLength = response;
+    }
+
+    /// <inheritdoc/>
+    public override ushort CommandCode => Code;
+
+    /// <inheritdoc/>
+    public override int ParameterLength => _items.Length * FinsMemoryAddress.Length;
+
+    /// <summary>The addresses read, in order.</summary>
+    public IReadOnlyList<FinsMemoryAddress> Items => _items;
+
+    /// <summary>The exact number of data bytes the response carries (area code + element per item).</summary>
+    public int ResponseDataLength { get; }
+
+    /// <inheritdoc/>
+    public override void WriteParameters(Span<byte> destination)
+    {
+        CheckDestination(destination);
+        for (int i = 0; i < _items.Length; i++)
+        {
+            _items[i].Write(destination.Slice(i * FinsMemoryAddress.Length));
+        }
+    }
+
+    internal static MultipleMemoryAreaReadCommand ParseParameters(ReadOnlySpan<byte> parameters)
+    {
+        CheckLength(Code, parameters, FinsMemoryAddress.Length, MaxItems * FinsMemoryAddress.Length);
+        if (parameters.Length % FinsMemoryAddress.Length != 0)
+        {
+            throw new FinsFormatException(0x1002, $"MULTIPLE MEMORY AREA READ items take 4 bytes each; the last of {parameters.Length} bytes is cut short.");
+        }
+
+        var items = new FinsMemoryAddress[parameters.Length / FinsMemoryAddress.Length];
+        int response = 0;
+        for (int i = 0; i < items.Length; i++)
+        {
+            items[i] = FinsMemoryAddress.Read(parameters.Slice(i * FinsMemoryAddress.Length));
+            response += 1 + items[i].ElementSize;
+        }
+
+        if (response > MemoryAreaReadCommand.MaxResponseDataBytes)
+        {
+            throw new FinsFormatException(0x110B, $"The response to {items.Length} items would need {response} bytes, more than a Host Link frame holds.");
+        }
+
+        return new MultipleMemoryAreaReadCommand(items);
+    }
+}

@@ -1,0 +1,38 @@
+namespace OmronHostLink.Protocol.Fins;
+
+/// <summary>A FINS command this library does not model: its code and parameter bytes as they are.</summary>
+public sealed class RawFinsCommand : FinsCommand
+{
+    private readonly byte[] _parameters;
+
+    /// <summary>Creates the command.</summary>
+    /// <param name="commandCode">MRC × 256 + SRC.</param>
+    /// <param name="parameters">The parameter bytes (copied), at most <see cref="FinsCommand.MaxParameterLength"/>.</param>
+    /// <exception cref="ArgumentOutOfRangeException">Too many parameter bytes.</exception>
+    public RawFinsCommand(ushort commandCode, ReadOnlySpan<byte> parameters)
+    {
+        if (parameters.Length > MaxParameterLength)
+        {
+            throw new ArgumentOutOfRangeException(nameof(parameters), parameters.Length, $"A FINS command carries at most {MaxParameterLength} parameter bytes.");
+        }
+
+        CommandCode = commandCode;
+        _parameters = parameters.ToArray();
+    }
+
+    /// <inheritdoc/>
+    public override ushort CommandCode { get; }
+
+    /// <inheritdoc/>
+    public override int ParameterLength => _parameters.Length;
+
+    /// <summary>The parameter bytes.</summary>
+    public ReadOnlyMemory<byte> Parameters => _parameters;
+
+    /// <inheritdoc/>
+    public override void WriteParameters(Span<byte> destination)
+    {
+        CheckDestination(destination);
+        _parameters.CopyTo(destination);
+    }
+}

@@ -1,0 +1,47 @@
+namespace OmronHostLink.Protocol.Fins;
+
+/// <summary>0402 STOP: puts the CPU Unit into PROGRAM mode. Parameter (optional): program number(2, <c>FFFF</c>).</summary>
+public sealed class StopCommand : FinsCommand
+{
+    /// <summary>The command code, 0402.</summary>
+    public const ushort Code = FinsCommandCodes.Stop;
+
+    /// <summary>Stops with program number FFFF.</summary>
+    public StopCommand()
+        : this(RunCommand.AnyProgram)
+    {
+    }
+
+    /// <summary>Stops with the given program number, or with no parameter when it is null.</summary>
+    public StopCommand(ushort? programNumber) => ProgramNumber = programNumber;
+
+    /// <inheritdoc/>
+    public override ushort CommandCode => Code;
+
+    /// <inheritdoc/>
+    public override int ParameterLength => ProgramNumber is null ? 0 : 2;
+
+    /// <summary>The program number sent, if any.</summary>
+    public ushort? ProgramNumber { get; }
+
+    /// <inheritdoc/>
+    public override void WriteParameters(Span<byte> destination)
+    {
+        CheckDestination(destination);
+        if (ProgramNumber is ushort program)
+        {
+            FinsBytes.WriteUInt16(destination, 0, program);
+        }
+    }
+
+    internal static StopCommand ParseParameters(ReadOnlySpan<byte> parameters)
+    {
+        CheckLength(Code, parameters, 0, 2);
+        if (parameters.Length == 1)
+        {
+            throw new FinsFormatException(0x1002, "STOP's program number takes 2 bytes; 1 was sent.");
+        }
+
+        return new StopCommand(parameters.Length == 2 ? FinsBytes.ReadUInt16(parameters, 0) : null);
+    }
+}

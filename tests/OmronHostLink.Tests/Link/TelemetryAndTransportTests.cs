@@ -1,0 +1,136 @@
+using System.Collections.Concurrent;
+using System.Diagnostics.Metrics;
+using System.Net;
+using System.Net.Sockets;
+using Microsoft.Extensions.Logging;
+using OmronHostLink.Link;
+using OmronHostLink.Simulator;
+using OmronHostLink.Simulator.Hosting;
+
+namespace OmronHostLink.Tests.Link;
+
+public sealed class TelemetryAndTransportTests
+{
+    private static HostLinkClientOptions Fast(ILoggerFactory? logging = null) => new()
+    {
+        LineTiming = new LineTiming(115200, 11),
+        TurnaroundAllowance = TimeSpan.FromMilliseconds(150),
+        ReadRetries = 0,
+        LoggerFactory = logging,
+    };
+
+    [Fact]
+    public async Task A_serial_port_that_cannot_open_names_the_port_and_the_reason()
+    {
+        await using var client = HostLinkClient.ForSerialPort("/tmp/no-such-port-for-hostlink", Fast());
+
+        var e = await FluentActions.Awaiting(() => client.ReadStatusAsync().AsTask()).Should().ThrowAsync<HostLinkConnectionException>();
+
+        e.Which.Message.Should().Contain("/tmp/no-such-port-for-hostlink").And.Contain("ENOENT");
+    }
+
+    [Fact]
+    public async Task A_gateway_that_refuses_the_connection_is_a_connection_error_naming_it()
+    {
+        var listener = new TcpListener(IPAddress.Loopback, 0);
+        listener.Start();
+        int port = ((IPEndPoint)listener.LocalEndpoint).Port;
+        listener.Stop();
+        await using var client = HostLinkClient.ForTcp("127.0.0.1", port, Fast(), TimeSpan.FromSeconds(2));
+
+        var e = await FluentActions.Awaiting(() => client.ReadStatusAsync().AsTask()).Should().ThrowAsync<HostLinkConnectionException>();
+
+        e.Which.Message.Should().Contain($"127.0.0.1:{port}");
+    }
+
+    [Fact]
+    public async Task The_meter_counts_transactions_durations_and_errors_by_kind_and_end_code()
+    {
+        var measurements = new ConcurrentBag<(string Instrument, double Value, Dictionary<string, object?> Tags)>();
+        using var listener = new MeterListener();
+        listener.InstrumentPublished = (instrument, l) =>
+        {
+            if (instrument.Meter.Name == HostLinkMetrics.MeterName)
+            {
+                l.EnableMeasurementEvents(instrument);
+            }
+        };
+        listener.SetMeasurementEventCallback<long>((i, v, tags, _) => measurements.Add((i.Name, v, ToDictionary(tags))));
+        listener.SetMeasurementEventCallback<double>((i, v, tags, _) => measurements.Add((i.Name, v, ToDictionary(tags))));
+        listener.Start();
+
+        var plc = new VirtualPlc(new VirtualPlcOptions { InitialMode = PlcMode.Run });
+        (Stream host, Stream plcEnd) = InMemoryLink.CreatePair();
+        using var stop = new CancellationTokenSource();
+        Task session = plc.RunAsync(plcEnd, stop.Token);
+        await using (var client = HostLinkClient.ForStream(host, Fast()))
+        {
+            await client.ReadWordsAsync("D0", 2);
+            await FluentActions.Awaiting(() => client.WriteWordAsync("D0", 1).AsTask()).Should().ThrowAsync<HostLinkEndCodeException>();
+            await FluentActions.Awaiting(() => client.Unit(9).ReadWordsAsync("D0", 1).AsTask()).Should().ThrowAsync<HostLinkTimeoutException>();
+        }
+
+        stop.Cancel();
+        listener.RecordObservableInstruments();
+        measurements.Should().Contain(m => m.Instrument == "hostlink.transactions" && (string?)m.Tags["header"] == "RD");
+        measurements.Should().Contain(m => m.Instrument == "hostlink.transaction.duration" && m.Value > 0);
+        measurements.Should().Contain(m => m.Instrument == "hostlink.errors" && (string?)m.Tags["kind"] == "end_code" && (string?)m.Tags["end_code"] == "01");
+        measurements.Should().Contain(m => m.Instrument == "hostlink.errors" && (string?)m.Tags["kind"] == "timeout");
+    }
+
+    [Fact]
+    public async Task Frames_are_logged_at_trace_and_transactions_at_debug()
+    {
+        var provider = new CapturingLoggerProvider();
+        using var factory = LoggerFactory.Create(b => b.SetMinimumLevel(LogLevel.Trace).AddProvider(provider));
+        var plc = new VirtualPlc();
+        (Stream host, Stream plcEnd) = InMemoryLink.CreatePair();
+        using var stop = new CancellationTokenSource();
+        _ = plc.RunAsync(plcEnd, stop.Token);
+        await using (var client = HostLinkClient.ForStream(host, Fast(factory)))
+        {
+            await client.ReadModelAsync();
+        }
+
+        stop.Cancel();
+        provider.Entries.Should().Contain(e => e.Level == LogLevel.Trace && e.Message.Contains(">> @00MM", StringComparison.Ordinal));
+        provider.Entries.Should().Contain(e => e.Level == LogLevel.Trace && e.Message.Contains("<< @00MM00", StringComparison.Ordinal));
+        provider.Entries.Should().Contain(e => e.Level == LogLevel.Debug && e.Message.Contains("MM completed", StringComparison.Ordinal));
+    }
+
+    private static Dictionary<string, object?> ToDictionary(ReadOnlySpan<KeyValuePair<string, object?>> tags)
+    {
+        var d = new Dictionary<string, object?>();
+        foreach (var t in tags)
+        {
+            d[t.Key] = t.Value;
+        }
+
+        d.TryAdd("header", null);
+        d.TryAdd("kind", null);
+        d.TryAdd("end_code", null);
+        return d;
+    }
+
+    private sealed class CapturingLoggerProvider : ILoggerProvider
+    {
+        public ConcurrentQueue<(LogLevel Level, string Message)> Entries { get; } = new();
+
+        public ILogger CreateLogger(string categoryName) => new Logger(this);
+
+        public void Dispose()
+        {
+        }
+
+        private sealed class Logger(CapturingLoggerProvider owner) : ILogger
+        {
+            public IDisposable? BeginScope<TState>(TState state)
+                where TState : notnull => null;
+
+            public bool IsEnabled(LogLevel logLevel) => true;
+
+            public void Log<TState>(LogLevel logLevel, EventId eventId, TState state, Exception? exception, Func<TState, Exception?, string> formatter)
+                => owner.Entries.Enqueue((logLevel, formatter(state, exception)));
+        }
+    }
+}
