@@ -40,10 +40,13 @@ public sealed class VirtualPlc
     private string? _falMessage;
     private ushort _error1;
     private ushort _error2;
+    private TimeSpan _clockOffset;
 
     /// <summary>Creates a PLC with the given options (or the defaults: unit 0, PROGRAM mode, model code 30).</summary>
     /// <param name="options">Units, initial mode and memory, wire-time emulation, faults. The instance is kept; do not change it once sessions run.</param>
-    /// <exception cref="ArgumentException">The options are not valid, or the initial memory file cannot be read.</exception>
+    /// <exception cref="ArgumentException">The options are not valid.</exception>
+    /// <exception cref="FormatException">The initial memory file does not follow the format of <see cref="InitialMemory"/>.</exception>
+    /// <exception cref="IOException">The initial memory file cannot be read.</exception>
     public VirtualPlc(VirtualPlcOptions? options = null)
     {
         Options = options ?? new VirtualPlcOptions();
@@ -155,6 +158,26 @@ public sealed class VirtualPlc
             lock (_gate)
             {
                 return new PlcErrorInfo(_error1, _error2);
+            }
+        }
+    }
+
+    /// <summary>The PLC's clock (FINS 0701/0702): local time plus an offset that setting it changes.</summary>
+    public DateTime Clock
+    {
+        get
+        {
+            lock (_gate)
+            {
+                return DateTime.Now + _clockOffset;
+            }
+        }
+
+        set
+        {
+            lock (_gate)
+            {
+                _clockOffset = value - DateTime.Now;
             }
         }
     }
