@@ -66,8 +66,6 @@ internal sealed class CliContext
         {
             UsageException => e.Message,
             ArgumentException => Addresses.FirstSentence(e.Message),
-            NotSupportedException when string.IsNullOrEmpty(e.Message) || e.Message == new NotSupportedException().Message
-                => "FINS over Host Link is not available in this version of the client yet; leave out --fins (bit writes: use --read-modify-write).",
             HostLinkException => e.Message,
             _ => $"{e.GetType().Name}: {e.Message}",
         };

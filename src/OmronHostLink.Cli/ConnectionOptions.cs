@@ -23,7 +23,7 @@ internal sealed class ConnectionOptions
         Unit = new Option<int>("--unit") { Description = "The PLC's unit number, 0-31.", DefaultValueFactory = _ => 0, HelpName = "0-31" };
         Timeout = new Option<int?>("--timeout") { Description = "Milliseconds the PLC may take to start answering a frame (the wire time is added).", HelpName = "ms" };
         Retries = new Option<int?>("--retries") { Description = "Times a read is repeated after a timeout or damaged frame (writes are never repeated).", HelpName = "n" };
-        Fins = new Option<bool>("--fins") { Description = "Use FINS over Host Link where C-mode would otherwise be used." };
+        Fins = new Option<bool>("--fins") { Description = "Use FINS over Host Link (FA) where C-mode would otherwise be used: reads, writes, bit writes, status and mode." };
     }
 
     public bool IncludeUnit { get; }

@@ -14,7 +14,7 @@ internal static class WriteCommand
         var address = new Argument<string>("address") { Description = "D100, CIO100.05, W30, H10, A448, T5, C7, E1_100." };
         var values = new Argument<string[]>("value") { Description = "Values: decimal or 0x-hex; float as 1.5; string as text; bit as 1/0, on/off, true/false.", Arity = ArgumentArity.OneOrMore };
         Option<string?> kind = ReadCommand.AsOption();
-        var rmw = new Option<bool>("--read-modify-write") { Description = "Write bits in C-mode by reading the word, changing the bit and writing the word back (anything the PLC program writes in between is lost)." };
+        var rmw = new Option<bool>("--read-modify-write") { Description = "Without --fins, write bits by reading the word, changing the bit and writing the word back (anything the PLC program writes in between is lost). With --fins bits are written directly." };
         Option<bool> json = CliContext.JsonOption();
         command.Add(address);
         command.Add(values);
