@@ -1,0 +1,53 @@
+namespace OmronHostLink.Cli;
+
+/// <summary>Address arguments as the user types them.</summary>
+internal static class Addresses
+{
+    /// <summary>Parses an address the way <see cref="PlcAddress.Parse"/> does, as a usage error when it is not valid.</summary>
+    public static PlcAddress Parse(string text)
+    {
+        try
+        {
+            return PlcAddress.Parse(text);
+        }
+        catch (FormatException e)
+        {
+            throw new UsageException(e.Message, e);
+        }
+    }
+
+    /// <summary>
+    /// Accepts an address typed as two words (<c>CIO 100.05</c> unquoted): when <paramref name="first"/> is an area name
+    /// alone and joined with <paramref name="second"/> it makes an address, the two are one address.
+    /// </summary>
+    /// <returns>True when the two tokens were joined.</returns>
+    public static bool TryJoin(string first, string? second, out PlcAddress address)
+    {
+        address = default;
+        return second is not null
+            && first.Length > 0
+            && first.All(char.IsLetter)
+            && !PlcAddress.TryParse(first, out _)
+            && PlcAddress.TryParse(first + " " + second, out address);
+    }
+
+    /// <summary>Checks a range against the protocol's reach, as a usage error.</summary>
+    public static void EnsureRange(PlcAddress address, int words, HostLinkProtocol protocol, bool forWrite)
+    {
+        try
+        {
+            address.EnsureRange(words, protocol, forWrite);
+        }
+        catch (ArgumentException e)
+        {
+            throw new UsageException(FirstSentence(e.Message), e);
+        }
+    }
+
+    /// <summary>An ArgumentException message without the "(Parameter 'x')" suffix.</summary>
+    public static string FirstSentence(string message)
+    {
+        int p = message.IndexOf(" (Parameter '", StringComparison.Ordinal);
+        return p > 0 ? message[..p] : message;
+    }
+}

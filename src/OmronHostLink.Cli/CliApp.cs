@@ -1,0 +1,64 @@
+using System.CommandLine;
+using OmronHostLink.Cli.Commands;
+
+namespace OmronHostLink.Cli;
+
+/// <summary>The <c>hostlink</c> command line: parses, runs one command, and returns its exit code.</summary>
+internal static class CliApp
+{
+    /// <summary>Runs the command line <paramref name="args"/> with the given output streams.</summary>
+    /// <param name="args">The arguments after the program name.</param>
+    /// <param name="stdout">Results.</param>
+    /// <param name="stderr">Errors, notes and, with <c>--verbose</c>, frames.</param>
+    /// <param name="cancellationToken">Ctrl+C: stops <c>monitor</c> and <c>simulate</c> cleanly and cancels any exchange.</param>
+    /// <returns>The exit code (see <see cref="ExitCodes"/>).</returns>
+    internal static async Task<int> RunAsync(string[] args, TextWriter stdout, TextWriter stderr, CancellationToken cancellationToken)
+    {
+        var context = new CliContext(stdout, stderr);
+        RootCommand root = BuildRoot(context);
+        // No response files: Host Link frames start with '@', which would otherwise name a file to read arguments from.
+        ParseResult parse = root.Parse(args, new ParserConfiguration { ResponseFileTokenReplacer = null });
+        bool helpOrVersion = parse.Action is { ClearsParseErrors: true };
+        if (parse.Errors.Count > 0 && !helpOrVersion)
+        {
+            foreach (System.CommandLine.Parsing.ParseError error in parse.Errors)
+            {
+                stderr.WriteLine(error.Message);
+            }
+
+            string name = parse.CommandResult.Command is RootCommand ? "hostlink" : "hostlink " + parse.CommandResult.Command.Name;
+            stderr.WriteLine($"Run '{name} --help' for usage.");
+            return ExitCodes.InvalidInput;
+        }
+
+        var invocation = new InvocationConfiguration
+        {
+            Output = stdout,
+            Error = stderr,
+            EnableDefaultExceptionHandler = false,
+            ProcessTerminationTimeout = null,
+        };
+        return await parse.InvokeAsync(invocation, cancellationToken).ConfigureAwait(false);
+    }
+
+    internal static RootCommand BuildRoot(CliContext context)
+    {
+        var root = new RootCommand("hostlink: talk to Omron PLCs over Host Link (C-mode and FINS): probe a line, read status and errors, read, write and monitor memory, change modes, decode captured frames, run a virtual PLC.");
+        root.Add(context.Verbose);
+        root.Add(PortsCommand.Create(context));
+        root.Add(ScanCommand.Create(context));
+        root.Add(TestCommand.Create(context));
+        root.Add(StatusCommand.Create(context));
+        root.Add(ErrorsCommand.Create(context));
+        root.Add(ModelCommand.Create(context));
+        root.Add(ModeCommand.Create(context));
+        root.Add(ReadCommand.Create(context));
+        root.Add(WriteCommand.Create(context));
+        root.Add(MonitorCommand.Create(context));
+        root.Add(ExplainCommand.Create(context));
+        root.Add(RawCommand.Create(context));
+        root.Add(SimulateCommand.Create(context));
+        root.Add(DemoCommand.Create(context));
+        return root;
+    }
+}

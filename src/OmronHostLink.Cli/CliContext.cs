@@ -1,0 +1,81 @@
+using System.CommandLine;
+using System.Text;
+
+namespace OmronHostLink.Cli;
+
+/// <summary>What every command shares: the output streams and the global options, and how a command body is run.</summary>
+internal sealed class CliContext
+{
+    public CliContext(TextWriter output, TextWriter error)
+    {
+        Out = output;
+        Error = error;
+        Verbose = new Option<bool>("--verbose", "-v")
+        {
+            Description = "Print every frame sent and received, with direction and time (to stderr), and stack traces of errors.",
+            Recursive = true,
+        };
+    }
+
+    public TextWriter Out { get; }
+
+    public TextWriter Error { get; }
+
+    /// <summary><c>--verbose</c>, on every command.</summary>
+    public Option<bool> Verbose { get; }
+
+    /// <summary>A new <c>--json</c> option for one command.</summary>
+    public static Option<bool> JsonOption(string description = "Print the result as one JSON document.")
+        => new("--json") { Description = description };
+
+    /// <summary>
+    /// Sets the command's action: runs <paramref name="body"/> and turns any exception into one clear sentence on stderr
+    /// and its exit code (a stack trace only with <c>--verbose</c>).
+    /// </summary>
+    public void SetAction(Command command, Option<bool>? json, Func<ParseResult, OutputWriter, CancellationToken, Task<int>> body)
+    {
+        command.SetAction(async (parse, cancellationToken) =>
+        {
+            var output = new OutputWriter(Out, Error, json is not null && parse.GetValue(json), parse.GetValue(Verbose));
+            try
+            {
+                return await body(parse, output, cancellationToken).ConfigureAwait(false);
+            }
+            catch (OperationCanceledException) when (cancellationToken.IsCancellationRequested)
+            {
+                output.Fail("Cancelled.");
+                return ExitCodes.Failure;
+            }
+            catch (Exception e)
+            {
+                output.Fail(Describe(e, parse));
+                if (output.Verbose)
+                {
+                    output.Fail(e.ToString());
+                }
+
+                return ExitCodes.For(e);
+            }
+        });
+    }
+
+    /// <summary>One sentence for the user.</summary>
+    public static string Describe(Exception e, ParseResult? parse = null)
+    {
+        string message = e switch
+        {
+            UsageException => e.Message,
+            ArgumentException => Addresses.FirstSentence(e.Message),
+            HostLinkException => e.Message,
+            _ => $"{e.GetType().Name}: {e.Message}",
+        };
+        message = message.Trim();
+        var sb = new StringBuilder(message);
+        if (sb.Length > 0 && sb[^1] is not ('.' or '!' or '?'))
+        {
+            sb.Append('.');
+        }
+
+        return sb.ToString();
+    }
+}

@@ -1,0 +1,46 @@
+using System.CommandLine;
+using OmronHostLink.Transports;
+
+namespace OmronHostLink.Cli.Commands;
+
+/// <summary><c>ports</c>: lists the serial ports of this machine.</summary>
+internal static class PortsCommand
+{
+    public static Command Create(CliContext context)
+    {
+        var command = new Command("ports", "List serial ports (ptys and socat links are not listed; pass their path to --port).");
+        Option<bool> json = CliContext.JsonOption();
+        command.Add(json);
+        context.SetAction(command, json, (_, output, _) =>
+        {
+            IReadOnlyList<string> ports = SerialPortStream.GetPortNames();
+            output.Result(
+                w =>
+                {
+                    if (ports.Count == 0)
+                    {
+                        w.WriteLine("No serial ports found. Ptys and socat links are never listed: pass their path to --port.");
+                    }
+
+                    foreach (string port in ports)
+                    {
+                        w.WriteLine(port);
+                    }
+                },
+                j =>
+                {
+                    j.WriteStartObject();
+                    j.WriteStartArray("ports");
+                    foreach (string port in ports)
+                    {
+                        j.WriteStringValue(port);
+                    }
+
+                    j.WriteEndArray();
+                    j.WriteEndObject();
+                });
+            return Task.FromResult(ExitCodes.Success);
+        });
+        return command;
+    }
+}

@@ -1,0 +1,203 @@
+using System.CommandLine;
+using System.Globalization;
+using System.Net;
+using System.Net.Sockets;
+using OmronHostLink.Simulator;
+using OmronHostLink.Simulator.Faults;
+using OmronHostLink.Simulator.Hosting;
+using OmronHostLink.Transports;
+
+namespace OmronHostLink.Cli.Commands;
+
+/// <summary><c>simulate</c>: runs a virtual CS/CJ PLC on TCP or a serial port until Ctrl+C.</summary>
+internal static class SimulateCommand
+{
+    public static Command Create(CliContext context)
+    {
+        var command = new Command("simulate", "Run a virtual CS/CJ PLC (C-mode) on TCP (default 127.0.0.1:9600) or a serial port. Ctrl+C stops cleanly.");
+        var tcp = new Option<string?>("--tcp") { Description = "Listen on host:port (default 127.0.0.1:9600; port 0 picks a free one).", HelpName = "host:port" };
+        var port = new Option<string?>("--port") { Description = "Serve a serial port or pty path instead (e.g. one end of a socat pair).", HelpName = "name" };
+        var units = new Option<string>("--units") { Description = "Unit numbers the PLC answers: 0,1 or 0-3.", DefaultValueFactory = _ => "0", HelpName = "list" };
+        var mode = new Option<string>("--mode") { Description = "Operating mode at start.", DefaultValueFactory = _ => "program", HelpName = "program|monitor|run" };
+        mode.AcceptOnlyFromAmong("program", "monitor", "run");
+        var memory = new Option<string?>("--memory") { Description = "JSON file with initial memory and state, e.g. {\"D100\":[1,2,3],\"mode\":\"run\"}.", HelpName = "file.json" };
+        var baud = new Option<int?>("--baud") { Description = "Line speed: on TCP, emulate the wire time of this speed (default none); on a serial port, the port's speed (default 9600).", HelpName = "n" };
+        var dataBits = new Option<int>("--data-bits") { Description = "Serial data bits.", DefaultValueFactory = _ => 7, HelpName = "7|8" };
+        dataBits.AcceptOnlyFromAmong("7", "8");
+        var parity = new Option<string>("--parity") { Description = "Serial parity.", DefaultValueFactory = _ => "even", HelpName = "none|even|odd" };
+        parity.AcceptOnlyFromAmong("none", "even", "odd");
+        var stopBits = new Option<int>("--stop-bits") { Description = "Serial stop bits.", DefaultValueFactory = _ => 2, HelpName = "1|2" };
+        stopBits.AcceptOnlyFromAmong("1", "2");
+        var turnaround = new Option<int>("--turnaround") { Description = "Milliseconds between a command and its answer.", DefaultValueFactory = _ => 0, HelpName = "ms" };
+        var model = new Option<string?>("--model") { Description = "Model code MM reports, two hex digits (default 30 = CS/CJ).", HelpName = "hex" };
+        var drop = Probability("--fault-drop", "Probability of not answering at all.");
+        var corrupt = Probability("--fault-corrupt", "Probability of corrupting a character (the FCS no longer matches).");
+        var noise = Probability("--fault-noise", "Probability of sending noise bytes before a frame.");
+        var truncate = Probability("--fault-truncate", "Probability of cutting a frame short.");
+        var late = Probability("--fault-late", "Probability of answering late (after the host's deadline).");
+        var echo = Probability("--fault-echo", "Probability of echoing the command first, as a 2-wire RS-485 line does.");
+        var lateBy = new Option<int>("--fault-late-by") { Description = "How late a late answer comes, in ms.", DefaultValueFactory = _ => 1000, HelpName = "ms" };
+        var seed = new Option<int>("--fault-seed") { Description = "Seed of the fault generator (same seed, same faults).", DefaultValueFactory = _ => 1, HelpName = "n" };
+        foreach (Option o in new Option[] { tcp, port, units, mode, memory, baud, dataBits, parity, stopBits, turnaround, model, drop, corrupt, noise, truncate, late, lateBy, echo, seed })
+        {
+            command.Add(o);
+        }
+
+        context.SetAction(command, null, async (parse, output, ct) =>
+        {
+            string? tcpText = parse.GetValue(tcp);
+            string? portName = parse.GetValue(port);
+            if (tcpText is not null && portName is not null)
+            {
+                throw new UsageException("Give either --tcp or --port, not both.");
+            }
+
+            int? baudRate = parse.GetValue(baud);
+            var options = new VirtualPlcOptions
+            {
+                Units = Numbers.ParseUnits(parse.GetValue(units)!, "--units"),
+                InitialMode = parse.GetValue(mode) switch
+                {
+                    "run" => PlcMode.Run,
+                    "monitor" => PlcMode.Monitor,
+                    _ => PlcMode.Program,
+                },
+                BaudRate = baudRate ?? 0,
+                Turnaround = TimeSpan.FromMilliseconds(parse.GetValue(turnaround)),
+                Faults = new FaultOptions
+                {
+                    Seed = parse.GetValue(seed),
+                    Drop = parse.GetValue(drop),
+                    Corrupt = parse.GetValue(corrupt),
+                    Noise = parse.GetValue(noise),
+                    Truncate = parse.GetValue(truncate),
+                    Late = parse.GetValue(late),
+                    LateBy = TimeSpan.FromMilliseconds(parse.GetValue(lateBy)),
+                    Echo = parse.GetValue(echo),
+                },
+            };
+            if (parse.GetValue(model) is { } modelText)
+            {
+                options.ModelCode = byte.TryParse(modelText, NumberStyles.AllowHexSpecifier, CultureInfo.InvariantCulture, out byte code)
+                    ? code
+                    : throw new UsageException($"--model '{modelText}' is not two hex digits such as 30.");
+            }
+
+            SerialLineSettings? serial = null;
+            if (portName is not null)
+            {
+                serial = new SerialLineSettings
+                {
+                    PortName = portName,
+                    BaudRate = baudRate ?? 9600,
+                    DataBits = parse.GetValue(dataBits),
+                    Parity = parse.GetValue(parity) switch { "none" => SerialParity.None, "odd" => SerialParity.Odd, _ => SerialParity.Even },
+                    StopBits = parse.GetValue(stopBits) == 1 ? SerialStopBits.One : SerialStopBits.Two,
+                };
+                try
+                {
+                    serial.Validate();
+                }
+                catch (ArgumentException e)
+                {
+                    throw new UsageException($"The serial settings are not valid: {Addresses.FirstSentence(e.Message)}", e);
+                }
+
+                options.BitsPerCharacter = serial.BitsPerCharacter;
+            }
+
+            VirtualPlc plc;
+            try
+            {
+                options.Validate();
+                plc = new VirtualPlc(options);
+                if (parse.GetValue(memory) is { } file)
+                {
+                    plc.LoadJsonFile(file);
+                }
+            }
+            catch (Exception e) when (e is FormatException or IOException or UnauthorizedAccessException)
+            {
+                throw new UsageException($"The initial memory cannot be loaded: {e.Message}", e);
+            }
+
+            string unitList = string.Join(",", options.Units.Select(u => u.ToString("D2", CultureInfo.InvariantCulture)));
+            string state = $"{StatusCommand.ModeName(plc.Mode)} mode, model code {plc.ModelCode:X2}";
+            if (serial is not null)
+            {
+                await using var host = new SerialSimulatorHost(plc, () => OpenSerial(serial));
+                await host.StartAsync(ct).ConfigureAwait(false);
+                output.Line($"Simulating units {unitList} ({state}) on {serial}. Ctrl+C stops.");
+                await Task.WhenAny(host.Completion, Task.Delay(Timeout.Infinite, ct)).ConfigureAwait(false);
+                await host.StopAsync(CancellationToken.None).ConfigureAwait(false);
+            }
+            else
+            {
+                (string h, int p) = tcpText is null ? ("127.0.0.1", 9600) : ParseListen(tcpText);
+                IPAddress address = h is "localhost" ? IPAddress.Loopback : IPAddress.TryParse(h, out IPAddress? ip) ? ip
+                    : throw new UsageException($"--tcp: '{h}' is not an IP address to listen on (use 127.0.0.1, 0.0.0.0 or ::).");
+                await using var host = new TcpSimulatorHost(plc, new IPEndPoint(address, p));
+                try
+                {
+                    await host.StartAsync(ct).ConfigureAwait(false);
+                }
+                catch (SocketException e)
+                {
+                    throw new HostLinkConnectionException($"Cannot listen on {h}:{p}: {e.Message}", e);
+                }
+
+                output.Line($"Simulating units {unitList} ({state}) on {host.EndPoint}. Ctrl+C stops.");
+                try
+                {
+                    await Task.Delay(Timeout.Infinite, ct).ConfigureAwait(false);
+                }
+                catch (OperationCanceledException)
+                {
+                }
+
+                await host.StopAsync(CancellationToken.None).ConfigureAwait(false);
+            }
+
+            output.Line("Simulator stopped.");
+            return ExitCodes.Success;
+        });
+        return command;
+    }
+
+    private static (string Host, int Port) ParseListen(string text)
+    {
+        int colon = text.LastIndexOf(':');
+        if (colon <= 0 || !int.TryParse(text.AsSpan(colon + 1), NumberStyles.None, CultureInfo.InvariantCulture, out int p) || p > 65535)
+        {
+            throw new UsageException($"--tcp '{text}' is not host:port with a port 0-65535.");
+        }
+
+        return (text[..colon].Trim('[', ']'), p);
+    }
+
+    private static Stream OpenSerial(SerialLineSettings settings)
+    {
+        try
+        {
+            return SerialPortStream.Open(settings);
+        }
+        catch (Exception e) when (e is IOException or UnauthorizedAccessException or PlatformNotSupportedException)
+        {
+            throw new HostLinkConnectionException($"Cannot open serial port {settings.PortName}: {e.Message}", e);
+        }
+    }
+
+    private static Option<double> Probability(string name, string description)
+    {
+        var option = new Option<double>(name) { Description = description + " 0-1.", DefaultValueFactory = _ => 0, HelpName = "p" };
+        option.Validators.Add(result =>
+        {
+            double p = result.GetValueOrDefault<double>();
+            if (double.IsNaN(p) || p < 0 || p > 1)
+            {
+                result.AddError($"{name} must be a probability 0-1.");
+            }
+        });
+        return option;
+    }
+}
