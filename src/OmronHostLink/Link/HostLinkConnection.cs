@@ -626,6 +626,10 @@ internal sealed class HostLinkConnection : IAsyncDisposable
         // Not in step yet: this exchange fails and the next attempt fences again. A unit that did not echo a fresh TS
         // within its deadline is not talking, so the next fence goes to the unit the caller wants.
         _resyncUnit = requestUnit;
-        throw new HostLinkTimeoutException($"The link could not be resynchronised: unit {unit:D2} did not echo the TS fence within {timeout.TotalMilliseconds:0} ms.", timeout);
+        throw new HostLinkTimeoutException(
+            unit == requestUnit
+                ? $"No answer from unit {unit:D2} on {_transport.Description} within {timeout.TotalMilliseconds:0} ms (it did not echo the TS check sent after the previous failure)."
+                : $"The link could not be resynchronised: unit {unit:D2}, which failed before, did not echo the TS check within {timeout.TotalMilliseconds:0} ms; the next exchange checks unit {requestUnit:D2} instead.",
+            timeout);
     }
 }
