@@ -32,6 +32,18 @@ internal static class PlcAddressParser
     public static bool TryParse(ReadOnlySpan<char> text, out PlcAddress address, out string? error)
     {
         address = default;
+
+        // Only spaces and tabs count as whitespace here: a CR, LF, NUL or other control character is refused, not
+        // trimmed (the bad-input table found "D1\r" accepted); it is a line ending or garbage, never part of an address.
+        for (var k = 0; k < text.Length; k++)
+        {
+            if (char.IsControl(text[k]) && text[k] != '\t')
+            {
+                error = $"it contains the control character U+{(int)text[k]:X4} at position {k}";
+                return false;
+            }
+        }
+
         var s = text.Trim();
         if (s.IsEmpty)
         {

@@ -234,10 +234,15 @@ internal sealed class HostLinkConnection : IAsyncDisposable
             int firstExpected = request.SingleFrameOnly
                 ? CModeOverhead + request.MaxResponseText
                 : Math.Min(MaxFirstFrame, CModeOverhead + request.MaxResponseText);
+            // An answer that may span frames is cut if its first frame is lost or damaged: the PLC then holds the rest
+            // and takes any command, our TS fence included, as the delimiter asking for it. Only INITIALIZE ends that,
+            // so resynchronisation must send @** then too (the soak found fences answered with stale continuation frames).
+            _midExchange = preRead == 0 && !request.SingleFrameOnly && CModeOverhead + request.MaxResponseText > MaxFirstFrame;
             int len = preRead > 0
                 ? preRead
                 : await ReadFrameAsync(expectStart: true, FrameTimeout(sentChars, firstExpected), deadline, cancellationToken).ConfigureAwait(false);
             FrameInfo info = FrameParser.ParseFirst(_frame.AsSpan(0, len));
+            _midExchange = !info.IsFinal;
             CheckEcho(request, info);
             AppendText(info.Text(_frame.AsSpan(0, len)), request);
             frames++;

@@ -49,11 +49,21 @@ public sealed class SocatPtyPair : IAsyncDisposable
 
     /// <summary>Starts socat and waits (at most 5 s) until both links exist.</summary>
     /// <exception cref="InvalidOperationException">socat is not installed, exited early, or did not get ready in time.</exception>
-    public static async Task<SocatPtyPair> StartAsync()
+    public static Task<SocatPtyPair> StartAsync()
     {
         string stem = Path.Combine(Path.GetTempPath(), $"ohl-pty-{Environment.ProcessId}-{Guid.NewGuid():N}");
-        string pathA = stem + "-A";
-        string pathB = stem + "-B";
+        return StartAsync(stem + "-A", stem + "-B");
+    }
+
+    /// <summary>
+    /// Starts socat again on the same link names after <see cref="CloseAsync"/>, as a USB adapter that comes back does
+    /// (new ptys behind the same paths).
+    /// </summary>
+    public Task<SocatPtyPair> RestartAsync() => StartAsync(PathA, PathB);
+
+    /// <summary>Starts socat with the given link paths (they must not exist).</summary>
+    public static async Task<SocatPtyPair> StartAsync(string pathA, string pathB)
+    {
 
         var startInfo = new ProcessStartInfo("socat")
         {

@@ -7,6 +7,21 @@ internal static class CModeCommandParser
 {
     public static CModeCommand Parse(ReadOnlySpan<byte> header, ReadOnlySpan<byte> text)
     {
+        try
+        {
+            return ParseChecked(header, text);
+        }
+        catch (ArgumentException e)
+        {
+            // The typed commands' constructors refuse what they cannot encode (TS text holding '@', '*' or CR, for one)
+            // with ArgumentException, right for host-side callers; received text is the PLC's to refuse, with the
+            // documented CModeCommandRejectedException (fuzzing found ArgumentException escaping Parse).
+            throw Reject(EndCode.FormatError, e.Message);
+        }
+    }
+
+    private static CModeCommand ParseChecked(ReadOnlySpan<byte> header, ReadOnlySpan<byte> text)
+    {
         if (header.Length != 2)
         {
             throw Reject(EndCode.UndefinedHeader, "A header has two characters.");
