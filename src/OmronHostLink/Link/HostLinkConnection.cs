@@ -474,15 +474,7 @@ internal sealed class HostLinkConnection : IAsyncDisposable
         deadline.CancelAfter(timeout);
         while (true)
         {
-            ReadResult result;
-            try
-            {
-                result = await reader.ReadAsync(deadline.Token).ConfigureAwait(false);
-            }
-            catch (OperationCanceledException) when (!callerToken.IsCancellationRequested && deadline.IsCancellationRequested)
-            {
-                throw new HostLinkTimeoutException($"No answer from {_transport.Description} within {timeout.TotalMilliseconds:0} ms.", timeout);
-            }
+            ReadResult result = await ReadWithinAsync(reader, timeout, deadline, callerToken, "No answer from " + _transport.Description).ConfigureAwait(false);
 
             ReadOnlySequence<byte> buffer = result.Buffer;
             FrameScanResult scan = FrameReader.TryReadFrame(ref buffer, expectStart, out ReadOnlySequence<byte> frame, out _);
@@ -518,6 +510,19 @@ internal sealed class HostLinkConnection : IAsyncDisposable
         }
     }
 
+    /// <summary>One read from the pipe that turns the deadline's cancellation into a timeout (the caller's own cancellation stays a cancellation).</summary>
+    private static async ValueTask<ReadResult> ReadWithinAsync(PipeReader reader, TimeSpan timeout, CancellationTokenSource deadline, CancellationToken callerToken, string what)
+    {
+        try
+        {
+            return await reader.ReadAsync(deadline.Token).ConfigureAwait(false);
+        }
+        catch (OperationCanceledException) when (!callerToken.IsCancellationRequested && deadline.IsCancellationRequested)
+        {
+            throw new HostLinkTimeoutException($"{what} within {timeout.TotalMilliseconds:0} ms.", timeout);
+        }
+    }
+
     /// <summary>Reads back our own transmission from a line that echoes it, and checks it.</summary>
     private async ValueTask ConsumeEchoAsync(int length, CancellationTokenSource deadline, CancellationToken callerToken)
     {
@@ -526,15 +531,7 @@ internal sealed class HostLinkConnection : IAsyncDisposable
         deadline.CancelAfter(timeout);
         while (true)
         {
-            ReadResult result;
-            try
-            {
-                result = await reader.ReadAsync(deadline.Token).ConfigureAwait(false);
-            }
-            catch (OperationCanceledException) when (!callerToken.IsCancellationRequested && deadline.IsCancellationRequested)
-            {
-                throw new HostLinkTimeoutException($"The line did not echo our frame within {timeout.TotalMilliseconds:0} ms (LocalEcho is on).", timeout);
-            }
+            ReadResult result = await ReadWithinAsync(reader, timeout, deadline, callerToken, "The line did not echo our frame (LocalEcho is on)").ConfigureAwait(false);
 
             ReadOnlySequence<byte> buffer = result.Buffer;
             if (buffer.Length >= length)
