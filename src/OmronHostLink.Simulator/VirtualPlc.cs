@@ -40,6 +40,7 @@ public sealed class VirtualPlc
     private string? _falMessage;
     private ushort _error1;
     private ushort _error2;
+    private TimeSpan _clockOffset;
 
     /// <summary>Creates a PLC with the given options (or the defaults: unit 0, PROGRAM mode, model code 30).</summary>
     /// <param name="options">Units, initial mode and memory, wire-time emulation, faults. The instance is kept; do not change it once sessions run.</param>
@@ -155,6 +156,26 @@ public sealed class VirtualPlc
             lock (_gate)
             {
                 return new PlcErrorInfo(_error1, _error2);
+            }
+        }
+    }
+
+    /// <summary>The PLC's clock (FINS 0701/0702): local time plus an offset that setting it changes.</summary>
+    public DateTime Clock
+    {
+        get
+        {
+            lock (_gate)
+            {
+                return DateTime.Now + _clockOffset;
+            }
+        }
+
+        set
+        {
+            lock (_gate)
+            {
+                _clockOffset = value - DateTime.Now;
             }
         }
     }

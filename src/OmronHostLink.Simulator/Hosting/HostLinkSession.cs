@@ -91,7 +91,7 @@ internal sealed class HostLinkSession
 
     private async Task SendAsync(Stream stream, byte[] received, LinkReply reply, CancellationToken cancellationToken)
     {
-        TimeSpan turnaround = _plc.Options.Turnaround;
+        TimeSpan turnaround = _plc.Options.Turnaround + reply.Delay;
         FaultPlan plan = reply.IsHandshake ? FaultPlan.None : _faults.Plan(reply.Bytes!);
         if (plan.Drop)
         {

@@ -6,9 +6,13 @@ namespace OmronHostLink.Simulator.Hosting;
 /// Writes bytes at the character rate of a serial line. A frame of N characters occupies the line for
 /// N × bits-per-character / baud: its first byte is handed to the stream when the frame starts and its last when the
 /// last stop bit ends, the bytes between spread evenly, so a receiver measures first-to-last = N × bits / baud.
-/// Waits above ~15 ms use <see cref="Task.Delay(TimeSpan, CancellationToken)"/>; shorter ones spin (timer resolution
-/// is too coarse for 1 ms character times).
 /// </summary>
+/// <remarks>
+/// A paced write runs on its own thread, Stopwatch-timed: it sleeps through waits above ~15 ms (timer resolution) and
+/// yields the processor for shorter ones (a character at 9600 bps lasts 1.15 ms). Doing the short waits on the thread
+/// pool — spinning or re-queuing — starves the pool on small machines, and the receiver of these very bytes then
+/// gets them in one late lump.
+/// </remarks>
 internal sealed class WirePacer
 {
     private static readonly TimeSpan SleepThreshold = TimeSpan.FromMilliseconds(15);
@@ -27,43 +31,26 @@ internal sealed class WirePacer
 
     public async Task WriteAsync(Stream stream, ReadOnlyMemory<byte> bytes, CancellationToken cancellationToken)
     {
-        int n = bytes.Length;
-        if (!Enabled || n <= 1)
+        if (!Enabled)
         {
             await stream.WriteAsync(bytes, cancellationToken).ConfigureAwait(false);
             await stream.FlushAsync(cancellationToken).ConfigureAwait(false);
-            if (Enabled)
-            {
-                await WaitUntilAsync(Stopwatch.StartNew(), WireTime(n), cancellationToken).ConfigureAwait(false);
-            }
-
             return;
         }
 
-        double total = n * _secondsPerCharacter;
-        double step = total / (n - 1);
-        var clock = Stopwatch.StartNew();
-        int sent = 0;
-        while (sent < n)
-        {
-            double elapsed = clock.Elapsed.TotalSeconds;
-            int due = Math.Min(n, (int)Math.Floor(elapsed / step) + 1);
-            if (due > sent)
-            {
-                await stream.WriteAsync(bytes.Slice(sent, due - sent), cancellationToken).ConfigureAwait(false);
-                await stream.FlushAsync(cancellationToken).ConfigureAwait(false);
-                sent = due;
-                continue;
-            }
-
-            await WaitUntilAsync(clock, TimeSpan.FromSeconds(sent * step), cancellationToken).ConfigureAwait(false);
-        }
+        await Task.Factory.StartNew(
+            () => Write(stream, bytes.Span, cancellationToken),
+            cancellationToken,
+            TaskCreationOptions.LongRunning | TaskCreationOptions.DenyChildAttach,
+            TaskScheduler.Default).ConfigureAwait(false);
     }
 
-    private static async Task WaitUntilAsync(Stopwatch clock, TimeSpan target, CancellationToken cancellationToken)
+    private static void WaitUntil(Stopwatch clock, TimeSpan target, CancellationToken cancellationToken)
     {
+        var spinner = default(SpinWait);
         while (true)
         {
+            cancellationToken.ThrowIfCancellationRequested();
             TimeSpan left = target - clock.Elapsed;
             if (left <= TimeSpan.Zero)
             {
@@ -72,12 +59,41 @@ internal sealed class WirePacer
 
             if (left > SleepThreshold)
             {
-                await Task.Delay(left - SleepThreshold, cancellationToken).ConfigureAwait(false);
+                cancellationToken.WaitHandle.WaitOne(left - SleepThreshold);
                 continue;
             }
 
-            cancellationToken.ThrowIfCancellationRequested();
-            Thread.Yield();
+            // Yield the processor without ever falling into a 1 ms sleep late in the wait.
+            spinner.SpinOnce(sleep1Threshold: -1);
+        }
+    }
+
+    private void Write(Stream stream, ReadOnlySpan<byte> bytes, CancellationToken cancellationToken)
+    {
+        int n = bytes.Length;
+        var clock = Stopwatch.StartNew();
+        if (n <= 1)
+        {
+            stream.Write(bytes);
+            stream.Flush();
+            WaitUntil(clock, WireTime(n), cancellationToken);
+            return;
+        }
+
+        double step = n * _secondsPerCharacter / (n - 1);
+        int sent = 0;
+        while (sent < n)
+        {
+            int due = Math.Min(n, (int)Math.Floor(clock.Elapsed.TotalSeconds / step) + 1);
+            if (due > sent)
+            {
+                stream.Write(bytes.Slice(sent, due - sent));
+                stream.Flush();
+                sent = due;
+                continue;
+            }
+
+            WaitUntil(clock, TimeSpan.FromSeconds(sent * step), cancellationToken);
         }
     }
 }

@@ -1,4 +1,5 @@
 using OmronHostLink.Protocol;
+using OmronHostLink.Protocol.Fins;
 
 namespace OmronHostLink.Simulator.Protocol;
 
@@ -118,6 +119,7 @@ internal sealed class HostLinkExchange
 
     private LinkReply NextResponseFrame()
     {
+        TimeSpan delay = _responseOffset == 0 ? _response!.Delay : TimeSpan.Zero;
         byte[] frame = _response!.NextFrame(ref _responseOffset, out bool final);
         if (final)
         {
@@ -128,7 +130,7 @@ internal sealed class HostLinkExchange
             _state = State.SendingResponse;
         }
 
-        return LinkReply.Frame(frame);
+        return LinkReply.Frame(frame, delay);
     }
 
     private LinkReply Send(SimResponse? response)
@@ -161,7 +163,8 @@ internal sealed class HostLinkExchange
 
         _unit = unit;
         ReadOnlySpan<byte> header = frame.Slice(3, 2);
-        if (frame.Length > FrameWriter.MaxFirstFrameLength)
+        int limit = HostLinkResponder.IsFins(header) ? FinsMessage.MaxFrameLength : FrameWriter.MaxFirstFrameLength;
+        if (frame.Length > limit)
         {
             return Error(header, EndCode.FrameLengthError);
         }

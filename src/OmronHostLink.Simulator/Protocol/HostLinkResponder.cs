@@ -6,7 +6,8 @@ namespace OmronHostLink.Simulator.Protocol;
 
 /// <summary>
 /// Executes one complete C-mode command (all its frames joined) against a <see cref="VirtualPlc"/> and returns the
-/// answer, as a CS/CJ CPU Unit does: every command <see cref="CModeCommand.Parse"/> knows, IC for any other header,
+/// answer, as a CS/CJ CPU Unit does: every command <see cref="CModeCommand.Parse"/> knows, FINS over Host Link (FA,
+/// through <see cref="FinsResponder"/>), IC for any other header,
 /// end code 01 for area writes and forcing in RUN mode, 14 and 15 for format and range errors, no answer to XZ.
 /// Frame-level checks (FCS, frame length, the CR handshake of multi-frame exchanges) belong to the caller.
 /// </summary>
@@ -19,6 +20,7 @@ public sealed class HostLinkResponder
     public const int MaxFlagsPerLaterFrame = 124;
 
     private readonly VirtualPlc _plc;
+    private readonly FinsResponder _fins;
 
     /// <summary>Creates a responder for <paramref name="plc"/>.</summary>
     /// <param name="plc">The PLC whose memory and state the commands use.</param>
@@ -26,7 +28,13 @@ public sealed class HostLinkResponder
     {
         ArgumentNullException.ThrowIfNull(plc);
         _plc = plc;
+        _fins = new FinsResponder(plc);
     }
+
+    /// <summary>Whether a header is <c>FA</c>: FINS over Host Link, whose frames are never divided and may be 1,115 characters long.</summary>
+    /// <param name="header">The two header characters.</param>
+    /// <returns>True for FA.</returns>
+    public static bool IsFins(ReadOnlySpan<byte> header) => header.Length == 2 && header[0] == (byte)'F' && header[1] == (byte)'A';
 
     /// <summary>Whether a header names a command that may be divided into several frames (the area writes).</summary>
     /// <param name="header">The two header characters.</param>
@@ -44,7 +52,7 @@ public sealed class HostLinkResponder
             return true;
         }
 
-        return header.Length == 2 && Encoding.ASCII.GetString(header) is "MS" or "SC" or "MF" or "MM" or "TS" or "KS" or "KR" or "FK" or "KC" or "XZ";
+        return header.Length == 2 && Encoding.ASCII.GetString(header) is "MS" or "SC" or "MF" or "MM" or "TS" or "KS" or "KR" or "FK" or "KC" or "XZ" or "FA";
     }
 
     /// <summary>An answer carrying only an end code (error answers carry no text).</summary>
@@ -94,6 +102,11 @@ public sealed class HostLinkResponder
         if (header.Length != 2)
         {
             throw new ArgumentException("A header has two characters.", nameof(header));
+        }
+
+        if (IsFins(header))
+        {
+            return _fins.Respond(unit, text);
         }
 
         if (header[0] == (byte)'T' && header[1] == (byte)'S')

@@ -3,10 +3,11 @@ namespace OmronHostLink.Simulator.Protocol;
 /// <summary>What the PLC sends after receiving one frame: nothing, the bare CR of the command handshake, or one answer frame.</summary>
 internal readonly struct LinkReply
 {
-    private LinkReply(byte[]? bytes, bool isHandshake)
+    private LinkReply(byte[]? bytes, bool isHandshake, TimeSpan delay = default)
     {
         Bytes = bytes;
         IsHandshake = isHandshake;
+        Delay = delay;
     }
 
     /// <summary>Silence.</summary>
@@ -21,6 +22,9 @@ internal readonly struct LinkReply
     /// <summary>Whether the bytes are the bare CR handshake (never faulted).</summary>
     public bool IsHandshake { get; }
 
+    /// <summary>Extra time to wait before sending (FINS response wait time), on top of the turnaround.</summary>
+    public TimeSpan Delay { get; }
+
     /// <summary>One answer frame.</summary>
-    public static LinkReply Frame(byte[] frame) => new(frame, false);
+    public static LinkReply Frame(byte[] frame, TimeSpan delay = default) => new(frame, false, delay);
 }

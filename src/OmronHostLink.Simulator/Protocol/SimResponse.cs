@@ -25,6 +25,14 @@ public sealed class SimResponse
         MaxContinuationText = maxContinuationText;
     }
 
+    /// <summary>
+    /// True for an answer that is never divided into frames (FINS over Host Link, header FA), whatever its length.
+    /// </summary>
+    public bool IsUnsplit { get; init; }
+
+    /// <summary>Extra time the PLC waits before answering (the FINS response wait time of the command).</summary>
+    public TimeSpan Delay { get; init; }
+
     /// <summary>The most text characters a later frame carries; 0 for the frame-length limit only.</summary>
     public int MaxContinuationText { get; }
 
@@ -59,6 +67,15 @@ public sealed class SimResponse
     /// <summary>Cuts the frame that starts at <paramref name="offset"/> and moves the offset past it.</summary>
     internal byte[] NextFrame(ref int offset, out bool final)
     {
+        if (IsUnsplit)
+        {
+            final = true;
+            var whole = new byte[Message.Length + FrameWriter.FinalOverhead];
+            FrameWriter.WriteFrame(Message, final: true, whole);
+            offset = Message.Length;
+            return whole;
+        }
+
         int length = FrameWriter.NextSegmentLength(Message.Length - offset, offset == 0, FixedLength, AtomLength, out final);
         if (offset > 0 && MaxContinuationText > 0 && length > MaxContinuationText)
         {
