@@ -67,7 +67,11 @@ public class AreaReadCommandSpanTests
     {
         Span<byte> tx = stackalloc byte[32];
         int sent = AreaReadCommand.WriteFrame(0, CModeArea.Dm, 100, 30, 0, tx);
-        tx[sent - 1].Should().Be((byte)'\r');
+        if (tx[sent - 1] != (byte)'\r')
+        {
+            throw new InvalidOperationException("The frame does not end with CR.");
+        }
+
         FrameInfo info = FrameParser.ParseFirst(answer);
         ReadOnlySpan<byte> data = CModeResponse.GetData(info.Text(answer), "RD", info.Unit);
         var words = new ushort[30];
