@@ -47,15 +47,21 @@ internal sealed class PacedLineStream(Stream inner, int baudRate, int bitsPerCha
     {
         var clock = Stopwatch.StartNew();
         TimeSpan target = TimeSpan.FromSeconds(buffer.Length * _secondsPerCharacter);
-        while (target - clock.Elapsed > SleepMargin)
+        while (true)
         {
-            await Task.Delay(target - clock.Elapsed - SleepMargin, cancellationToken).ConfigureAwait(false);
+            TimeSpan left = target - clock.Elapsed - SleepMargin;
+            if (left <= TimeSpan.Zero)
+            {
+                break;
+            }
+
+            await Task.Delay(left, cancellationToken).ConfigureAwait(false);
         }
 
-        var spinner = default(SpinWait);
+        // The last stretch is spun without yielding: a yield on a loaded machine can cost a scheduler slice.
         while (clock.Elapsed < target)
         {
-            spinner.SpinOnce(sleep1Threshold: -1);
+            Thread.SpinWait(20);
         }
 
         await inner.WriteAsync(buffer, cancellationToken).ConfigureAwait(false);
