@@ -111,7 +111,9 @@ internal sealed class HostLinkSession
 
         if (turnaround > TimeSpan.Zero)
         {
-            await Task.Delay(turnaround, cancellationToken).ConfigureAwait(false);
+            // With wire-time emulation the turnaround is timed as precisely as the characters (Task.Delay can be
+            // late by milliseconds on a loaded machine); without it, a timer is enough.
+            await (_pacer.Enabled ? _pacer.DelayAsync(turnaround, cancellationToken) : Task.Delay(turnaround, cancellationToken)).ConfigureAwait(false);
         }
 
         if (plan.Noise is { } noise)

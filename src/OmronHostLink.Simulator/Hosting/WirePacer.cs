@@ -8,14 +8,15 @@ namespace OmronHostLink.Simulator.Hosting;
 /// last stop bit ends, the bytes between spread evenly, so a receiver measures first-to-last = N × bits / baud.
 /// </summary>
 /// <remarks>
-/// A paced write runs on its own thread, Stopwatch-timed: it sleeps through waits above ~15 ms (timer resolution) and
-/// yields the processor for shorter ones (a character at 9600 bps lasts 1.15 ms). Doing the short waits on the thread
+/// A paced write runs on its own thread, Stopwatch-timed: bytes before the last go out in batches about a
+/// millisecond apart (sleeping between them), and the last byte is timed precisely (sleep, then a short spin). Doing the short waits on the thread
 /// pool — spinning or re-queuing — starves the pool on small machines, and the receiver of these very bytes then
 /// gets them in one late lump.
 /// </remarks>
 internal sealed class WirePacer
 {
-    private static readonly TimeSpan SleepThreshold = TimeSpan.FromMilliseconds(15);
+    private static readonly TimeSpan PreciseMargin = TimeSpan.FromMilliseconds(1.5);
+    private static readonly TimeSpan MinSleep = TimeSpan.FromMilliseconds(1);
 
     private readonly double _secondsPerCharacter;
 
@@ -45,9 +46,13 @@ internal sealed class WirePacer
             TaskScheduler.Default).ConfigureAwait(false);
     }
 
+    /// <summary>Waits until <paramref name="target"/> precisely: sleeps while far, then spins without yielding.</summary>
+    /// <remarks>
+    /// Yielding (sched_yield) on a loaded machine can lose a whole scheduler slice (several ms) and make the last
+    /// byte of a frame late; a sleeping thread that wakes is scheduled promptly, and the last ~1.5 ms are spun.
+    /// </remarks>
     private static void WaitUntil(Stopwatch clock, TimeSpan target, CancellationToken cancellationToken)
     {
-        var spinner = default(SpinWait);
         while (true)
         {
             cancellationToken.ThrowIfCancellationRequested();
@@ -57,15 +62,37 @@ internal sealed class WirePacer
                 return;
             }
 
-            if (left > SleepThreshold)
+            if (left > PreciseMargin)
             {
-                cancellationToken.WaitHandle.WaitOne(left - SleepThreshold);
+                cancellationToken.WaitHandle.WaitOne(left - PreciseMargin);
                 continue;
             }
 
-            // Yield the processor without ever falling into a 1 ms sleep late in the wait.
-            spinner.SpinOnce(sleep1Threshold: -1);
+            Thread.SpinWait(20);
         }
+    }
+
+    /// <summary>Waits about until <paramref name="target"/>, at least a millisecond, never spinning: for bytes before the last, whose exact moment does not matter.</summary>
+    private static void SleepUntil(Stopwatch clock, TimeSpan target, CancellationToken cancellationToken)
+    {
+        TimeSpan left = target - clock.Elapsed;
+        cancellationToken.WaitHandle.WaitOne(left > MinSleep ? left : MinSleep);
+        cancellationToken.ThrowIfCancellationRequested();
+    }
+
+    /// <summary>Waits <paramref name="delay"/> precisely (the PLC's turnaround) off the thread pool.</summary>
+    public Task DelayAsync(TimeSpan delay, CancellationToken cancellationToken)
+    {
+        if (delay <= TimeSpan.Zero)
+        {
+            return Task.CompletedTask;
+        }
+
+        return Task.Factory.StartNew(
+            () => WaitUntil(Stopwatch.StartNew(), delay, cancellationToken),
+            cancellationToken,
+            TaskCreationOptions.LongRunning | TaskCreationOptions.DenyChildAttach,
+            TaskScheduler.Default);
     }
 
     private void Write(Stream stream, ReadOnlySpan<byte> bytes, CancellationToken cancellationToken)
@@ -93,7 +120,16 @@ internal sealed class WirePacer
                 continue;
             }
 
-            WaitUntil(clock, TimeSpan.FromSeconds(sent * step), cancellationToken);
+            TimeSpan next = TimeSpan.FromSeconds(sent * step);
+            if (sent == n - 1)
+            {
+                WaitUntil(clock, next, cancellationToken);
+            }
+            else
+            {
+                // Bytes before the last go out in ~1 ms batches: the receiver's timing hangs on the last byte only.
+                SleepUntil(clock, next, cancellationToken);
+            }
         }
     }
 }

@@ -1,3 +1,4 @@
+using System.Buffers;
 using System.Text;
 using OmronHostLink.Link;
 using OmronHostLink.Protocol;
@@ -178,20 +179,42 @@ public partial class HostLinkUnit
 
     private async ValueTask<ushort[]> CModeReadWordsAsync(PlcAddress address, int count, CancellationToken cancellationToken)
     {
+        // The hot path: no command object and no message array (a pooled buffer carries the message); the only
+        // allocation of the protocol work is the result.
         (CModeArea area, int begin) = CModeAddressing.Map(address);
-        var command = new AreaReadCommand(area, begin, count, address.Bank);
-        return await CModeAsync(
-            command,
-            2 + command.ResponseDataLength,
-            retryable: true,
-            static (data, n) =>
-            {
-                var words = new ushort[n];
-                CModeResponse.ReadWords(data, words);
-                return words;
-            },
-            count,
-            cancellationToken).ConfigureAwait(false);
+        int length = AreaReadCommand.GetMessageLength(area);
+        byte[] message = ArrayPool<byte>.Shared.Rent(length);
+        try
+        {
+            AreaReadCommand.WriteMessage(UnitNumber, area, begin, count, address.Bank, message);
+            string header = CModeAreaInfo.ReadHeader(area);
+            var request = new HostLinkRequest(
+                UnitNumber,
+                header,
+                message.AsMemory(0, length),
+                length,
+                atomLength: 1,
+                multiFrame: false,
+                expectsResponse: true,
+                maxResponseText: CModeResponse.EndCodeLength + (count * CModeAreaInfo.CharactersPerEntry(area)),
+                retryable: true);
+            return await Connection.ExecuteAsync(
+                request,
+                Options.ReadRetries,
+                static (text, s) =>
+                {
+                    ReadOnlySpan<byte> data = CModeResponse.GetData(text, s.header, s.unit);
+                    var words = new ushort[s.count];
+                    CModeResponse.ReadWords(data, words);
+                    return words;
+                },
+                (count, header, unit: UnitNumber),
+                cancellationToken).ConfigureAwait(false);
+        }
+        finally
+        {
+            ArrayPool<byte>.Shared.Return(message);
+        }
     }
 
     private async ValueTask CModeWriteWordsAsync(PlcAddress address, ReadOnlyMemory<ushort> words, CancellationToken cancellationToken)

@@ -41,6 +41,55 @@ public sealed class AreaReadCommand : CModeCommand
     /// <inheritdoc/>
     public override void WriteText(Span<byte> destination) => Write(Area, Begin, Count, Bank, destination);
 
+    /// <summary>The length of the unframed message (<c>@</c>, unit, header, text) of a read of <paramref name="area"/>.</summary>
+    public static int GetMessageLength(CModeArea area) => PrefixLength + (area == CModeArea.Em ? 10 : 8);
+
+    /// <summary>The length of the framed command (message, FCS, <c>*</c>, CR) of a read of <paramref name="area"/>; a read command is always one frame.</summary>
+    public static int GetFrameLength(CModeArea area) => GetMessageLength(area) + FrameWriter.FinalOverhead;
+
+    /// <summary>
+    /// Writes the unframed message <c>@</c> + unit + header + text of a read command without creating a command object
+    /// (the hot path). The range is checked as the constructor checks it.
+    /// </summary>
+    /// <returns>The number of characters written (<see cref="GetMessageLength"/>).</returns>
+    /// <exception cref="ArgumentOutOfRangeException">The unit is not 0-31 or the range is outside what C-mode reaches.</exception>
+    /// <exception cref="ArgumentException"><paramref name="destination"/> is shorter than <see cref="GetMessageLength"/>.</exception>
+    public static int WriteMessage(int unit, CModeArea area, int begin, int count, int bank, Span<byte> destination)
+    {
+        Guard.Unit(unit);
+        CModeAreaInfo.CheckRange(area, begin, count, bank, write: false);
+        int length = GetMessageLength(area);
+        if (destination.Length < length)
+        {
+            throw new ArgumentException($"The destination holds {destination.Length} characters; the message needs {length}.", nameof(destination));
+        }
+
+        string header = CModeAreaInfo.ReadHeader(area);
+        destination[0] = (byte)'@';
+        HexAscii.WriteDecimal(unit, destination.Slice(1, 2));
+        destination[3] = (byte)header[0];
+        destination[4] = (byte)header[1];
+        return PrefixLength + Write(area, begin, count, bank, destination.Slice(PrefixLength));
+    }
+
+    /// <summary>
+    /// Writes the complete command frame (message, FCS, <c>*</c>, CR) of a read without creating a command object or
+    /// any array: what goes on the wire.
+    /// </summary>
+    /// <returns>The number of characters written (<see cref="GetFrameLength"/>).</returns>
+    /// <exception cref="ArgumentOutOfRangeException">The unit is not 0-31 or the range is outside what C-mode reaches.</exception>
+    /// <exception cref="ArgumentException"><paramref name="destination"/> is shorter than <see cref="GetFrameLength"/>.</exception>
+    public static int WriteFrame(int unit, CModeArea area, int begin, int count, int bank, Span<byte> destination)
+    {
+        if (destination.Length < GetFrameLength(area))
+        {
+            throw new ArgumentException($"The destination holds {destination.Length} characters; the frame needs {GetFrameLength(area)}.", nameof(destination));
+        }
+
+        int length = WriteMessage(unit, area, begin, count, bank, destination);
+        return FrameWriter.WriteFrame(destination.Slice(0, length), final: true, destination);
+    }
+
     /// <summary>Writes the text of a read command without creating a command object (the hot path).</summary>
     /// <returns>The number of characters written.</returns>
     public static int Write(CModeArea area, int begin, int count, int bank, Span<byte> destination)

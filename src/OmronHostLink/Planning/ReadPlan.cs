@@ -1,0 +1,171 @@
+namespace OmronHostLink.Planning;
+
+/// <summary>The command a <see cref="PlannedRead"/> uses.</summary>
+public enum PlannedReadKind
+{
+    /// <summary>One C-mode area read (RR, RH, RJ, RD, RC, RE), multi-frame when long: one transaction, one snapshot.</summary>
+    CModeArea,
+
+    /// <summary>One FINS 0101 MEMORY AREA READ of at most <see cref="Protocol.Fins.MemoryAreaReadCommand.MaxWords"/> words.</summary>
+    FinsArea,
+
+    /// <summary>One FINS 0104 MULTIPLE MEMORY AREA READ of scattered words.</summary>
+    FinsMultiple,
+}
+
+/// <summary>One transaction of a <see cref="ReadPlan"/>.</summary>
+public sealed class PlannedRead
+{
+    internal PlannedRead(PlannedReadKind kind, int unit, PlcAddress start, int count, IReadOnlyList<PlcAddress> items, int characters, int exchanges)
+    {
+        Kind = kind;
+        Unit = unit;
+        Start = start;
+        Count = count;
+        Items = items;
+        Characters = characters;
+        Exchanges = exchanges;
+    }
+
+    /// <summary>The command used.</summary>
+    public PlannedReadKind Kind { get; }
+
+    /// <summary>The unit the command goes to.</summary>
+    public int Unit { get; }
+
+    /// <summary>The first word of an area read (unused for <see cref="PlannedReadKind.FinsMultiple"/>).</summary>
+    public PlcAddress Start { get; }
+
+    /// <summary>The number of words read.</summary>
+    public int Count { get; }
+
+    /// <summary>The words of a <see cref="PlannedReadKind.FinsMultiple"/> read, in order; empty for area reads.</summary>
+    public IReadOnlyList<PlcAddress> Items { get; }
+
+    /// <summary>Characters on the line both ways (command, answer frames, CR delimiters).</summary>
+    public int Characters { get; }
+
+    /// <summary>Frame exchanges (each costs a PLC turnaround): 1, or more for a multi-frame C-mode answer.</summary>
+    public int Exchanges { get; }
+
+    /// <summary>The address of the <paramref name="index"/>-th word this read returns.</summary>
+    public PlcAddress WordAt(int index) => Kind == PlannedReadKind.FinsMultiple ? Items[index] : Start.Offset(index);
+
+    /// <inheritdoc/>
+    public override string ToString() => Kind == PlannedReadKind.FinsMultiple
+        ? $"unit {Unit:D2} 0104 × {Count}"
+        : $"unit {Unit:D2} {(Kind == PlannedReadKind.CModeArea ? "C-mode" : "0101")} {Start} × {Count}";
+}
+
+/// <summary>
+/// The transactions that read a set of tags, from <see cref="ReadPlanner.Plan"/>. Pure data: execute the reads (for
+/// example with <c>HostLinkUnit.ReadManyAsync(ReadPlan, CancellationToken)</c>) and turn their words into tag values
+/// with <see cref="Resolve"/>.
+/// </summary>
+public sealed class ReadPlan
+{
+    internal ReadPlan(IReadOnlyList<PlcTag> tags, int[] tagUnits, IReadOnlyList<PlannedRead> reads, LineTimingCost cost)
+    {
+        Tags = tags;
+        TagUnits = tagUnits;
+        Reads = reads;
+        Cost = cost;
+    }
+
+    /// <summary>The tags, in the order values are returned.</summary>
+    public IReadOnlyList<PlcTag> Tags { get; }
+
+    /// <summary>The transactions, grouped by unit.</summary>
+    public IReadOnlyList<PlannedRead> Reads { get; }
+
+    /// <summary>The number of transactions.</summary>
+    public int TransactionCount => Reads.Count;
+
+    /// <summary>Characters on the line, both ways, for the whole plan.</summary>
+    public int Characters => Reads.Sum(r => r.Characters);
+
+    /// <summary>Frame exchanges (PLC turnarounds) for the whole plan.</summary>
+    public int Exchanges => Reads.Sum(r => r.Exchanges);
+
+    /// <summary>The least time the plan takes on the line: characters × character time + exchanges × turnaround.</summary>
+    public TimeSpan EstimatedTime => Cost.Time(Characters, Exchanges);
+
+    internal int[] TagUnits { get; }
+
+    internal LineTimingCost Cost { get; }
+
+    /// <summary>Turns the words of every read (in <see cref="Reads"/> order) into one value per tag (in <see cref="Tags"/> order).</summary>
+    /// <param name="results">The words each read returned.</param>
+    /// <param name="order">How 32-bit values lie in two words.</param>
+    /// <exception cref="ArgumentException">The results do not match the reads.</exception>
+    public PlcTagValue[] Resolve(IReadOnlyList<ushort[]> results, WordOrder order = WordOrder.LowWordFirst)
+    {
+        Guard.NotNull(results);
+        if (results.Count != Reads.Count)
+        {
+            throw new ArgumentException($"The plan has {Reads.Count} reads; {results.Count} results were given.", nameof(results));
+        }
+
+        var words = new Dictionary<long, ushort>();
+        for (int r = 0; r < Reads.Count; r++)
+        {
+            PlannedRead read = Reads[r];
+            ushort[] data = results[r] ?? throw new ArgumentException($"Result {r} is null.", nameof(results));
+            if (data.Length != read.Count)
+            {
+                throw new ArgumentException($"Read {r} ({read}) returns {read.Count} words; its result holds {data.Length}.", nameof(results));
+            }
+
+            for (int i = 0; i < data.Length; i++)
+            {
+                words[Key(read.Unit, read.WordAt(i))] = data[i];
+            }
+        }
+
+        var values = new PlcTagValue[Tags.Count];
+        for (int t = 0; t < Tags.Count; t++)
+        {
+            PlcTag tag = Tags[t];
+            var raw = new ushort[tag.WordCount];
+            for (int i = 0; i < raw.Length; i++)
+            {
+                raw[i] = words[Key(TagUnits[t], tag.Address.AsWord().Offset(i))];
+            }
+
+            values[t] = new PlcTagValue(tag, raw, Decode(tag, raw, order));
+        }
+
+        return values;
+    }
+
+    internal static long Key(int unit, PlcAddress word)
+        => ((long)unit << 40) | ((long)word.Area << 32) | ((long)word.Bank << 24) | (uint)word.Word;
+
+    private static object Decode(PlcTag tag, ushort[] raw, WordOrder order) => tag.Type switch
+    {
+        PlcTagType.Word => raw[0],
+        PlcTagType.Int16 => PlcWords.ToInt16(raw[0]),
+        PlcTagType.Int32 => PlcWords.ReadInt32(raw, order),
+        PlcTagType.UInt32 => PlcWords.ReadUInt32(raw, order),
+        PlcTagType.Float => PlcWords.ReadSingle(raw, order),
+        PlcTagType.Bcd => PlcWords.FromBcd(raw[0]),
+        _ => PlcWords.GetBit(raw[0], tag.Address.Bit),
+    };
+}
+
+/// <summary>Turns characters and exchanges into time for a line.</summary>
+internal readonly struct LineTimingCost
+{
+    public LineTimingCost(Link.LineTiming timing, TimeSpan turnaround)
+    {
+        Timing = timing;
+        Turnaround = turnaround;
+    }
+
+    public Link.LineTiming Timing { get; }
+
+    public TimeSpan Turnaround { get; }
+
+    public TimeSpan Time(int characters, int exchanges)
+        => Timing.WireTime(characters) + TimeSpan.FromTicks(Turnaround.Ticks * exchanges);
+}

@@ -1,0 +1,287 @@
+using OmronHostLink.Link;
+using OmronHostLink.Protocol;
+using OmronHostLink.Protocol.CMode;
+using OmronHostLink.Protocol.Fins;
+
+namespace OmronHostLink.Planning;
+
+/// <summary>
+/// Computes the cheapest set of transactions that reads a set of tags: scattered, overlapping, in several areas and
+/// units. Pure: no I/O.
+/// </summary>
+/// <remarks>
+/// Cost is counted in characters on the line, both ways, plus the PLC's turnaround per frame exchange expressed in
+/// characters. Per unit and area the tags' words are sorted and cut into area reads by dynamic programming, so a gap is
+/// read through whenever the extra characters cost less than another command (about 7 words at 9600 bps with no
+/// turnaround, more with a turnaround). C-mode reads are one command however long (the answer spans frames); FINS
+/// 0101 reads are cut at <see cref="MemoryAreaReadCommand.MaxWords"/> words. With FINS, words that are cheaper as
+/// items of a 0104 MULTIPLE MEMORY AREA READ (isolated words, in any area) go into as few 0104 commands as the limit of
+/// <see cref="MultipleMemoryAreaReadCommand.MaxItems"/> items allows.
+/// </remarks>
+public sealed class ReadPlanner
+{
+    // Framed sizes, in characters.
+    private const int CModeCommandChars = CModeCommand.PrefixLength + 8 + FrameWriter.FinalOverhead;
+    private const int CModeResponseFixed = CModeResponse.PrefixLength + CModeResponse.EndCodeLength;
+    private const int FinsCommandFixed = 5 + 1 + (2 * (FinsHeader.DirectLength + 2)) + FrameWriter.FinalOverhead;
+    private const int FinsResponseFixed = 5 + 2 + (2 * (FinsHeader.DirectLength + 4)) + FrameWriter.FinalOverhead;
+    private const int FinsAreaParameterChars = 2 * 6;
+    private const int FinsItemCommandChars = 2 * FinsMemoryAddress.Length;
+    private const int FinsItemResponseChars = 2 * 3;
+
+    private readonly LineTimingCost _cost;
+    private readonly double _turnaroundChars;
+
+    /// <summary>Creates a planner.</summary>
+    /// <param name="protocol">The protocol of the reading unit views: C-mode plans area reads only; FINS plans 0101 and 0104.</param>
+    /// <param name="timing">The line; null for 9600 bps 7E2.</param>
+    /// <param name="turnaround">The PLC's turnaround per frame exchange (what makes another command dearer).</param>
+    /// <param name="useMultipleRead">Whether FINS plans may use 0104 MULTIPLE MEMORY AREA READ.</param>
+    public ReadPlanner(HostLinkProtocol protocol = HostLinkProtocol.CMode, LineTiming? timing = null, TimeSpan turnaround = default, bool useMultipleRead = true)
+    {
+        if (protocol is not (HostLinkProtocol.CMode or HostLinkProtocol.Fins))
+        {
+            throw new ArgumentOutOfRangeException(nameof(protocol), protocol, "Not a Host Link protocol.");
+        }
+
+        if (turnaround < TimeSpan.Zero)
+        {
+            throw new ArgumentOutOfRangeException(nameof(turnaround), turnaround, "The turnaround cannot be negative.");
+        }
+
+        Protocol = protocol;
+        Timing = timing ?? LineTiming.Default;
+        Turnaround = turnaround;
+        UseMultipleRead = useMultipleRead;
+        _cost = new LineTimingCost(Timing, turnaround);
+        _turnaroundChars = turnaround.Ticks / (double)Timing.CharacterTime.Ticks;
+    }
+
+    /// <summary>The protocol planned for.</summary>
+    public HostLinkProtocol Protocol { get; }
+
+    /// <summary>The line.</summary>
+    public LineTiming Timing { get; }
+
+    /// <summary>The PLC turnaround assumed per frame exchange.</summary>
+    public TimeSpan Turnaround { get; }
+
+    /// <summary>Whether FINS plans may use 0104.</summary>
+    public bool UseMultipleRead { get; }
+
+    /// <summary>Plans the reads of <paramref name="tags"/>.</summary>
+    /// <param name="tags">The tags; duplicates and overlaps are read once.</param>
+    /// <param name="defaultUnit">The unit of tags that carry none.</param>
+    /// <exception cref="ArgumentException">A tag cannot be read with the protocol (C-mode: the work area, D/EM 10000+, T/C 2048+).</exception>
+    public ReadPlan Plan(IReadOnlyList<PlcTag> tags, int defaultUnit = 0)
+    {
+        Guard.NotNull(tags);
+        Guard.Unit(defaultUnit);
+        var units = new int[tags.Count];
+        var spaces = new SortedDictionary<(int Unit, PlcArea Area, int Bank), List<(int Start, int End)>>();
+        for (int t = 0; t < tags.Count; t++)
+        {
+            PlcTag tag = tags[t] ?? throw new ArgumentException($"Tag {t} is null.", nameof(tags));
+            PlcAddress word = tag.Address.AsWord();
+            word.EnsureRange(tag.WordCount, Protocol, forWrite: false);
+            units[t] = tag.Unit ?? defaultUnit;
+            var key = (units[t], word.Area, word.Bank);
+            if (!spaces.TryGetValue(key, out List<(int, int)>? spans))
+            {
+                spaces[key] = spans = new List<(int, int)>();
+            }
+
+            spans.Add((word.Word, word.Word + tag.WordCount));
+        }
+
+        var reads = new List<PlannedRead>();
+        var multiple = new SortedDictionary<int, List<PlcAddress>>();
+        foreach (KeyValuePair<(int Unit, PlcArea Area, int Bank), List<(int Start, int End)>> space in spaces)
+        {
+            List<(int Start, int End)> clusters = Clusters(space.Value);
+            PlanSpace(space.Key.Unit, space.Key.Area, space.Key.Bank, clusters, reads, multiple);
+        }
+
+        foreach (KeyValuePair<int, List<PlcAddress>> unitItems in multiple)
+        {
+            List<PlcAddress> items = unitItems.Value;
+            for (int done = 0; done < items.Count; done += MultipleMemoryAreaReadCommand.MaxItems)
+            {
+                int n = Math.Min(MultipleMemoryAreaReadCommand.MaxItems, items.Count - done);
+                reads.Add(new PlannedRead(PlannedReadKind.FinsMultiple, unitItems.Key, default, n, items.GetRange(done, n).ToArray(), MultipleChars(n), 1));
+            }
+        }
+
+        return new ReadPlan(tags, units, reads, _cost);
+    }
+
+    /// <summary>Characters (both ways) of one C-mode area read of <paramref name="words"/> words, and its frame exchanges.</summary>
+    public static int CModeReadCharacters(PlcArea area, int words, out int exchanges)
+    {
+        int command = CModeCommandChars + (area == PlcArea.Em ? 2 : 0);
+        int message = CModeResponseFixed + (4 * words);
+        exchanges = FrameWriter.CountFrames(message, CModeResponseFixed, 4);
+        return command + FrameWriter.WireLength(message, CModeResponseFixed, 4) + (exchanges - 1);
+    }
+
+    /// <summary>Characters (both ways) of one FINS 0101 read of <paramref name="words"/> words (at most <see cref="MemoryAreaReadCommand.MaxWords"/>).</summary>
+    public static int FinsReadCharacters(int words)
+        => FinsCommandFixed + FinsAreaParameterChars + FinsResponseFixed + (4 * words);
+
+    /// <summary>Characters (both ways) of one FINS 0104 read of <paramref name="items"/> words.</summary>
+    public static int MultipleChars(int items)
+        => FinsCommandFixed + FinsResponseFixed + (items * (FinsItemCommandChars + FinsItemResponseChars));
+
+    private static List<(int Start, int End)> Clusters(List<(int Start, int End)> spans)
+    {
+        spans.Sort((a, b) => a.Start != b.Start ? a.Start.CompareTo(b.Start) : a.End.CompareTo(b.End));
+        var clusters = new List<(int Start, int End)>();
+        foreach ((int start, int end) in spans)
+        {
+            if (clusters.Count > 0 && start <= clusters[clusters.Count - 1].End)
+            {
+                clusters[clusters.Count - 1] = (clusters[clusters.Count - 1].Start, Math.Max(clusters[clusters.Count - 1].End, end));
+            }
+            else
+            {
+                clusters.Add((start, end));
+            }
+        }
+
+        return clusters;
+    }
+
+    private double RangeCost(PlcArea area, int words)
+    {
+        if (Protocol == HostLinkProtocol.CMode)
+        {
+            int chars = CModeReadCharacters(area, words, out int exchanges);
+            return chars + (exchanges * _turnaroundChars);
+        }
+
+        int full = words / MemoryAreaReadCommand.MaxWords;
+        int rest = words % MemoryAreaReadCommand.MaxWords;
+        double cost = full * (FinsReadCharacters(MemoryAreaReadCommand.MaxWords) + _turnaroundChars);
+        return rest == 0 ? cost : cost + FinsReadCharacters(rest) + _turnaroundChars;
+    }
+
+    private void PlanSpace(int unit, PlcArea area, int bank, List<(int Start, int End)> clusters, List<PlannedRead> reads, SortedDictionary<int, List<PlcAddress>> multiple)
+    {
+        bool items = Protocol == HostLinkProtocol.Fins && UseMultipleRead;
+        const int ItemChars = FinsItemCommandChars + FinsItemResponseChars;
+        int n = clusters.Count;
+
+        // best[i]: cheapest way to read clusters 0..i-1; from[i] = j: clusters j..i-1 are one area read; -1: cluster i-1 as 0104 items.
+        var best = new double[n + 1];
+        var from = new int[n + 1];
+        for (int i = 1; i <= n; i++)
+        {
+            best[i] = double.MaxValue;
+            for (int j = i - 1; j >= 0; j--)
+            {
+                double cost = best[j] + RangeCost(area, clusters[i - 1].End - clusters[j].Start);
+                if (cost < best[i])
+                {
+                    best[i] = cost;
+                    from[i] = j;
+                }
+            }
+
+            if (items)
+            {
+                double cost = best[i - 1] + ((clusters[i - 1].End - clusters[i - 1].Start) * ItemChars);
+                if (cost < best[i])
+                {
+                    best[i] = cost;
+                    from[i] = -1;
+                }
+            }
+        }
+
+        var planned = new List<PlannedRead>();
+        var itemWords = new List<PlcAddress>();
+        for (int i = n; i > 0;)
+        {
+            if (from[i] < 0)
+            {
+                for (int w = clusters[i - 1].End - 1; w >= clusters[i - 1].Start; w--)
+                {
+                    itemWords.Add(PlcAddress.WordOf(area, w, bank));
+                }
+
+                i--;
+                continue;
+            }
+
+            int j = from[i];
+            AddRange(planned, unit, area, bank, clusters[j].Start, clusters[i - 1].End - clusters[j].Start);
+            i = j;
+        }
+
+        planned.Reverse();
+        itemWords.Reverse();
+
+        // The DP counted 0104 items at their marginal cost; a lone, small batch may still be dearer than reading its
+        // clusters as area reads once the 0104 command's own characters are paid. Compare and keep the cheaper.
+        if (itemWords.Count > 0 && !multiple.ContainsKey(unit))
+        {
+            double asItems = MultipleChars(itemWords.Count) + _turnaroundChars;
+            double asRanges = 0;
+            var alternative = new List<PlannedRead>();
+            foreach (IGrouping<int, PlcAddress> run in Runs(itemWords))
+            {
+                int count = run.Count();
+                asRanges += RangeCost(area, count);
+                AddRange(alternative, unit, area, bank, run.Key, count);
+            }
+
+            if (asRanges <= asItems)
+            {
+                planned.AddRange(alternative);
+                planned.Sort((a, b) => a.Start.Word.CompareTo(b.Start.Word));
+                itemWords.Clear();
+            }
+        }
+
+        reads.AddRange(planned);
+        if (itemWords.Count > 0)
+        {
+            if (!multiple.TryGetValue(unit, out List<PlcAddress>? list))
+            {
+                multiple[unit] = list = new List<PlcAddress>();
+            }
+
+            list.AddRange(itemWords);
+        }
+    }
+
+    private static IEnumerable<IGrouping<int, PlcAddress>> Runs(List<PlcAddress> words)
+    {
+        int runStart = 0;
+        return words.Select((w, i) =>
+        {
+            if (i == 0 || words[i - 1].Word + 1 != w.Word)
+            {
+                runStart = w.Word;
+            }
+
+            return (Start: runStart, Word: w);
+        }).ToList().GroupBy(x => x.Start, x => x.Word);
+    }
+
+    private void AddRange(List<PlannedRead> reads, int unit, PlcArea area, int bank, int start, int count)
+    {
+        if (Protocol == HostLinkProtocol.CMode)
+        {
+            int chars = CModeReadCharacters(area, count, out int exchanges);
+            reads.Add(new PlannedRead(PlannedReadKind.CModeArea, unit, PlcAddress.WordOf(area, start, bank), count, Array.Empty<PlcAddress>(), chars, exchanges));
+            return;
+        }
+
+        for (int done = 0; done < count; done += MemoryAreaReadCommand.MaxWords)
+        {
+            int n = Math.Min(MemoryAreaReadCommand.MaxWords, count - done);
+            reads.Add(new PlannedRead(PlannedReadKind.FinsArea, unit, PlcAddress.WordOf(area, start + done, bank), n, Array.Empty<PlcAddress>(), FinsReadCharacters(n), 1));
+        }
+    }
+}

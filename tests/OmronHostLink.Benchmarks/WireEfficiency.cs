@@ -1,0 +1,217 @@
+using System.Diagnostics;
+using System.Globalization;
+using OmronHostLink.Link;
+using OmronHostLink.Planning;
+using OmronHostLink.Simulator;
+using OmronHostLink.Simulator.Hosting;
+
+namespace OmronHostLink.Benchmarks;
+
+/// <summary>
+/// <c>wire</c> mode: the client against the simulator with wire-time emulation in both directions, over the in-process
+/// <see cref="InMemoryLink"/>; measured time against the least the line allows.
+/// </summary>
+internal static class WireEfficiency
+{
+    private const int Bits = 11;
+
+    // BCD is left out: the simulator's memory holds arbitrary words, which a BCD tag would refuse.
+    private static readonly PlcTagType[] TagTypes = [PlcTagType.Word, PlcTagType.Int16, PlcTagType.Int32, PlcTagType.UInt32, PlcTagType.Float, PlcTagType.Bit];
+
+    public static async Task<int> RunAsync(string[] args)
+    {
+        int runs = 5;
+        bool skipPlan = false;
+        bool skipWire = false;
+        for (int i = 0; i < args.Length; i++)
+        {
+            switch (args[i])
+            {
+                case "--runs":
+                    runs = int.Parse(args[++i], CultureInfo.InvariantCulture);
+                    break;
+                case "--plan-only":
+                    skipWire = true;
+                    break;
+                case "--no-plan":
+                    skipPlan = true;
+                    break;
+            }
+        }
+
+        Console.WriteLine($"# Wire efficiency: {Environment.ProcessorCount} cores, {System.Runtime.InteropServices.RuntimeInformation.OSDescription}, {System.Runtime.InteropServices.RuntimeInformation.FrameworkDescription}; median of {runs} runs");
+        if (!skipWire)
+        {
+            Console.WriteLine();
+            Console.WriteLine("| Line | Turnaround | Words | Frames | Chars on wire | Theoretical ms | Measured ms (median) | Min–max ms | Efficiency |");
+            Console.WriteLine("|---|---|---|---|---|---|---|---|---|");
+            var splits = new List<string>();
+            foreach (int baud in new[] { 9600, 115200 })
+            {
+                foreach (int turnaround in new[] { 0, 10 })
+                {
+                    await using var rig = await Rig.StartAsync(baud, TimeSpan.FromMilliseconds(turnaround));
+                    foreach (int words in new[] { 1, 30, 100, 1000 })
+                    {
+                        Measurement m = await rig.MeasureAsync(runs, c => c.ReadWordsAsync("D0", words).AsTask());
+                        int expected = ReadPlanner.CModeReadCharacters(PlcArea.Dm, words, out int exchanges);
+                        if (m.Characters != expected || m.Exchanges != exchanges)
+                        {
+                            Console.WriteLine($"<!-- counted {m.Characters} chars / {m.Exchanges} exchanges; formula {expected} / {exchanges} -->");
+                        }
+
+                        Console.WriteLine($"| {baud} 7E2 | {turnaround} ms | {words} | {m.Exchanges} | {m.Characters} | {m.TheoreticalMs:0.00} | {m.MedianMs:0.00} | {m.MinMs:0.00}–{m.MaxMs:0.00} | {m.Efficiency:P1} |");
+                    }
+
+                    Measurement one = await rig.MeasureAsync(runs, c => c.ReadWordsAsync("D0", 1000).AsTask());
+                    Measurement split = await rig.MeasureAsync(runs, async c =>
+                    {
+                        for (int done = 0; done < 1000; done += 30)
+                        {
+                            await c.ReadWordsAsync(PlcAddress.WordOf(PlcArea.Dm, done), Math.Min(30, 1000 - done));
+                        }
+                    });
+                    splits.Add($"| {baud} 7E2 | {turnaround} ms | {one.MedianMs:0} ms (1 command, {one.Exchanges} frames) | {split.MedianMs:0} ms (34 commands) | {split.MedianMs / one.MedianMs:0.00}× | {split.Characters} vs {one.Characters} |");
+                }
+            }
+
+            double rd30 = (17 + 131) * 11 / 9600.0 * 1000;
+            Console.WriteLine();
+            Console.WriteLine($"30-word RD at 9600 7E2, turnaround 0: theoretical (17 + 131) × 11 / 9600 s = {rd30:0.00} ms (see the 9600 / 0 ms / 30 row).");
+            Console.WriteLine();
+            Console.WriteLine("## 1000 words: one multi-frame transaction vs. 30-word commands");
+            Console.WriteLine();
+            Console.WriteLine("| Line | Turnaround | One transaction | Split into 30-word RDs | Split / one | Characters (split vs one) |");
+            Console.WriteLine("|---|---|---|---|---|---|");
+            splits.ForEach(Console.WriteLine);
+        }
+
+        if (!skipPlan)
+        {
+            await PlanAsync(runs);
+        }
+
+        return 0;
+    }
+
+    private static async Task PlanAsync(int runs)
+    {
+        Console.WriteLine();
+        Console.WriteLine("## 100 scattered tags (seed 42, units 0 and 1), 9600 7E2, turnaround 0");
+        Console.WriteLine();
+        Console.WriteLine("| Protocol | Method | Transactions | Chars on wire | Measured ms (median) | Speed-up |");
+        Console.WriteLine("|---|---|---|---|---|---|");
+        PlcTag[] tags = ScatteredTags(100, 42);
+        foreach (HostLinkProtocol protocol in new[] { HostLinkProtocol.CMode, HostLinkProtocol.Fins })
+        {
+            await using var rig = await Rig.StartAsync(9600, TimeSpan.Zero, protocol);
+            ReadPlan plan = new ReadPlanner(protocol, new LineTiming(9600, Bits)).Plan(tags);
+            Measurement planned = await rig.MeasureAsync(runs, c => c.ReadManyAsync(plan).AsTask());
+            Measurement naive = await rig.MeasureAsync(runs, async c =>
+            {
+                foreach (PlcTag tag in tags)
+                {
+                    HostLinkUnit unit = tag.Unit is { } u ? c.Unit(u) : c;
+                    await unit.ReadWordsAsync(tag.Address.AsWord(), tag.WordCount);
+                }
+            });
+            string name = protocol == HostLinkProtocol.CMode ? "C-mode" : "FINS";
+            string kinds = string.Join(", ", plan.Reads.GroupBy(r => r.Kind).Select(g => $"{g.Count()} {g.Key}"));
+            Console.WriteLine($"| {name} | one read per tag | {naive.Exchanges} | {naive.Characters} | {naive.MedianMs:0} | 1.00× |");
+            Console.WriteLine($"| {name} | ReadManyAsync (planned: {kinds}) | {plan.TransactionCount} | {planned.Characters} | {planned.MedianMs:0} | {naive.MedianMs / planned.MedianMs:0.00}× |");
+        }
+    }
+
+    /// <summary>Clusters of tags around hot spots plus loners, in D, H, CIO, A, EM bank 1 and timers, two units, some overlapping.</summary>
+    internal static PlcTag[] ScatteredTags(int count, int seed)
+    {
+        var random = new Random(seed);
+        string[] areas = ["D", "D", "D", "H", "CIO", "A", "E1_", "T"];
+        var spots = Enumerable.Range(0, 12).Select(_ => (Area: areas[random.Next(areas.Length)], Word: random.Next(0, 400) * 5)).ToArray();
+        var tags = new List<PlcTag>();
+        while (tags.Count < count)
+        {
+            (string area, int word) = random.Next(4) == 0
+                ? (areas[random.Next(areas.Length)], random.Next(0, 2000))
+                : spots[random.Next(spots.Length)] is var s ? (s.Area, s.Word + random.Next(0, 40)) : default;
+            int max = area switch { "H" => 510, "A" => 958, "T" => 2046, _ => 9998 };
+            word = Math.Min(word, max);
+            PlcTagType type = area == "T" ? PlcTagType.Word : TagTypes[random.Next(TagTypes.Length)];
+            string address = type == PlcTagType.Bit ? $"{area}{word}.{random.Next(16):D2}" : $"{area}{word}";
+            tags.Add(new PlcTag(address, type, random.Next(10) < 3 ? 1 : null));
+        }
+
+        return tags.ToArray();
+    }
+
+    private readonly record struct Measurement(double MedianMs, double MinMs, double MaxMs, int Characters, int Exchanges, double TheoreticalMs)
+    {
+        public double Efficiency => TheoreticalMs / MedianMs;
+    }
+
+    private sealed class Rig : IAsyncDisposable
+    {
+        private readonly CancellationTokenSource _stop = new();
+        private PacedLineStream _line = null!;
+        private Task _session = Task.CompletedTask;
+        private HostLinkClient _client = null!;
+        private int _baud;
+        private TimeSpan _turnaround;
+
+        public static async Task<Rig> StartAsync(int baud, TimeSpan turnaround, HostLinkProtocol protocol = HostLinkProtocol.CMode)
+        {
+            var plc = new VirtualPlc(new VirtualPlcOptions { Units = [0, 1], BaudRate = baud, BitsPerCharacter = Bits, Turnaround = turnaround });
+            for (int i = 0; i < 10000; i++)
+            {
+                plc.WriteWord(PlcArea.Dm, i, (ushort)(i * 3));
+            }
+
+            (Stream host, Stream plcEnd) = InMemoryLink.CreatePair();
+            var rig = new Rig { _baud = baud, _turnaround = turnaround };
+            rig._session = plc.RunAsync(plcEnd, rig._stop.Token);
+            rig._line = new PacedLineStream(host, baud, Bits);
+            rig._client = HostLinkClient.ForStream(rig._line, new HostLinkClientOptions
+            {
+                LineTiming = new LineTiming(baud, Bits),
+                TurnaroundAllowance = TimeSpan.FromMilliseconds(200) + turnaround,
+                Protocol = protocol,
+            });
+
+            // Warm-up: JIT, pools, the link's pump.
+            for (int i = 0; i < 3; i++)
+            {
+                await rig._client.ReadWordsAsync("D0", 31);
+            }
+
+            return rig;
+        }
+
+        public async Task<Measurement> MeasureAsync(int runs, Func<HostLinkClient, Task> action)
+        {
+            var times = new List<double>();
+            int chars = 0;
+            int exchanges = 0;
+            for (int r = 0; r < runs; r++)
+            {
+                _line.ResetCounters();
+                long start = Stopwatch.GetTimestamp();
+                await action(_client);
+                times.Add((Stopwatch.GetTimestamp() - start) * 1000.0 / Stopwatch.Frequency);
+                chars = (int)(_line.Sent + _line.Received);
+                exchanges = _line.Writes;
+            }
+
+            times.Sort();
+            double theoretical = (chars * Bits * 1000.0 / _baud) + (exchanges * _turnaround.TotalMilliseconds);
+            return new Measurement(times[times.Count / 2], times[0], times[^1], chars, exchanges, theoretical);
+        }
+
+        public async ValueTask DisposeAsync()
+        {
+            await _client.DisposeAsync();
+            await _stop.CancelAsync();
+            await _session;
+            _stop.Dispose();
+        }
+    }
+}

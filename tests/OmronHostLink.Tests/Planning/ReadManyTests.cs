@@ -1,0 +1,76 @@
+using OmronHostLink.Link;
+using OmronHostLink.Planning;
+using OmronHostLink.Simulator;
+using OmronHostLink.Simulator.Hosting;
+
+namespace OmronHostLink.Tests.Planning;
+
+/// <summary>ReadManyAsync against the simulator over an in-memory link, both protocols, two units.</summary>
+public sealed class ReadManyTests
+{
+    [Theory]
+    [InlineData(HostLinkProtocol.CMode)]
+    [InlineData(HostLinkProtocol.Fins)]
+    public async Task ReadMany_returns_every_tag_from_the_right_unit(HostLinkProtocol protocol)
+    {
+        var plc = new VirtualPlc(new VirtualPlcOptions { Units = new[] { 0, 5 } });
+        for (int i = 0; i < 2000; i++)
+        {
+            plc.WriteWord(PlcArea.Dm, i, (ushort)(i * 7));
+        }
+
+        plc.WriteWord(PlcArea.Holding, 10, 0x0008);
+        plc.WriteWords(PlcArea.Dm, 3000, PlcWords.FromString("AB"));
+        var f = new ushort[2];
+        PlcWords.WriteSingle(2.25f, f);
+        plc.WriteWords(PlcArea.Em, 50, f, bank: 1);
+        plc.WriteWord(PlcArea.Counter, 12, 0x0042);
+
+        (Stream host, Stream plcEnd) = InMemoryLink.CreatePair();
+        using var stop = new CancellationTokenSource();
+        Task session = plc.RunAsync(plcEnd, stop.Token);
+        await using HostLinkClient client = HostLinkClient.ForStream(host, new HostLinkClientOptions { Protocol = protocol, LineTiming = new LineTiming(115200, 11) });
+
+        var tags = new[]
+        {
+            new PlcTag("D5"), new PlcTag("D9"), new PlcTag("D1500", PlcTagType.Int16), new PlcTag("H10.03", PlcTagType.Bit),
+            new PlcTag("E1_50", PlcTagType.Float), new PlcTag("C12"), new PlcTag("D7", unit: 5), new PlcTag("D3000"),
+        };
+        PlcTagValue[] values = await client.ReadManyAsync(tags);
+        values.Select(v => v.Value).Should().Equal((ushort)35, (ushort)63, unchecked((short)10500), true, 2.25f, (ushort)0x42, (ushort)49, (ushort)0x4142);
+        values.Select(v => v.Tag).Should().Equal(tags);
+
+        stop.Cancel();
+        await session;
+    }
+
+    [Fact]
+    public async Task A_plan_is_made_once_and_executed_many_times()
+    {
+        var plc = new VirtualPlc();
+        (Stream host, Stream plcEnd) = InMemoryLink.CreatePair();
+        using var stop = new CancellationTokenSource();
+        Task session = plc.RunAsync(plcEnd, stop.Token);
+        await using HostLinkClient client = HostLinkClient.ForStream(host, new HostLinkClientOptions { LineTiming = new LineTiming(115200, 11) });
+        ReadPlan plan = new ReadPlanner().Plan(new[] { new PlcTag("D0"), new PlcTag("D2") });
+        for (ushort i = 0; i < 3; i++)
+        {
+            plc.WriteWord(PlcArea.Dm, 2, i);
+            (await client.ReadManyAsync(plan))[1].Value.Should().Be(i);
+        }
+
+        stop.Cancel();
+        await session;
+    }
+
+    [Fact]
+    public async Task Nothing_is_sent_when_a_tag_cannot_be_read_with_the_protocol()
+    {
+        int frames = 0;
+        (Stream host, _) = InMemoryLink.CreatePair();
+        await using HostLinkClient client = HostLinkClient.ForStream(host);
+        client.FrameObserver = (_, _) => frames++;
+        await FluentActions.Awaiting(async () => await client.ReadManyAsync(new[] { new PlcTag("W0") })).Should().ThrowAsync<ArgumentException>();
+        frames.Should().Be(0);
+    }
+}
