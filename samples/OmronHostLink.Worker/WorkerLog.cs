@@ -51,14 +51,14 @@ public static partial class WorkerLog
     [LoggerMessage(EventId = Events.Values, Level = LogLevel.Information, Message = "{Link}/{Group}: unit {Unit} {Address} = {Values}")]
     internal static partial void Values(ILogger logger, string link, string group, int unit, string address, string values);
 
-    [LoggerMessage(EventId = Events.UnitDown, Level = LogLevel.Warning, Message = "link {Link}: PLC unit {Unit} not answering ({Reason}) — {Detail} Retrying in {RetryIn}, backing off up to {MaxBackoff}.")]
-    internal static partial void UnitDown(ILogger logger, string link, int unit, string reason, string detail, TimeSpan retryIn, TimeSpan maxBackoff);
+    [LoggerMessage(EventId = Events.UnitDown, Level = LogLevel.Warning, Message = "link {Link}: PLC unit {Unit} not answering ({Reason}) — {Detail} Retrying in {RetryInSeconds:0.###} s, backing off up to {MaxBackoffSeconds:0.###} s.")]
+    internal static partial void UnitDown(ILogger logger, string link, int unit, string reason, string detail, double retryInSeconds, double maxBackoffSeconds);
 
     [LoggerMessage(EventId = Events.UnitResumed, Level = LogLevel.Information, Message = "link {Link}: PLC unit {Unit} resumed after {OutageSeconds:0.#} s ({Attempts} failed attempts)")]
     internal static partial void UnitResumed(ILogger logger, string link, int unit, double outageSeconds, int attempts);
 
-    [LoggerMessage(EventId = Events.UnitStillDown, Level = LogLevel.Debug, Message = "link {Link}: PLC unit {Unit} still not answering ({Reason}: {Detail}); next attempt in {RetryIn}")]
-    internal static partial void UnitStillDown(ILogger logger, string link, int unit, string reason, string detail, TimeSpan retryIn);
+    [LoggerMessage(EventId = Events.UnitStillDown, Level = LogLevel.Debug, Message = "link {Link}: PLC unit {Unit} still not answering ({Reason}: {Detail}); next attempt in {RetryInSeconds:0.###} s")]
+    internal static partial void UnitStillDown(ILogger logger, string link, int unit, string reason, string detail, double retryInSeconds);
 
     [LoggerMessage(EventId = Events.GroupFailed, Level = LogLevel.Warning, Message = "{Link}/{Group}: unit {Unit} {Address} cannot be read: {Detail}")]
     internal static partial void GroupFailed(ILogger logger, string link, string group, int unit, string address, string detail);

@@ -200,7 +200,7 @@ public sealed class LinkPollingService : BackgroundService
             unit.Attempts = 1;
             unit.Backoff = _options.Backoff.Initial;
             unit.RetryAt = now + unit.Backoff;
-            WorkerLog.UnitDown(_logger, _name, group.UnitNumber, reason, e.Message, unit.Backoff, _options.Backoff.Max);
+            WorkerLog.UnitDown(_logger, _name, group.UnitNumber, reason, e.Message, unit.Backoff.TotalSeconds, _options.Backoff.Max.TotalSeconds);
             return;
         }
 
@@ -208,7 +208,7 @@ public sealed class LinkPollingService : BackgroundService
         long doubled = Math.Min(unit.Backoff.Ticks * 2, _options.Backoff.Max.Ticks);
         unit.Backoff = TimeSpan.FromTicks(Math.Max(doubled, _options.Backoff.Initial.Ticks));
         unit.RetryAt = now + unit.Backoff;
-        WorkerLog.UnitStillDown(_logger, _name, group.UnitNumber, reason, e.Message, unit.Backoff);
+        WorkerLog.UnitStillDown(_logger, _name, group.UnitNumber, reason, e.Message, unit.Backoff.TotalSeconds);
     }
 
     private void UnitAnswered(PollGroup group, UnitHealth unit)
