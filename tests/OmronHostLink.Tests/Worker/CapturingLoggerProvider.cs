@@ -4,7 +4,7 @@ using Microsoft.Extensions.Logging;
 namespace OmronHostLink.Tests.Worker;
 
 /// <summary>One captured log entry, with its structured fields.</summary>
-public sealed record LogEntry(string Category, LogLevel Level, EventId EventId, string Message, IReadOnlyDictionary<string, object?> Fields)
+public sealed record LogEntry(DateTimeOffset Time, string Category, LogLevel Level, EventId EventId, string Message, IReadOnlyDictionary<string, object?> Fields)
 {
     public object? this[string field] => Fields.TryGetValue(field, out object? v) ? v : null;
 }
@@ -24,7 +24,7 @@ public sealed class CapturingLoggerProvider : ILoggerProvider
     {
     }
 
-    public string Dump() => string.Join(Environment.NewLine, _entries.Select(e => $"{e.Level} [{e.EventId.Id}] {e.Category}: {e.Message}"));
+    public string Dump() => string.Join(Environment.NewLine, _entries.Select(e => $"{e.Time:HH:mm:ss.fff} {e.Level} [{e.EventId.Id}] {e.Category}: {e.Message}"));
 
     private sealed class Logger(CapturingLoggerProvider owner, string category) : ILogger
     {
@@ -44,7 +44,7 @@ public sealed class CapturingLoggerProvider : ILoggerProvider
                 }
             }
 
-            owner._entries.Enqueue(new LogEntry(category, logLevel, eventId, formatter(state, exception), fields));
+            owner._entries.Enqueue(new LogEntry(DateTimeOffset.Now, category, logLevel, eventId, formatter(state, exception), fields));
         }
     }
 }
