@@ -1,1 +1,29 @@
-return 0;
+using Microsoft.Extensions.Hosting;
+using Microsoft.Extensions.Options;
+using OmronHostLink.Worker;
+
+// Ctrl+C, SIGTERM and (with -p:WindowsService=true) a service stop all end here through the host's lifetime.
+HostApplicationBuilder builder = WorkerHost.CreateBuilder(args);
+using IHost host = builder.Build();
+try
+{
+    await host.RunAsync();
+    return 0;
+}
+catch (Exception e) when (Unwrap(e) is { Count: > 0 } failures)
+{
+    Console.Error.WriteLine("OmronHostLink.Worker: the configuration is not valid:");
+    foreach (string failure in failures)
+    {
+        Console.Error.WriteLine("  - " + failure);
+    }
+
+    return 2;
+}
+
+static List<string> Unwrap(Exception e) => e switch
+{
+    OptionsValidationException v => v.Failures.ToList(),
+    AggregateException a => a.InnerExceptions.SelectMany(Unwrap).ToList(),
+    _ => [],
+};

@@ -1,0 +1,59 @@
+using Microsoft.Extensions.DependencyInjection;
+using Microsoft.Extensions.DependencyInjection.Extensions;
+using Microsoft.Extensions.Hosting;
+using Microsoft.Extensions.Options;
+using OmronHostLink.Worker.Configuration;
+using OmronHostLink.Worker.Polling;
+using OmronHostLink.Worker.Simulation;
+
+namespace OmronHostLink.Worker;
+
+/// <summary>Builds the worker's generic host: options, validation, the optional simulator and the link pollers.</summary>
+public static class WorkerHost
+{
+    /// <summary>A builder with the usual defaults (appsettings.json, appsettings.{Environment}.json, environment variables, command line, console logging).</summary>
+    public static HostApplicationBuilder CreateBuilder(string[] args)
+        => Configure(Host.CreateApplicationBuilder(args));
+
+    /// <summary>
+    /// A builder from explicit settings: tests pass <c>DisableDefaults = true</c> and their own
+    /// <see cref="HostApplicationBuilderSettings.Configuration"/>, and add a logger provider to the result.
+    /// </summary>
+    public static HostApplicationBuilder CreateBuilder(HostApplicationBuilderSettings settings)
+        => Configure(Host.CreateApplicationBuilder(settings));
+
+    private static HostApplicationBuilder Configure(HostApplicationBuilder builder)
+    {
+        IServiceCollection services = builder.Services;
+        services.TryAddSingleton(TimeProvider.System);
+
+        services.AddOptions<WorkerOptions>()
+            .Bind(builder.Configuration.GetSection(WorkerOptions.SectionName))
+            .ValidateOnStart();
+        services.AddSingleton<IValidateOptions<WorkerOptions>, WorkerOptionsValidator>();
+
+        services.AddOptions<SimulatorOptions>()
+            .Bind(builder.Configuration.GetSection(SimulatorOptions.SectionName))
+            .ValidateDataAnnotations()
+            .ValidateOnStart();
+        services.AddSingleton<IValidateOptions<SimulatorOptions>, SimulatorOptionsValidator>();
+
+        // Order matters: hosted services start in registration order and stop in reverse, so the simulator listens
+        // before the links connect and outlives them.
+        services.AddSingleton<SimulatorHostedService>();
+        services.AddHostedService(sp => sp.GetRequiredService<SimulatorHostedService>());
+        services.AddSingleton<PollingHostedService>();
+        services.AddHostedService(sp => sp.GetRequiredService<PollingHostedService>());
+
+#if WINDOWS_SERVICE
+        // Built with -p:WindowsService=true on a machine whose package source has Microsoft.Extensions.Hosting.WindowsServices:
+        // reports SERVICE_RUNNING/STOPPED to the service control manager and logs to the event log.
+        services.AddWindowsService(o => o.ServiceName = "OmronHostLink.Worker");
+#endif
+#if SYSTEMD
+        // Built with -p:Systemd=true where Microsoft.Extensions.Hosting.Systemd is available: sd_notify for Type=notify units.
+        services.AddSystemd();
+#endif
+        return builder;
+    }
+}
