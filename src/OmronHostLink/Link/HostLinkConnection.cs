@@ -238,9 +238,16 @@ internal sealed class HostLinkConnection : IAsyncDisposable
             // and takes any command, our TS fence included, as the delimiter asking for it. Only INITIALIZE ends that,
             // so resynchronisation must send @** then too (the soak found fences answered with stale continuation frames).
             _midExchange = preRead == 0 && !request.SingleFrameOnly && CModeOverhead + request.MaxResponseText > MaxFirstFrame;
+            TimeSpan firstTimeout = FrameTimeout(sentChars, firstExpected);
             int len = preRead > 0
                 ? preRead
-                : await ReadFrameAsync(expectStart: true, FrameTimeout(sentChars, firstExpected), deadline, cancellationToken).ConfigureAwait(false);
+                : await ReadFrameAsync(expectStart: true, firstTimeout, deadline, cancellationToken).ConfigureAwait(false);
+            if (preRead == 0 && IsOwnEcho(request, len, sentChars))
+            {
+                // A line that echoes (2-wire RS-485) with LocalEcho off: our own frame is not the answer.
+                len = await ReadFrameAsync(expectStart: true, firstTimeout, deadline, cancellationToken).ConfigureAwait(false);
+            }
+
             FrameInfo info = FrameParser.ParseFirst(_frame.AsSpan(0, len));
             _midExchange = !info.IsFinal;
             CheckEcho(request, info);
@@ -317,6 +324,17 @@ internal sealed class HostLinkConnection : IAsyncDisposable
         HostLinkMetrics.Completed(request.Header, ms);
         HostLinkLog.Transaction(_logger, request.Unit, request.Header, ms, frames);
     }
+
+    /// <summary>
+    /// Whether the frame just read is our own last frame coming back. Only where no correct answer can equal the
+    /// command: a TS answer is the command, and a two-character text (SC 00, MF 01) reads as a bare end code.
+    /// </summary>
+    private bool IsOwnEcho(HostLinkRequest request, int length, int sentLength)
+        => !_options.LocalEcho
+            && request.Header != "TS"
+            && request.Message.Length - 5 != 2
+            && length == sentLength
+            && _frame.AsSpan(0, length).SequenceEqual(_tx.AsSpan(0, sentLength));
 
     private void CheckEcho(HostLinkRequest request, FrameInfo info)
     {
@@ -555,6 +573,29 @@ internal sealed class HostLinkConnection : IAsyncDisposable
         }
     }
 
+    /// <summary>How many TS fences a resynchronisation tries before the exchange fails.</summary>
+    private const int FenceAttempts = 2;
+
+    /// <summary>Writes a TS fence frame with a fresh random token into <see cref="_tx"/>.</summary>
+    /// <returns>The frame's length.</returns>
+    private int WriteFenceFrame(int unit)
+    {
+        Span<byte> message = stackalloc byte[Protocol.CMode.CModeCommand.PrefixLength + 8];
+        message[0] = (byte)'@';
+        HexAscii.WriteDecimal(unit, message.Slice(1, 2));
+        message[3] = (byte)'T';
+        message[4] = (byte)'S';
+        lock (TokenRandom)
+        {
+            for (int i = 5; i < message.Length; i++)
+            {
+                message[i] = HexAscii.Nibble(TokenRandom.Next(16));
+            }
+        }
+
+        return FrameWriter.WriteFrame(message, final: true, _tx);
+    }
+
     private async ValueTask ResyncAsync(int requestUnit, CancellationToken cancellationToken)
     {
         long discarded = 0;
@@ -574,33 +615,44 @@ internal sealed class HostLinkConnection : IAsyncDisposable
             reader.AdvanceTo(pending.Buffer.End);
         }
 
-        // The fence: TS with a token nobody else can have sent.
-        byte[] token = new byte[8];
-        lock (TokenRandom)
-        {
-            for (int i = 0; i < token.Length; i++)
-            {
-                token[i] = HexAscii.Nibble(TokenRandom.Next(16));
-            }
-        }
-
-        byte[] message = new Protocol.CMode.TestCommand(System.Text.Encoding.ASCII.GetString(token)).ToMessage(unit);
-        int frameLength = FrameWriter.WriteFrame(message, final: true, _tx);
-        await WriteAsync(_tx.AsMemory(0, frameLength), deadline.Token).ConfigureAwait(false);
-        if (_options.LocalEcho)
-        {
-            await ConsumeEchoAsync(frameLength, deadline, cancellationToken).ConfigureAwait(false);
-        }
-
+        // The fence: TS with a token nobody else can have sent. A fence answer can itself be hit by line damage, so a
+        // second fence is tried before the exchange is given up; it goes to the unit the caller wants, since a unit that
+        // did not echo a fresh TS within its deadline is not talking.
         string outcome = "unanswered";
-        TimeSpan timeout = FrameTimeout(frameLength, frameLength);
-        var clock = Stopwatch.StartNew();
-        try
+        TimeSpan timeout = TimeSpan.Zero;
+        for (int attempt = 0; attempt < FenceAttempts && outcome != "answered"; attempt++)
         {
+            // Each fence has a deadline of its own: the previous one's has fired.
+            using var fenceDeadline = CancellationTokenSource.CreateLinkedTokenSource(cancellationToken);
+            int target = attempt == 0 ? unit : requestUnit;
+            int frameLength = WriteFenceFrame(target);
+            await WriteAsync(_tx.AsMemory(0, frameLength), fenceDeadline.Token).ConfigureAwait(false);
+            if (_options.LocalEcho)
+            {
+                await ConsumeEchoAsync(frameLength, fenceDeadline, cancellationToken).ConfigureAwait(false);
+            }
+
+            timeout = FrameTimeout(frameLength, frameLength);
+            var clock = Stopwatch.StartNew();
             while (clock.Elapsed < timeout)
             {
                 TimeSpan left = timeout - clock.Elapsed;
-                int n = await ReadFrameAsync(expectStart: true, left > TimeSpan.FromMilliseconds(1) ? left : TimeSpan.FromMilliseconds(1), deadline, cancellationToken).ConfigureAwait(false);
+                int n;
+                try
+                {
+                    n = await ReadFrameAsync(expectStart: true, left > TimeSpan.FromMilliseconds(1) ? left : TimeSpan.FromMilliseconds(1), fenceDeadline, cancellationToken).ConfigureAwait(false);
+                }
+                catch (HostLinkTimeoutException)
+                {
+                    break;
+                }
+                catch (HostLinkFrameException)
+                {
+                    // Damaged leftovers of the failed exchange: discarded like any other stale bytes.
+                    outcome = "unanswered after damaged frames";
+                    continue;
+                }
+
                 if (n == frameLength && _frame.AsSpan(0, n).SequenceEqual(_tx.AsSpan(0, frameLength)))
                 {
                     outcome = "answered";
@@ -610,13 +662,6 @@ internal sealed class HostLinkConnection : IAsyncDisposable
                 discarded += n;
             }
         }
-        catch (HostLinkTimeoutException)
-        {
-        }
-        catch (HostLinkFrameException)
-        {
-            outcome = "garbled";
-        }
 
         HostLinkLog.Resync(_logger, unit, discarded, outcome);
         if (outcome == "answered")
@@ -625,13 +670,10 @@ internal sealed class HostLinkConnection : IAsyncDisposable
             return;
         }
 
-        // Not in step yet: this exchange fails and the next attempt fences again. A unit that did not echo a fresh TS
-        // within its deadline is not talking, so the next fence goes to the unit the caller wants.
+        // Not in step yet: this exchange fails and the next one fences again, at the unit it wants.
         _resyncUnit = requestUnit;
         throw new HostLinkTimeoutException(
-            unit == requestUnit
-                ? $"No answer from unit {unit:D2} on {_transport.Description} within {timeout.TotalMilliseconds:0} ms (it did not echo the TS check sent after the previous failure)."
-                : $"The link could not be resynchronised: unit {unit:D2}, which failed before, did not echo the TS check within {timeout.TotalMilliseconds:0} ms; the next exchange checks unit {requestUnit:D2} instead.",
+            $"No answer from unit {requestUnit:D2} on {_transport.Description} within {timeout.TotalMilliseconds:0} ms (it did not echo the TS check sent to resynchronise the link after a failed exchange).",
             timeout);
     }
 }

@@ -61,6 +61,19 @@ public static class FrameReader
         }
 
         SequencePosition end = buffer.GetPosition(1, cr.Value);
+        if (expectStart)
+        {
+            // '@' never appears inside a frame, so an earlier '@' belongs to a frame cut short (truncated, or
+            // interrupted by noise): start at the last one before the CR and drop the cut frame as noise.
+            long lastAt = LastIndexOf(buffer.Slice(0, cr.Value), (byte)'@');
+            if (lastAt > 0)
+            {
+                discarded += lastAt;
+                buffer = buffer.Slice(lastAt);
+                end = buffer.GetPosition(1, buffer.PositionOf((byte)'\r')!.Value);
+            }
+        }
+
         frame = buffer.Slice(0, end);
         if (frame.Length > MaxFrameLength + 1)
         {
@@ -70,5 +83,23 @@ public static class FrameReader
 
         buffer = buffer.Slice(end);
         return FrameScanResult.Frame;
+    }
+
+    private static long LastIndexOf(ReadOnlySequence<byte> sequence, byte value)
+    {
+        long result = -1;
+        long offset = 0;
+        foreach (ReadOnlyMemory<byte> segment in sequence)
+        {
+            int i = segment.Span.LastIndexOf(value);
+            if (i >= 0)
+            {
+                result = offset + i;
+            }
+
+            offset += segment.Length;
+        }
+
+        return result;
     }
 }

@@ -149,6 +149,19 @@ public sealed class CModePropertyTests
     }
 
     [Fact]
+    public void A_frame_cut_short_before_the_next_one_is_dropped_and_the_next_frame_read()
+    {
+        byte[] whole = GoldenVectors.Get("c_rd_resp_3w").FrameBytes(0);
+        byte[] stream = Encoding.ASCII.GetBytes("@00RD00000AFF").Concat(whole).ToArray(); // a truncated answer, then a whole one
+        var buffer = new ReadOnlySequence<byte>(stream);
+
+        FrameReader.TryReadFrame(ref buffer, true, out ReadOnlySequence<byte> frame, out long discarded).Should().Be(FrameScanResult.Frame);
+
+        frame.ToArray().Should().Equal(whole);
+        discarded.Should().Be(13);
+    }
+
+    [Fact]
     public void Bytes_without_a_CR_are_cut_at_the_documented_bound()
     {
         byte[] endless = Enumerable.Repeat((byte)'0', FrameReader.MaxFrameLength + 10).Prepend((byte)'@').ToArray();

@@ -333,4 +333,43 @@ public sealed class LinkExchangeTests
 
         await FluentActions.Awaiting(() => client.ReadStatusAsync().AsTask()).Should().ThrowAsync<HostLinkConnectionException>();
     }
+
+    [Fact]
+    public async Task A_line_that_echoes_our_frame_does_not_make_the_echo_the_answer()
+    {
+        var (client, plc) = Connect(f => f == RdD100x3 ? new Reply(RdD100x3 + Rd3WordsResponse) : null);
+        await using var _ = plc;
+        await using var __ = client;
+
+        (await client.ReadWordsAsync("D100", 3)).Should().Equal(0x000A, 0xFFFF, 0x8000);
+    }
+
+    [Fact]
+    public async Task A_damaged_fence_answer_is_followed_by_a_second_fence()
+    {
+        int reads = 0;
+        int fences = 0;
+        var (client, plc) = Connect(f =>
+        {
+            if (f == RdD100x3)
+            {
+                return Interlocked.Increment(ref reads) == 1 ? Reply.None : new Reply(Rd3WordsResponse);
+            }
+
+            if (f.StartsWith("@00TS", StringComparison.Ordinal))
+            {
+                // The first fence's echo arrives damaged (one character changed), the second intact.
+                return Interlocked.Increment(ref fences) == 1 ? new Reply(f.Substring(0, 6) + (f[6] == '0' ? '1' : '0') + f.Substring(7)) : new Reply(f);
+            }
+
+            return null;
+        });
+        await using var _ = plc;
+        await using var __ = client;
+
+        await FluentActions.Awaiting(() => client.ReadWordsAsync("D100", 3).AsTask()).Should().ThrowAsync<HostLinkTimeoutException>();
+        (await client.ReadWordsAsync("D100", 3)).Should().Equal(0x000A, 0xFFFF, 0x8000);
+
+        fences.Should().Be(2);
+    }
 }

@@ -102,7 +102,8 @@ public sealed class FuzzTests(ITestOutputHelper output)
         }
 
         // A CR after the bound: the over-long frame is refused, not returned.
-        byte[] longFrame = Enumerable.Repeat((byte)'@', FrameReader.MaxFrameLength + 5).Concat(new[] { (byte)'\r' }).ToArray();
+        // ('@' starts it and no other '@' follows: an earlier '@' would only mark a frame cut short.)
+        byte[] longFrame = new[] { (byte)'@' }.Concat(Enumerable.Repeat((byte)'0', FrameReader.MaxFrameLength + 5)).Concat(new[] { (byte)'\r' }).ToArray();
         var whole = new ReadOnlySequence<byte>(longFrame);
         FrameReader.TryReadFrame(ref whole, expectStart: true, out _, out _).Should().Be(FrameScanResult.Overflow);
     }
