@@ -9,7 +9,7 @@ internal sealed class ReadRequest
     /// <summary>Characters <c>--as string</c> reads when no count is given.</summary>
     public const int DefaultStringLength = 16;
 
-    private ReadRequest(PlcAddress address, int count, ValueKind kind, int words)
+    private ReadRequest(PlcAddress address, int count, PlcValueType kind, int words)
     {
         Address = address;
         Count = count;
@@ -22,37 +22,37 @@ internal sealed class ReadRequest
     /// <summary>Values asked for (characters for string).</summary>
     public int Count { get; }
 
-    public ValueKind Kind { get; }
+    public PlcValueType Kind { get; }
 
     /// <summary>Words read (0 for timer/counter completion flags, read one by one).</summary>
     public int Words { get; }
 
-    public bool IsTimerCounterFlag => Kind == ValueKind.Bit && Address.Area is PlcArea.Timer or PlcArea.Counter;
+    public bool IsTimerCounterFlag => Kind == PlcValueType.Bit && Address.Area is PlcArea.Timer or PlcArea.Counter;
 
     /// <summary>Checks everything before anything is sent.</summary>
     public static ReadRequest Create(PlcAddress address, string? countText, string? kindText, HostLinkProtocol protocol)
     {
-        ValueKind kind = kindText is null
-            ? address.IsBit ? ValueKind.Bit : ValueKind.Word
+        PlcValueType kind = kindText is null
+            ? address.IsBit ? PlcValueType.Bit : PlcValueType.Word
             : ValueKinds.Parse(kindText);
         bool timerCounter = address.Area is PlcArea.Timer or PlcArea.Counter;
-        if (kind == ValueKind.Bit && !address.IsBit && !timerCounter)
+        if (kind == PlcValueType.Bit && !address.IsBit && !timerCounter)
         {
             throw new UsageException($"{address} names a word; --as bit needs a bit address such as {address}.05.");
         }
 
-        if (kind != ValueKind.Bit && address.IsBit)
+        if (kind != PlcValueType.Bit && address.IsBit)
         {
             throw new UsageException($"{address} names a bit; read it with --as bit, or give the word address {address.AsWord()}.");
         }
 
-        int maxCount = kind == ValueKind.String ? 20000 : 10000;
+        int maxCount = kind == PlcValueType.String ? 20000 : 10000;
         int count = countText is null
-            ? kind == ValueKind.String ? DefaultStringLength : 1
+            ? kind == PlcValueType.String ? DefaultStringLength : 1
             : (int)Numbers.ParseInteger(countText, 1, maxCount, "The count");
 
         int words;
-        if (kind == ValueKind.Bit)
+        if (kind == PlcValueType.Bit)
         {
             if (timerCounter)
             {
@@ -65,7 +65,7 @@ internal sealed class ReadRequest
         }
         else
         {
-            words = kind == ValueKind.String ? PlcWords.WordsForString(count) : count * kind.WordsPerValue();
+            words = kind == PlcValueType.String ? PlcWords.WordsForString(count) : count * kind.WordsPerValue();
             Addresses.EnsureRange(address, words, protocol, forWrite: false);
         }
 
@@ -87,7 +87,7 @@ internal sealed class ReadRequest
         }
 
         ushort[] words = await plc.ReadWordsAsync(Address.AsWord(), Words, cancellationToken).ConfigureAwait(false);
-        if (Kind != ValueKind.Bit)
+        if (Kind != PlcValueType.Bit)
         {
             return new Snapshot(this, words, null);
         }
@@ -119,12 +119,12 @@ internal sealed class Snapshot
 
     public bool[]? Bits { get; }
 
-    private ValueKind Kind => Request.Kind;
+    private PlcValueType Kind => Request.Kind;
 
     public int ValueCount => Kind switch
     {
-        ValueKind.Bit => Bits!.Length,
-        ValueKind.String => 1,
+        PlcValueType.Bit => Bits!.Length,
+        PlcValueType.String => 1,
         _ => Request.Count,
     };
 
@@ -132,7 +132,7 @@ internal sealed class Snapshot
     public PlcAddress AddressOf(int i)
     {
         PlcAddress a = Request.Address;
-        if (Kind == ValueKind.Bit)
+        if (Kind == PlcValueType.Bit)
         {
             if (Request.IsTimerCounterFlag)
             {
@@ -143,7 +143,7 @@ internal sealed class Snapshot
             return a.AsWord().Offset(n / 16).WithBit(n % 16);
         }
 
-        return Kind == ValueKind.String ? a : a.Offset(i * Kind.WordsPerValue());
+        return Kind == PlcValueType.String ? a : a.Offset(i * Kind.WordsPerValue());
     }
 
     /// <summary>Whether value <paramref name="i"/> differs from the same value in <paramref name="other"/>.</summary>
@@ -154,12 +154,12 @@ internal sealed class Snapshot
             return true;
         }
 
-        if (Kind == ValueKind.Bit)
+        if (Kind == PlcValueType.Bit)
         {
             return Bits![i] != other.Bits![i];
         }
 
-        if (Kind == ValueKind.String)
+        if (Kind == PlcValueType.String)
         {
             return !Words.AsSpan().SequenceEqual(other.Words);
         }
@@ -173,18 +173,18 @@ internal sealed class Snapshot
     {
         switch (Kind)
         {
-            case ValueKind.Bit:
+            case PlcValueType.Bit:
                 return Bits![i] ? "1 (ON)" : "0 (OFF)";
-            case ValueKind.String:
+            case PlcValueType.String:
                 return "\"" + Protocol.FrameText.Printable(TextBytes()) + "\"";
-            case ValueKind.Int32:
-            case ValueKind.UInt32:
-            case ValueKind.Float:
+            case PlcValueType.Int32:
+            case PlcValueType.UInt32:
+            case PlcValueType.Float:
                 uint raw = PlcWords.ReadUInt32(Words.AsSpan(i * 2, 2));
                 string v = Kind switch
                 {
-                    ValueKind.Int32 => Numbers.Invariant(PlcWords.ReadInt32(Words.AsSpan(i * 2, 2))),
-                    ValueKind.UInt32 => Numbers.Invariant(raw),
+                    PlcValueType.Int32 => Numbers.Invariant(PlcWords.ReadInt32(Words.AsSpan(i * 2, 2))),
+                    PlcValueType.UInt32 => Numbers.Invariant(raw),
                     _ => PlcWords.ReadSingle(Words.AsSpan(i * 2, 2)).ToString("R", CultureInfo.InvariantCulture),
                 };
                 return $"{v}  ({Numbers.Hex(raw)})";
@@ -192,8 +192,8 @@ internal sealed class Snapshot
                 ushort w = Words[i];
                 return Kind switch
                 {
-                    ValueKind.Int16 => $"{Numbers.Invariant(PlcWords.ToInt16(w))}  ({Numbers.Hex(w)})",
-                    ValueKind.Bcd => TryBcd(w, out int bcd) ? $"{Numbers.Invariant(bcd)}  (BCD {Numbers.Hex(w)})" : $"not BCD  ({Numbers.Hex(w)})",
+                    PlcValueType.Int16 => $"{Numbers.Invariant(PlcWords.ToInt16(w))}  ({Numbers.Hex(w)})",
+                    PlcValueType.Bcd => TryBcd(w, out int bcd) ? $"{Numbers.Invariant(bcd)}  (BCD {Numbers.Hex(w)})" : $"not BCD  ({Numbers.Hex(w)})",
                     _ => $"{Numbers.Hex(w)}  {Numbers.Invariant(w)}",
                 };
         }
@@ -204,19 +204,19 @@ internal sealed class Snapshot
     {
         switch (Kind)
         {
-            case ValueKind.Bit:
+            case PlcValueType.Bit:
                 json.WriteBooleanValue(Bits![i]);
                 break;
-            case ValueKind.String:
+            case PlcValueType.String:
                 json.WriteStringValue(Text());
                 break;
-            case ValueKind.Int32:
+            case PlcValueType.Int32:
                 json.WriteNumberValue(PlcWords.ReadInt32(Words.AsSpan(i * 2, 2)));
                 break;
-            case ValueKind.UInt32:
+            case PlcValueType.UInt32:
                 json.WriteNumberValue(PlcWords.ReadUInt32(Words.AsSpan(i * 2, 2)));
                 break;
-            case ValueKind.Float:
+            case PlcValueType.Float:
                 float f = PlcWords.ReadSingle(Words.AsSpan(i * 2, 2));
                 if (float.IsFinite(f))
                 {
@@ -228,10 +228,10 @@ internal sealed class Snapshot
                 }
 
                 break;
-            case ValueKind.Int16:
+            case PlcValueType.Int16:
                 json.WriteNumberValue(PlcWords.ToInt16(Words[i]));
                 break;
-            case ValueKind.Bcd:
+            case PlcValueType.Bcd:
                 if (TryBcd(Words[i], out int bcd))
                 {
                     json.WriteNumberValue(bcd);

@@ -16,7 +16,7 @@ internal static class WireEfficiency
     private const int Bits = 11;
 
     // BCD is left out: the simulator's memory holds arbitrary words, which a BCD tag would refuse.
-    private static readonly PlcTagType[] TagTypes = [PlcTagType.Word, PlcTagType.Int16, PlcTagType.Int32, PlcTagType.UInt32, PlcTagType.Float, PlcTagType.Bit];
+    private static readonly PlcValueType[] TagTypes = [PlcValueType.Word, PlcValueType.Int16, PlcValueType.Int32, PlcValueType.UInt32, PlcValueType.Float, PlcValueType.Bit];
 
     public static async Task<int> RunAsync(string[] args)
     {
@@ -136,8 +136,8 @@ internal static class WireEfficiency
                 : spots[random.Next(spots.Length)] is var s ? (s.Area, s.Word + random.Next(0, 40)) : default;
             int max = area switch { "H" => 510, "A" => 958, "T" => 2046, _ => 9998 };
             word = Math.Min(word, max);
-            PlcTagType type = area == "T" ? PlcTagType.Word : TagTypes[random.Next(TagTypes.Length)];
-            string address = type == PlcTagType.Bit ? $"{area}{word}.{random.Next(16):D2}" : $"{area}{word}";
+            PlcValueType type = area == "T" ? PlcValueType.Word : TagTypes[random.Next(TagTypes.Length)];
+            string address = type == PlcValueType.Bit ? $"{area}{word}.{random.Next(16):D2}" : $"{area}{word}";
             tags.Add(new PlcTag(address, type, random.Next(10) < 3 ? 1 : null));
         }
 

@@ -140,13 +140,13 @@ public sealed class WorkerOptionsValidator : IValidateOptions<WorkerOptions>
             failures.Add($"{path}:Log '{group.Log}' is not EveryPoll or OnChange.");
         }
 
-        bool typeOk = PollValueTypes.TryParse(group.Type, out PollValueType type);
+        bool typeOk = PollValueTypes.TryParse(group.Type, out PlcValueType type);
         if (!typeOk)
         {
             failures.Add($"{path}:Type '{group.Type}' is not one of {PollValueTypes.Names}.");
         }
 
-        int maxCount = type == PollValueType.String ? 20000 : 10000;
+        int maxCount = type == PlcValueType.String ? 20000 : 10000;
         if (group.Count < 1 || group.Count > maxCount)
         {
             failures.Add($"{path}:Count must be 1-{maxCount}; it is {group.Count}.");
@@ -166,7 +166,7 @@ public sealed class WorkerOptionsValidator : IValidateOptions<WorkerOptions>
             return;
         }
 
-        if (type == PollValueType.Bit)
+        if (type == PlcValueType.Bit)
         {
             if (PollValueTypes.IsCompletionFlag(type, address))
             {

@@ -14,7 +14,7 @@ internal sealed class PollGroup
         Count = options.Count;
         Interval = options.Interval;
         WordOrder = wordOrder;
-        PollValueTypes.TryParse(options.Type, out PollValueType type);
+        PollValueTypes.TryParse(options.Type, out PlcValueType type);
         Type = type;
         Mode = Enum.Parse<PollLogMode>(options.Log, ignoreCase: true);
         Words = PollValueTypes.WordCount(type, Address, Count);
@@ -37,7 +37,7 @@ internal sealed class PollGroup
 
     public TimeSpan Interval { get; }
 
-    public PollValueType Type { get; }
+    public PlcValueType Type { get; }
 
     public PollLogMode Mode { get; }
 

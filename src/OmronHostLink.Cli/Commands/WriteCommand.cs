@@ -41,11 +41,11 @@ internal static class WriteCommand
             }
 
             string? kindText = parse.GetValue(kind);
-            ValueKind k = kindText is null ? target.IsBit ? ValueKind.Bit : ValueKind.Word : ValueKinds.Parse(kindText);
+            PlcValueType k = kindText is null ? target.IsBit ? PlcValueType.Bit : PlcValueType.Word : ValueKinds.Parse(kindText);
             HostLinkProtocol protocol = parse.GetValue(connection.Fins) ? HostLinkProtocol.Fins : HostLinkProtocol.CMode;
             bool useRmw = parse.GetValue(rmw);
             string summary;
-            if (k == ValueKind.Bit)
+            if (k == PlcValueType.Bit)
             {
                 if (!target.IsBit)
                 {
@@ -97,7 +97,7 @@ internal static class WriteCommand
         return command;
     }
 
-    private static void Report(OutputWriter output, PlcAddress target, ValueKind kind, int count, string summary)
+    private static void Report(OutputWriter output, PlcAddress target, PlcValueType kind, int count, string summary)
         => output.Result(
             w => w.WriteLine(summary),
             j =>
@@ -105,15 +105,15 @@ internal static class WriteCommand
                 j.WriteStartObject();
                 j.WriteString("address", target.ToString());
                 j.WriteString("as", kind.Name());
-                j.WriteNumber(kind == ValueKind.Bit ? "bits" : "words", count);
+                j.WriteNumber(kind == PlcValueType.Bit ? "bits" : "words", count);
                 j.WriteBoolean("ok", true);
                 j.WriteEndObject();
             });
 
     /// <summary>The words for the values, checked (nothing is sent when one is out of range).</summary>
-    public static ushort[] Encode(ValueKind kind, string[] values)
+    public static ushort[] Encode(PlcValueType kind, string[] values)
     {
-        if (kind == ValueKind.String)
+        if (kind == PlcValueType.String)
         {
             string text = string.Join(' ', values);
             if (text.Any(c => c > 0x7F))
@@ -130,20 +130,20 @@ internal static class WriteCommand
         {
             switch (kind)
             {
-                case ValueKind.Word:
-                case ValueKind.UInt16:
+                case PlcValueType.Word:
+                case PlcValueType.UInt16:
                     words.Add((ushort)Numbers.ParseInteger(v, 0, ushort.MaxValue, "The value"));
                     break;
-                case ValueKind.Int16:
+                case PlcValueType.Int16:
                     long i16 = v.StartsWith("0x", StringComparison.OrdinalIgnoreCase)
                         ? Numbers.ParseInteger(v, 0, ushort.MaxValue, "The int16 value")
                         : Numbers.ParseInteger(v, short.MinValue, short.MaxValue, "The int16 value");
                     words.Add(unchecked((ushort)i16));
                     break;
-                case ValueKind.Bcd:
+                case PlcValueType.Bcd:
                     words.Add(PlcWords.ToBcd((int)Numbers.ParseInteger(v, 0, PlcWords.MaxBcd, "The BCD value")));
                     break;
-                case ValueKind.Int32:
+                case PlcValueType.Int32:
                     long i32 = v.StartsWith("0x", StringComparison.OrdinalIgnoreCase)
                         ? Numbers.ParseInteger(v, 0, uint.MaxValue, "The int32 value")
                         : Numbers.ParseInteger(v, int.MinValue, int.MaxValue, "The int32 value");
@@ -151,12 +151,12 @@ internal static class WriteCommand
                     words.Add(pair[0]);
                     words.Add(pair[1]);
                     break;
-                case ValueKind.UInt32:
+                case PlcValueType.UInt32:
                     PlcWords.WriteUInt32((uint)Numbers.ParseInteger(v, 0, uint.MaxValue, "The uint32 value"), pair);
                     words.Add(pair[0]);
                     words.Add(pair[1]);
                     break;
-                case ValueKind.Float:
+                case PlcValueType.Float:
                     if (!float.TryParse(v, NumberStyles.Float, CultureInfo.InvariantCulture, out float f) || !float.IsFinite(f))
                     {
                         throw new UsageException($"The float value '{v}' is not a finite number such as 1.5 or -2e3.");

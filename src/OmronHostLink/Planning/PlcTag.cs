@@ -1,30 +1,5 @@
 namespace OmronHostLink.Planning;
 
-/// <summary>How the words of a <see cref="PlcTag"/> are read as a value.</summary>
-public enum PlcTagType
-{
-    /// <summary>One word, unsigned (<see cref="ushort"/>).</summary>
-    Word,
-
-    /// <summary>One word, signed (<see cref="short"/>).</summary>
-    Int16,
-
-    /// <summary>Two words, signed (<see cref="int"/>), in the client's word order.</summary>
-    Int32,
-
-    /// <summary>Two words, unsigned (<see cref="uint"/>), in the client's word order.</summary>
-    UInt32,
-
-    /// <summary>Two words, IEEE 754 single precision (<see cref="float"/>), in the client's word order.</summary>
-    Float,
-
-    /// <summary>One word of 4 BCD digits (an <see cref="int"/> 0-9999).</summary>
-    Bcd,
-
-    /// <summary>One bit (<see cref="bool"/>); the address must name a bit, such as <c>CIO100.05</c>.</summary>
-    Bit,
-}
-
 /// <summary>
 /// A value to read: an address, how to read it, and optionally the unit (multidrop) it lives in. Used with
 /// <see cref="ReadPlanner"/> and <c>ReadManyAsync</c>.
@@ -37,7 +12,7 @@ public sealed class PlcTag
     /// <param name="unit">The unit number 0-31, or null for the unit of the client (or view) that reads it.</param>
     /// <exception cref="FormatException">The address is not valid.</exception>
     /// <exception cref="ArgumentException">The type does not fit the address (a bit type needs a bit address, a word type a word address).</exception>
-    public PlcTag(string address, PlcTagType type = PlcTagType.Word, int? unit = null)
+    public PlcTag(string address, PlcValueType type = PlcValueType.Word, int? unit = null)
         : this(PlcAddress.Parse(address), type, unit)
     {
     }
@@ -48,19 +23,24 @@ public sealed class PlcTag
     /// <param name="unit">The unit number 0-31, or null for the unit of the client (or view) that reads it.</param>
     /// <exception cref="ArgumentException">The type does not fit the address, or the words run past the end of the area.</exception>
     /// <exception cref="ArgumentOutOfRangeException">The unit is not 0-31.</exception>
-    public PlcTag(PlcAddress address, PlcTagType type = PlcTagType.Word, int? unit = null)
+    public PlcTag(PlcAddress address, PlcValueType type = PlcValueType.Word, int? unit = null)
     {
-        if (!Enum.IsDefined(typeof(PlcTagType), type))
+        if (!Enum.IsDefined(typeof(PlcValueType), type))
         {
             throw new ArgumentOutOfRangeException(nameof(type), type, "Unknown tag type.");
         }
 
-        if (type == PlcTagType.Bit && !address.IsBit)
+        if (type == PlcValueType.String)
+        {
+            throw new ArgumentException("A tag holds one value of a fixed size; read text with ReadStringAsync, which takes its length.", nameof(type));
+        }
+
+        if (type == PlcValueType.Bit && !address.IsBit)
         {
             throw new ArgumentException($"{address} names a word; a Bit tag needs a bit address such as {address.AsWord()}.00.", nameof(type));
         }
 
-        if (type != PlcTagType.Bit && address.IsBit)
+        if (type != PlcValueType.Bit && address.IsBit)
         {
             throw new ArgumentException($"{address} names a bit; a {type} tag needs a word address.", nameof(type));
         }
@@ -70,7 +50,7 @@ public sealed class PlcTag
             Guard.Unit(u);
         }
 
-        WordCount = type is PlcTagType.Int32 or PlcTagType.UInt32 or PlcTagType.Float ? 2 : 1;
+        WordCount = type.WordsPerValue();
         if ((long)address.Word + WordCount > PlcAddress.AreaSize(address.Area))
         {
             throw new ArgumentException($"A {type} at {address} runs past the end of the area.", nameof(address));
@@ -81,11 +61,11 @@ public sealed class PlcTag
         Unit = unit;
     }
 
-    /// <summary>The address (for <see cref="PlcTagType.Bit"/>, a bit address).</summary>
+    /// <summary>The address (for <see cref="PlcValueType.Bit"/>, a bit address).</summary>
     public PlcAddress Address { get; }
 
     /// <summary>How the words are read.</summary>
-    public PlcTagType Type { get; }
+    public PlcValueType Type { get; }
 
     /// <summary>The unit, or null for the reading client's own unit.</summary>
     public int? Unit { get; }

@@ -143,12 +143,12 @@ public sealed class ReadPlan
 
     private static object Decode(PlcTag tag, ushort[] raw, WordOrder order) => tag.Type switch
     {
-        PlcTagType.Word => raw[0],
-        PlcTagType.Int16 => PlcWords.ToInt16(raw[0]),
-        PlcTagType.Int32 => PlcWords.ReadInt32(raw, order),
-        PlcTagType.UInt32 => PlcWords.ReadUInt32(raw, order),
-        PlcTagType.Float => PlcWords.ReadSingle(raw, order),
-        PlcTagType.Bcd => PlcWords.FromBcd(raw[0]),
+        PlcValueType.Word or PlcValueType.UInt16 => raw[0],
+        PlcValueType.Int16 => PlcWords.ToInt16(raw[0]),
+        PlcValueType.Int32 => PlcWords.ReadInt32(raw, order),
+        PlcValueType.UInt32 => PlcWords.ReadUInt32(raw, order),
+        PlcValueType.Float => PlcWords.ReadSingle(raw, order),
+        PlcValueType.Bcd => PlcWords.FromBcd(raw[0]),
         _ => PlcWords.GetBit(raw[0], tag.Address.Bit),
     };
 }

@@ -33,8 +33,8 @@ public sealed class ReadManyTests
 
         var tags = new[]
         {
-            new PlcTag("D5"), new PlcTag("D9"), new PlcTag("D1500", PlcTagType.Int16), new PlcTag("H10.03", PlcTagType.Bit),
-            new PlcTag("E1_50", PlcTagType.Float), new PlcTag("C12"), new PlcTag("D7", unit: 5), new PlcTag("D3000"),
+            new PlcTag("D5"), new PlcTag("D9"), new PlcTag("D1500", PlcValueType.Int16), new PlcTag("H10.03", PlcValueType.Bit),
+            new PlcTag("E1_50", PlcValueType.Float), new PlcTag("C12"), new PlcTag("D7", unit: 5), new PlcTag("D3000"),
         };
         PlcTagValue[] values = await client.ReadManyAsync(tags);
         values.Select(v => v.Value).Should().Equal((ushort)35, (ushort)63, unchecked((short)10500), true, 2.25f, (ushort)0x42, (ushort)49, (ushort)0x4142);

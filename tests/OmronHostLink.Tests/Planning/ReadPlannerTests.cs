@@ -39,8 +39,8 @@ public class ReadPlannerTests
     {
         var tags = new[]
         {
-            new PlcTag("D100"), new PlcTag("D100"), new PlcTag("D100", PlcTagType.Int32), new PlcTag("D101", PlcTagType.Float),
-            new PlcTag("D100.03", PlcTagType.Bit),
+            new PlcTag("D100"), new PlcTag("D100"), new PlcTag("D100", PlcValueType.Int32), new PlcTag("D101", PlcValueType.Float),
+            new PlcTag("D100.03", PlcValueType.Bit),
         };
         ReadPlan plan = CMode.Plan(tags);
         plan.Reads.Should().ContainSingle();
@@ -150,11 +150,11 @@ public class ReadPlannerTests
     [Fact]
     public void Tags_check_their_type_against_the_address()
     {
-        FluentActions.Invoking(() => new PlcTag("D0", PlcTagType.Bit)).Should().Throw<ArgumentException>();
-        FluentActions.Invoking(() => new PlcTag("D0.01", PlcTagType.Word)).Should().Throw<ArgumentException>();
-        FluentActions.Invoking(() => new PlcTag("D32767", PlcTagType.Int32)).Should().Throw<ArgumentException>();
+        FluentActions.Invoking(() => new PlcTag("D0", PlcValueType.Bit)).Should().Throw<ArgumentException>();
+        FluentActions.Invoking(() => new PlcTag("D0.01", PlcValueType.Word)).Should().Throw<ArgumentException>();
+        FluentActions.Invoking(() => new PlcTag("D32767", PlcValueType.Int32)).Should().Throw<ArgumentException>();
         FluentActions.Invoking(() => new PlcTag("D0", unit: 32)).Should().Throw<ArgumentOutOfRangeException>();
-        new PlcTag("D0", PlcTagType.Float).WordCount.Should().Be(2);
+        new PlcTag("D0", PlcValueType.Float).WordCount.Should().Be(2);
     }
 
     [Fact]
@@ -162,9 +162,9 @@ public class ReadPlannerTests
     {
         var tags = new[]
         {
-            new PlcTag("D100", PlcTagType.Word), new PlcTag("D101", PlcTagType.Int16), new PlcTag("D102", PlcTagType.Int32),
-            new PlcTag("D104", PlcTagType.Float), new PlcTag("D106", PlcTagType.Bcd), new PlcTag("D107.15", PlcTagType.Bit),
-            new PlcTag("D102", PlcTagType.UInt32),
+            new PlcTag("D100", PlcValueType.Word), new PlcTag("D101", PlcValueType.Int16), new PlcTag("D102", PlcValueType.Int32),
+            new PlcTag("D104", PlcValueType.Float), new PlcTag("D106", PlcValueType.Bcd), new PlcTag("D107.15", PlcValueType.Bit),
+            new PlcTag("D102", PlcValueType.UInt32),
         };
         ReadPlan plan = CMode.Plan(tags);
         plan.Reads.Should().ContainSingle();
@@ -197,11 +197,11 @@ public class ReadPlannerTests
             var tags = new List<PlcTag>();
             for (int i = 0; i < 60; i++)
             {
-                PlcTagType type = (PlcTagType)random.Next(7);
+                PlcValueType type = (PlcValueType)random.Next(7);
                 string area = new[] { "D", "H", "CIO", "A", "E1_" }[random.Next(5)];
                 int max = area switch { "H" => 510, "A" => 958, "CIO" => 6142, _ => 9998 };
                 int word = random.Next(0, max);
-                string address = type == PlcTagType.Bit ? $"{area}{word}.{random.Next(16)}" : $"{area}{word}";
+                string address = type == PlcValueType.Bit ? $"{area}{word}.{random.Next(16)}" : $"{area}{word}";
                 tags.Add(new PlcTag(address, type, random.Next(3) == 0 ? 2 : null));
             }
 

@@ -6,7 +6,7 @@ public sealed class PollValueTypesTests
 {
     private static string Format(string type, string address, int count, params ushort[] words)
     {
-        PollValueTypes.TryParse(type, out PollValueType t).Should().BeTrue();
+        PollValueTypes.TryParse(type, out PlcValueType t).Should().BeTrue();
         PlcAddress a = PlcAddress.Parse(address);
         PollValueTypes.WordCount(t, a, count).Should().Be(words.Length);
         return PollValueTypes.Format(t, a, count, words, WordOrder.LowWordFirst);
