@@ -56,7 +56,7 @@ internal static class HostLinkClientSettingsMapper
         return problems;
     }
 
-    private static HostLinkClientOptions ToClientOptions(HostLinkClientSettings s)
+    internal static HostLinkClientOptions ToClientOptions(HostLinkClientSettings s)
     {
         var options = new HostLinkClientOptions();
         options.UnitNumber = s.UnitNumber ?? options.UnitNumber;
@@ -76,7 +76,7 @@ internal static class HostLinkClientSettingsMapper
         return options;
     }
 
-    private static SerialLineSettings ToSerialLineSettings(HostLinkClientSettings settings)
+    internal static SerialLineSettings ToSerialLineSettings(HostLinkClientSettings settings)
     {
         HostLinkSerialSettings s = settings.Serial;
         var line = new SerialLineSettings();
