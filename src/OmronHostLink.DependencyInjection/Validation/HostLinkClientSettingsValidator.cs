@@ -62,19 +62,14 @@ internal sealed class HostLinkClientSettingsValidator : IValidateOptions<HostLin
 
     private static void CheckLink(HostLinkClientSettings s, List<SettingsProblem> problems)
     {
-        // A key that could not be read is reported already; saying that no link is set as well would mislead.
-        if (problems.Any(p => p.Key.Length == 0 || p.IsAtOrBelow("Tcp") || p.IsAtOrBelow("Serial:PortName") || p.Key.Equals("Serial", StringComparison.OrdinalIgnoreCase)))
-        {
-            return;
-        }
-
-        bool serialPort = s.Serial.PortName is not null;
-        bool tcp = s.Tcp.Host is not null || s.Tcp.Port is not null || s.Tcp.ConnectTimeout is not null;
+        // A key that is written but could not be read still says which link was meant.
+        bool serialPort = s.Serial.PortName is not null || problems.Any(p => p.IsAtOrBelow("Serial:PortName"));
+        bool tcp = s.Tcp.Host is not null || s.Tcp.Port is not null || s.Tcp.ConnectTimeout is not null || problems.Any(p => p.IsAtOrBelow("Tcp"));
         if (serialPort && tcp)
         {
             problems.Add(new SettingsProblem("Tcp", "cannot be combined with Serial:PortName; a client uses either a local serial port or a serial-device server"));
         }
-        else if (!serialPort && !tcp)
+        else if (!serialPort && !tcp && !problems.Any(p => p.Key.Length == 0 || p.Key.Equals("Serial", StringComparison.OrdinalIgnoreCase)))
         {
             problems.Add(new SettingsProblem("", "no link is set; write Serial:PortName (a serial port such as COM3 or /dev/ttyUSB0) or Tcp (host:port of a serial-device server)"));
         }

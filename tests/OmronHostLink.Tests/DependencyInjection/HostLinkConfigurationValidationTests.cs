@@ -126,6 +126,17 @@ public sealed class HostLinkConfigurationValidationTests
     }
 
     [Fact]
+    public async Task Both_links_are_refused_even_when_the_TCP_one_cannot_be_read()
+    {
+        IReadOnlyList<string> failures = await JsonHost.StartFailuresAsync(
+            OneClient("""  "Serial": { "PortName": "/dev/ttyUSB0" }, "Tcp": "plc" """), AllClients);
+
+        failures.Should().BeEquivalentTo(
+            $"{Line1}:Tcp: 'plc' is not host:port (e.g. 10.0.0.5:4001), or write a section with Host and Port",
+            $"{Line1}:Tcp: cannot be combined with Serial:PortName; a client uses either a local serial port or a serial-device server");
+    }
+
+    [Fact]
     public async Task A_client_with_no_link_is_refused()
     {
         IReadOnlyList<string> failures = await JsonHost.StartFailuresAsync(
