@@ -2,7 +2,7 @@ using Microsoft.Extensions.Hosting;
 using Microsoft.Extensions.Options;
 using OmronHostLink.Worker;
 
-// Ctrl+C, SIGTERM and (with -p:WindowsService=true) a service stop all end here through the host's lifetime.
+// Ctrl+C, SIGTERM (systemctl stop) and a Windows service stop all end here through the host's lifetime.
 HostApplicationBuilder builder = WorkerHost.CreateBuilder(args);
 using IHost host = builder.Build();
 try

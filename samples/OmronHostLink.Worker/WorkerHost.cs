@@ -11,6 +11,9 @@ namespace OmronHostLink.Worker;
 /// <summary>Builds the worker's generic host: options, validation, the optional simulator and the link pollers.</summary>
 public static class WorkerHost
 {
+    /// <summary>The Windows service name (deploy/install-service.ps1 registers the service under it).</summary>
+    public const string ServiceName = "OmronHostLink.Worker";
+
     /// <summary>A builder with the usual defaults (appsettings.json, appsettings.{Environment}.json, environment variables, command line, console logging).</summary>
     public static HostApplicationBuilder CreateBuilder(string[] args)
         => Configure(Host.CreateApplicationBuilder(args));
@@ -45,15 +48,12 @@ public static class WorkerHost
         services.AddSingleton<PollingHostedService>();
         services.AddHostedService(sp => sp.GetRequiredService<PollingHostedService>());
 
-#if WINDOWS_SERVICE
-        // Built with -p:WindowsService=true on a machine whose package source has Microsoft.Extensions.Hosting.WindowsServices:
-        // reports SERVICE_RUNNING/STOPPED to the service control manager and logs to the event log.
-        services.AddWindowsService(o => o.ServiceName = "OmronHostLink.Worker");
-#endif
-#if SYSTEMD
-        // Built with -p:Systemd=true where Microsoft.Extensions.Hosting.Systemd is available: sd_notify for Type=notify units.
+        // Each is a no-op unless its service manager started the process. Windows: reports SERVICE_RUNNING/STOPPED to
+        // the service control manager, turns a service stop into a graceful shutdown and logs to the event log.
+        // systemd: sd_notify READY=1 once every hosted service has started and STOPPING=1 on SIGTERM (Type=notify),
+        // and journald-style console logs.
+        services.AddWindowsService(o => o.ServiceName = ServiceName);
         services.AddSystemd();
-#endif
         return builder;
     }
 }

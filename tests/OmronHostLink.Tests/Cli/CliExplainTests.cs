@@ -1,5 +1,6 @@
 using System.Text.Json;
 using OmronHostLink.Tests.Infrastructure;
+using OmronHostLink.Tests.Vectors;
 
 namespace OmronHostLink.Tests.Cli;
 
@@ -8,8 +9,7 @@ public sealed class CliExplainTests
 {
     private static readonly Lazy<JsonElement[]> Vectors = new(() =>
     {
-        string path = Path.Combine(AppContext.BaseDirectory, "vectors", "vectors.json");
-        using JsonDocument doc = JsonDocument.Parse(File.ReadAllText(path));
+        using JsonDocument doc = JsonDocument.Parse(File.ReadAllText(GoldenVectors.FilePath));
         return doc.RootElement.EnumerateArray().Select(v => v.Clone()).ToArray();
     });
 

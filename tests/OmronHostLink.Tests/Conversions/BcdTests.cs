@@ -1,5 +1,6 @@
 using FsCheck;
 using FsCheck.Fluent;
+using FsCheck.Xunit;
 
 namespace OmronHostLink.Tests.Conversions;
 
@@ -98,17 +99,16 @@ public class BcdTests
         valid.Should().Be(10000);
     }
 
-    [Fact]
-    public void Two_word_BCD_round_trips_in_both_orders() =>
+    [Property]
+    public Property Two_word_BCD_round_trips_in_both_orders() =>
         Prop.ForAll(
-                Gen.Choose(0, PlcWords.MaxBcd32).ToArbitrary(),
-                Gen.Elements(WordOrder.LowWordFirst, WordOrder.HighWordFirst).ToArbitrary(),
-                (value, order) =>
-                {
-                    var words = new ushort[2];
-                    PlcWords.WriteBcd32(value, words, order);
-                    return PlcWords.ReadBcd32(words, order) == value
-                        && PlcWords.FromBcd32(PlcWords.ToBcd32(value)) == value;
-                })
-            .QuickCheckThrowOnFailure();
+            Gen.Choose(0, PlcWords.MaxBcd32).ToArbitrary(),
+            Gen.Elements(WordOrder.LowWordFirst, WordOrder.HighWordFirst).ToArbitrary(),
+            (value, order) =>
+            {
+                var words = new ushort[2];
+                PlcWords.WriteBcd32(value, words, order);
+                return PlcWords.ReadBcd32(words, order) == value
+                    && PlcWords.FromBcd32(PlcWords.ToBcd32(value)) == value;
+            });
 }

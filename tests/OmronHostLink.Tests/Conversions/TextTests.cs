@@ -1,5 +1,6 @@
 using FsCheck;
 using FsCheck.Fluent;
+using FsCheck.Xunit;
 
 namespace OmronHostLink.Tests.Conversions;
 
@@ -91,14 +92,13 @@ public class TextTests
         PlcWords.ReadString(PlcWords.FromString(text)).Should().Be(text);
     }
 
-    [Fact]
-    public void ASCII_text_without_NUL_round_trips() =>
+    [Property]
+    public Property ASCII_text_without_NUL_round_trips() =>
         Prop.ForAll(
-                Gen.Choose(1, 0x7F).Select(c => (char)c).ArrayOf().Select(chars => new string(chars)).ToArbitrary(),
-                text =>
-                {
-                    var words = PlcWords.FromString(text);
-                    return words.Length == PlcWords.WordsForString(text.Length) && PlcWords.ReadString(words) == text;
-                })
-            .QuickCheckThrowOnFailure();
+            Gen.Choose(1, 0x7F).Select(c => (char)c).ArrayOf().Select(chars => new string(chars)).ToArbitrary(),
+            text =>
+            {
+                var words = PlcWords.FromString(text);
+                return words.Length == PlcWords.WordsForString(text.Length) && PlcWords.ReadString(words) == text;
+            });
 }

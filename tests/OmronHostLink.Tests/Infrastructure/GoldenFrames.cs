@@ -3,7 +3,7 @@ using OmronHostLink.Tests.Vectors;
 
 namespace OmronHostLink.Tests.Infrastructure;
 
-/// <summary>Frames taken from ../shared/hostlink/vectors.json by name, for scripted-PLC tests.</summary>
+/// <summary>Frames taken from the golden vectors (Vectors/vectors.json) by name, for scripted-PLC tests.</summary>
 internal static class GoldenFrames
 {
     public static string[] Frames(string name) => GoldenVectors.Get(name).Frames;

@@ -6,7 +6,7 @@ namespace OmronHostLink.Tests.Vectors;
 /// <summary>The published/constructed FCS pair of one frame of a vector.</summary>
 public sealed record FcsDetail(string? Published, string? Computed);
 
-/// <summary>One golden vector of ../shared/hostlink/vectors.json.</summary>
+/// <summary>One golden vector of Vectors/vectors.json (a copy of ../shared/hostlink/vectors.json).</summary>
 public sealed record Vector(
     string Name,
     string Direction,
@@ -36,7 +36,7 @@ public sealed record Vector(
 }
 
 /// <summary>
-/// Loads the golden vectors once (copied beside the test assembly as vectors/vectors.json) and serves them to
+/// Loads the golden vectors once (the repository's copy, placed beside the test assembly as Vectors/vectors.json) and serves them to
 /// [MemberData] as vector names, filtered by any predicate.
 /// </summary>
 public static class GoldenVectors
@@ -44,7 +44,7 @@ public static class GoldenVectors
     private static readonly Lazy<IReadOnlyList<Vector>> Loaded = new(Load);
 
     /// <summary>Where the copy of vectors.json lives.</summary>
-    public static string FilePath => Path.Combine(AppContext.BaseDirectory, "vectors", "vectors.json");
+    public static string FilePath => Path.Combine(AppContext.BaseDirectory, "Vectors", "vectors.json");
 
     /// <summary>Every vector, in file order.</summary>
     public static IReadOnlyList<Vector> All => Loaded.Value;
@@ -76,7 +76,7 @@ public static class GoldenVectors
     {
         if (!File.Exists(FilePath))
         {
-            throw new FileNotFoundException($"Golden vectors not found at {FilePath}; the test project copies ../shared/hostlink/vectors.json there at build time.", FilePath);
+            throw new FileNotFoundException($"Golden vectors not found at {FilePath}; the test project copies its Vectors/vectors.json there at build time.", FilePath);
         }
 
         using JsonDocument doc = JsonDocument.Parse(File.ReadAllBytes(FilePath));
