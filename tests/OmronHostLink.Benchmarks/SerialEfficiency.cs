@@ -53,7 +53,7 @@ internal static class SerialEfficiency
         Console.WriteLine($"# Serial: {Environment.ProcessorCount} cores, {System.Runtime.InteropServices.RuntimeInformation.OSDescription}, {System.Runtime.InteropServices.RuntimeInformation.FrameworkDescription}");
         Console.WriteLine($"# socat pty pair; simulator paces its answers at the baud rate (11 bits/char), turnaround 0; {rounds} rounds × {reads} reads per variant and size; ms per read");
         Console.WriteLine();
-        Console.WriteLine("| Line | Words | Answer on the wire ms | Variant | Median ms | p10–p90 ms | Ours / variant (time) |");
+        Console.WriteLine("| Line | Words | Answer on the wire ms | Variant | Median ms | p10–p90 ms | Ours ÷ variant, time (ours' speed as % of it) |");
         Console.WriteLine("|---|---|---|---|---|---|---|");
         foreach (int baud in new[] { 9600, 115200 })
         {
@@ -118,7 +118,7 @@ internal static class SerialEfficiency
                 for (int v = 0; v < variants.Length; v++)
                 {
                     double median = Percentile(samples[v, s], 0.5);
-                    string ratio = v == 0 ? "—" : $"{ours / median:0.000} ({median / ours:P1} speed)";
+                    string ratio = v == 0 ? "—" : $"{ours / median:0.000} ({median / ours:P1})";
                     Console.WriteLine($"| {baud} 7E2 | {sizes[s]} | {wire:0.00} | {variants[v].Name} | {median:0.00} | {Percentile(samples[v, s], 0.1):0.00}–{Percentile(samples[v, s], 0.9):0.00} | {ratio} |");
                 }
             }
