@@ -1,7 +1,6 @@
 using System.Diagnostics;
 using System.Globalization;
 using System.IO.Ports;
-using OmronHostLink.Link;
 using OmronHostLink.Protocol.CMode;
 using OmronHostLink.Simulator;
 using OmronHostLink.Simulator.Hosting;
@@ -47,7 +46,6 @@ internal static class SerialEfficiency
         [
             ("ours: ReadWordsAsync, System.IO.Ports transport", OpenOursAsync),
             ("minimal loop on SerialPort.BaseStream", OpenMinimalAsync),
-            ("old hand-written stack: ReadWordsAsync on SerialPortStream", OpenOldStackAsync),
         ];
 
         Console.WriteLine($"# Serial: {Environment.ProcessorCount} cores, {System.Runtime.InteropServices.RuntimeInformation.OSDescription}, {System.Runtime.InteropServices.RuntimeInformation.FrameworkDescription}");
@@ -173,17 +171,6 @@ internal static class SerialEfficiency
                 }
             }
         });
-    }
-
-    private static Task<Func<int, Task>> OpenOldStackAsync(string port, int baud, Stack<IAsyncDisposable> cleanup)
-    {
-        // 8N as on the pty (the old stack applies what it is given and a pty may refuse 7E2); deadlines from 7E2 timing.
-        Stream stream = SerialPortStream.Open(new SerialLineSettings { PortName = port, BaudRate = baud, DataBits = 8, Parity = SerialParity.None });
-        HostLinkClient client = HostLinkClient.ForStream(
-            stream,
-            new HostLinkClientOptions { LineTiming = new LineTiming(baud, Bits), TurnaroundAllowance = TimeSpan.FromMilliseconds(200) });
-        cleanup.Push(client);
-        return Task.FromResult<Func<int, Task>>(words => client.ReadWordsAsync("D0", words).AsTask());
     }
 
     private sealed class Disposer(Action dispose) : IAsyncDisposable

@@ -111,7 +111,14 @@ internal sealed class SerialLineStream : Stream
         if (disposing && !_disposed)
         {
             _disposed = true;
-            _port.Dispose();
+            try
+            {
+                _port.Dispose();
+            }
+            catch (Exception e) when (e is IOException or UnauthorizedAccessException or ObjectDisposedException)
+            {
+                // Closing a port whose device is gone (a USB adapter unplugged) can fail on Windows: nothing is left to close.
+            }
         }
 
         base.Dispose(disposing);

@@ -104,4 +104,19 @@ public sealed class CliSerialProcessTests
         r.ExitCode.Should().Be(4, r.ToString());
         r.Err.Trim().Should().Be($"Cannot open serial port {missing}: it does not exist. Check that the device is plugged in and the path is right (ls /dev/ttyUSB* /dev/ttyACM* /dev/serial/by-id/).");
     }
+
+    [Fact]
+    public async Task Ports_lists_only_existing_serial_devices_sorted_and_never_ptys()
+    {
+        await using var pair = await SocatPtyPair.StartAsync();
+
+        CliResult r = await Cli.RunAsync("ports", "--json");
+
+        r.ExitCode.Should().Be(0, r.ToString());
+        string[] names = r.Json().GetProperty("ports").EnumerateArray().Select(p => p.GetString()!).ToArray();
+        names.Where(n => !File.Exists(n)).Should().BeEmpty("every listed port exists");
+        names.Should().NotContain(n => n.StartsWith("/dev/pts/", StringComparison.Ordinal));
+        names.Should().NotContain([pair.PathA, pair.PathB]);
+        names.Should().BeInAscendingOrder(StringComparer.Ordinal);
+    }
 }
