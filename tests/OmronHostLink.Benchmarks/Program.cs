@@ -2,10 +2,16 @@ using BenchmarkDotNet.Running;
 using OmronHostLink.Benchmarks;
 
 // dotnet run -c Release --project tests/OmronHostLink.Benchmarks -- wire [--runs N] [--no-plan | --plan-only]
+// dotnet run -c Release --project tests/OmronHostLink.Benchmarks -- serial [--rounds N] [--reads N]
 // dotnet run -c Release --project tests/OmronHostLink.Benchmarks -- --filter '*'
 if (args.Length > 0 && args[0] == "wire")
 {
     return await WireEfficiency.RunAsync(args[1..]);
+}
+
+if (args.Length > 0 && args[0] == "serial")
+{
+    return await SerialEfficiency.RunAsync(args[1..]);
 }
 
 BenchmarkSwitcher.FromAssembly(typeof(ProtocolBenchmarks).Assembly).Run(args);

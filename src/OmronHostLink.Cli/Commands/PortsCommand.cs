@@ -1,5 +1,5 @@
 using System.CommandLine;
-using OmronHostLink.Transports;
+using System.IO.Ports;
 
 namespace OmronHostLink.Cli.Commands;
 
@@ -13,11 +13,12 @@ internal static class PortsCommand
         command.Add(json);
         context.SetAction(command, json, (_, output, _) =>
         {
-            IReadOnlyList<string> ports = SerialPortStream.GetPortNames();
+            string[] ports = SerialPort.GetPortNames();
+            Array.Sort(ports, StringComparer.Ordinal);
             output.Result(
                 w =>
                 {
-                    if (ports.Count == 0)
+                    if (ports.Length == 0)
                     {
                         w.WriteLine("No serial ports found. Ptys and socat links are never listed: pass their path to --port.");
                     }

@@ -125,7 +125,8 @@ internal static class SimulateCommand
             string state = $"{StatusCommand.ModeName(plc.Mode)} mode, model code {plc.ModelCode:X2}";
             if (serial is not null)
             {
-                await using var host = new SerialSimulatorHost(plc, () => OpenSerial(serial));
+                // The host reopens the port when it is lost (socat restarted, an adapter unplugged) until Ctrl+C.
+                await using var host = new SerialSimulatorHost(plc, serial, output.Note);
                 await host.StartAsync(ct).ConfigureAwait(false);
                 output.Line($"Simulating units {unitList} ({state}) on {serial}. Ctrl+C stops.");
                 await Task.WhenAny(host.Completion, Task.Delay(Timeout.Infinite, ct)).ConfigureAwait(false);
@@ -173,18 +174,6 @@ internal static class SimulateCommand
         }
 
         return (text[..colon].Trim('[', ']'), p);
-    }
-
-    private static Stream OpenSerial(SerialLineSettings settings)
-    {
-        try
-        {
-            return SerialPortStream.Open(settings);
-        }
-        catch (Exception e) when (e is IOException or UnauthorizedAccessException or PlatformNotSupportedException)
-        {
-            throw new HostLinkConnectionException($"Cannot open serial port {settings.PortName}: {e.Message}", e);
-        }
     }
 
     private static Option<double> Probability(string name, string description)

@@ -1,22 +1,29 @@
+using OmronHostLink.Transports;
+
 namespace OmronHostLink.Simulator.Hosting;
 
 /// <summary>
-/// Serves a <see cref="VirtualPlc"/> over a serial line: opens the stream (for example a serial port or one end of a
-/// pty pair made by socat), runs one Host Link session on it until it ends or the host stops, and closes it.
+/// Serves a <see cref="VirtualPlc"/> over a serial line: a serial port or pseudo-terminal (one end of a socat pair) by
+/// its name, or any stream from a factory.
 /// </summary>
 /// <remarks>
-/// The stream comes from a factory so that any transport fits: a <c>System.IO.Ports.SerialPort.BaseStream</c>, the
-/// package's serial transport, or a <see cref="FileStream"/> on a pty.
+/// Given a port name, the host opens it with the package's <see cref="SerialTransport"/> (System.IO.Ports; a
+/// pseudo-terminal in the 8-bit framing it holds, so a simulator restarted on the same pty opens it again) and keeps
+/// serving it until stopped: when the device hangs up (socat restarted, an adapter unplugged) it closes the port and
+/// opens the same name again as soon as it is back. Given a stream factory, it runs one session on the stream, and
+/// <see cref="Completion"/> completes when that stream ends.
 /// </remarks>
 public sealed class SerialSimulatorHost : IAsyncDisposable
 {
     private readonly VirtualPlc _plc;
-    private readonly Func<Stream> _open;
+    private readonly Func<Stream>? _open;
+    private readonly SerialTransport? _transport;
+    private readonly Action<string>? _report;
     private CancellationTokenSource? _stopping;
     private Task? _session;
     private Stream? _stream;
 
-    /// <summary>Creates the host.</summary>
+    /// <summary>Creates a host that runs one session on the stream <paramref name="openStream"/> returns.</summary>
     /// <param name="plc">The PLC to serve.</param>
     /// <param name="openStream">Opens the serial line; called by <see cref="StartAsync"/>.</param>
     public SerialSimulatorHost(VirtualPlc plc, Func<Stream> openStream)
@@ -27,14 +34,39 @@ public sealed class SerialSimulatorHost : IAsyncDisposable
         _open = openStream;
     }
 
-    /// <summary>A task that completes when the session ends (the line closed, or <see cref="StopAsync"/>).</summary>
+    /// <summary>Creates a host that serves the serial port <paramref name="settings"/> names until it is stopped, reopening it after it was lost.</summary>
+    /// <param name="plc">The PLC to serve.</param>
+    /// <param name="settings">The port and its line settings.</param>
+    /// <param name="report">Told, in a sentence, when the line is lost and when it is open again; may be null.</param>
+    /// <exception cref="ArgumentException">A setting is not valid.</exception>
+    public SerialSimulatorHost(VirtualPlc plc, SerialLineSettings settings, Action<string>? report = null)
+    {
+        ArgumentNullException.ThrowIfNull(plc);
+        ArgumentNullException.ThrowIfNull(settings);
+        _plc = plc;
+        _transport = new SerialTransport(settings);
+        _report = report;
+        Description = settings.ToString();
+    }
+
+    /// <summary>The port and its settings ("/dev/ttyUSB0 9600 7E2"), or "stream".</summary>
+    public string Description { get; } = "stream";
+
+    /// <summary>How long to wait before opening a lost port again, and between attempts while it is missing. Default 200 ms.</summary>
+    public TimeSpan ReopenInterval { get; init; } = TimeSpan.FromMilliseconds(200);
+
+    /// <summary>How many times the port was opened again after it was lost.</summary>
+    public int Reopened { get; private set; }
+
+    /// <summary>A task that completes when the host stops serving: after <see cref="StopAsync"/>, or when a factory's stream ends.</summary>
     public Task Completion => _session ?? Task.CompletedTask;
 
-    /// <summary>Opens the line and starts the session.</summary>
+    /// <summary>Opens the line and starts serving it.</summary>
     /// <param name="cancellationToken">Checked before the line is opened.</param>
     /// <returns>A completed task once the session runs.</returns>
     /// <exception cref="InvalidOperationException">The host is already started.</exception>
-    public Task StartAsync(CancellationToken cancellationToken = default)
+    /// <exception cref="HostLinkConnectionException">The serial port cannot be opened; the message names it and says why.</exception>
+    public async Task StartAsync(CancellationToken cancellationToken = default)
     {
         cancellationToken.ThrowIfCancellationRequested();
         if (_session is not null)
@@ -42,10 +74,17 @@ public sealed class SerialSimulatorHost : IAsyncDisposable
             throw new InvalidOperationException("The host is already started.");
         }
 
-        _stream = _open() ?? throw new InvalidOperationException("The stream factory returned null.");
         _stopping = new CancellationTokenSource();
-        _session = _plc.RunAsync(_stream, _stopping.Token);
-        return Task.CompletedTask;
+        if (_transport is not null)
+        {
+            Stream first = await _transport.OpenAsync(cancellationToken).ConfigureAwait(false);
+            _session = ServeAsync(first, _stopping.Token);
+        }
+        else
+        {
+            _stream = _open!() ?? throw new InvalidOperationException("The stream factory returned null.");
+            _session = _plc.RunAsync(_stream, _stopping.Token);
+        }
     }
 
     /// <summary>Ends the session and closes the line.</summary>
@@ -58,14 +97,23 @@ public sealed class SerialSimulatorHost : IAsyncDisposable
             return;
         }
 
-        _stopping!.Cancel();
+        await _stopping!.CancelAsync().ConfigureAwait(false);
         try
         {
             await _session.WaitAsync(cancellationToken).ConfigureAwait(false);
         }
         finally
         {
-            await _stream!.DisposeAsync().ConfigureAwait(false);
+            if (_stream is not null)
+            {
+                await _stream.DisposeAsync().ConfigureAwait(false);
+            }
+
+            if (_transport is not null)
+            {
+                await _transport.CloseAsync().ConfigureAwait(false);
+            }
+
             _stopping.Dispose();
             _stopping = null;
             _stream = null;
@@ -75,5 +123,58 @@ public sealed class SerialSimulatorHost : IAsyncDisposable
 
     /// <summary>Stops the host.</summary>
     /// <returns>A task that completes when the host has stopped.</returns>
-    public async ValueTask DisposeAsync() => await StopAsync().ConfigureAwait(false);
+    public async ValueTask DisposeAsync()
+    {
+        await StopAsync().ConfigureAwait(false);
+        if (_transport is not null)
+        {
+            await _transport.DisposeAsync().ConfigureAwait(false);
+        }
+    }
+
+    private async Task ServeAsync(Stream stream, CancellationToken stop)
+    {
+        SerialTransport transport = _transport!;
+        while (true)
+        {
+            await _plc.RunAsync(stream, stop).ConfigureAwait(false);
+            await transport.CloseAsync().ConfigureAwait(false);
+            if (stop.IsCancellationRequested)
+            {
+                return;
+            }
+
+            _report?.Invoke($"Lost {Description}; opening it again when it is back.");
+            Stream? again = await ReopenAsync(transport, stop).ConfigureAwait(false);
+            if (again is null)
+            {
+                return;
+            }
+
+            stream = again;
+            Reopened++;
+            _report?.Invoke($"Serving {Description} again.");
+        }
+    }
+
+    /// <summary>Opens the lost port again, retrying while it is missing; null when the host stops first.</summary>
+    private async Task<Stream?> ReopenAsync(SerialTransport transport, CancellationToken stop)
+    {
+        while (true)
+        {
+            try
+            {
+                await Task.Delay(ReopenInterval, stop).ConfigureAwait(false);
+                return await transport.OpenAsync(stop).ConfigureAwait(false);
+            }
+            catch (OperationCanceledException) when (stop.IsCancellationRequested)
+            {
+                return null;
+            }
+            catch (HostLinkConnectionException)
+            {
+                // Not back yet.
+            }
+        }
+    }
 }

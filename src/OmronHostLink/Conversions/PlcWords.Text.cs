@@ -96,13 +96,7 @@ public static partial class PlcWords
 #if NET
         return new string(chars);
 #else
-        unsafe
-        {
-            fixed (char* p = chars)
-            {
-                return new string(p, 0, length);
-            }
-        }
+        return new string(chars.ToArray());
 #endif
     }
 

@@ -107,6 +107,9 @@ public sealed class SerialLineSettings
         }
     }
 
+    /// <summary>A copy, so that a transport is not changed by later edits of the caller's instance.</summary>
+    internal SerialLineSettings Clone() => (SerialLineSettings)MemberwiseClone();
+
     /// <summary>Returns the settings in the usual short form, e.g. "/dev/ttyUSB0 9600 7E2".</summary>
     /// <returns>The port name, baud rate, data bits, parity letter and stop bits.</returns>
     public override string ToString()

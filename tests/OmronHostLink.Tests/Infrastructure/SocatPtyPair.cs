@@ -1,6 +1,7 @@
 using System.ComponentModel;
 using System.Diagnostics;
 using System.Text;
+using OmronHostLink.Transports;
 
 namespace OmronHostLink.Tests.Infrastructure;
 
@@ -11,7 +12,8 @@ namespace OmronHostLink.Tests.Infrastructure;
 /// <remarks>
 /// The paths are unique symbolic links in the temp directory. socat must be installed (Debian/Ubuntu:
 /// <c>apt-get install socat</c>); the tests that use this fail rather than skip without it, so CI cannot silently
-/// lose them. Ptys ignore baud rate and parity.
+/// lose them. Ptys ignore baud rate and parity. Tests open the ends through the package's serial transport
+/// (<see cref="OpenAsync(string, SerialLineSettings?)"/>), as a user's program would.
 /// </remarks>
 public sealed class SocatPtyPair : IAsyncDisposable
 {
@@ -34,6 +36,18 @@ public sealed class SocatPtyPair : IAsyncDisposable
 
     /// <summary>The other end.</summary>
     public string PathB { get; }
+
+    /// <summary>
+    /// Opens <paramref name="path"/> through the package's <see cref="SerialTransport"/> (System.IO.Ports) with
+    /// <paramref name="settings"/> (default: Host Link's 9600 7E2); disposing the stream closes the port.
+    /// </summary>
+    public static async Task<Stream> OpenAsync(string path, SerialLineSettings? settings = null)
+    {
+        settings ??= new SerialLineSettings();
+        settings.PortName = path;
+        var transport = new SerialTransport(settings);
+        return await transport.OpenAsync(CancellationToken.None).ConfigureAwait(false);
+    }
 
     /// <summary>What socat has logged so far (for failure messages).</summary>
     public string Log

@@ -46,7 +46,7 @@ public sealed class ClientSimulatorTests
             {
                 SocatPtyPair pty = await SocatPtyPair.StartAsync();
                 rig._parts.Add(pty);
-                var host = new SerialSimulatorHost(rig.Plc, () => SerialPortStream.Open(new SerialLineSettings { PortName = pty.PathB }));
+                var host = new SerialSimulatorHost(rig.Plc, new SerialLineSettings { PortName = pty.PathB });
                 await host.StartAsync();
                 rig._parts.Insert(0, host);
                 rig.Client = HostLinkClient.ForSerialPort(new SerialLineSettings { PortName = pty.PathA, BaudRate = 115200 }, Options(protocol));

@@ -76,7 +76,7 @@ public sealed class LinkLossTests
         try
         {
             // The PLC end: read the command, send half an answer, then the line vanishes while the client reads.
-            using Stream plcEnd = SerialPortStream.Open(new SerialLineSettings { PortName = pty.PathB });
+            using Stream plcEnd = await SocatPtyPair.OpenAsync(pty.PathB);
             Task<ushort[]> call = client.ReadWordsAsync("D0", 1).AsTask();
             await ReadLineAsync(plcEnd).WaitAsync(TimeSpan.FromSeconds(5));
             await plcEnd.WriteAsync(Encoding.ASCII.GetBytes("@00RD0012"));
@@ -85,7 +85,7 @@ public sealed class LinkLossTests
             await pty.CloseAsync();
 
             var e = await FluentActions.Awaiting(() => call).Should().ThrowAsync<HostLinkConnectionException>();
-            e.Which.Message.Should().Contain(pty.PathA);
+            e.Which.Message.Should().Contain(pty.PathA).And.Contain("hung up");
 
             // Gone: the next call says so, typed.
             await FluentActions.Awaiting(() => client.ReadWordsAsync("D0", 1).AsTask()).Should().ThrowAsync<HostLinkConnectionException>();
@@ -94,7 +94,7 @@ public sealed class LinkLossTests
             again = await pty.RestartAsync();
             var plc = new VirtualPlc();
             plc.WriteWord(PlcArea.Dm, 0, 0x4321);
-            await using var host = new SerialSimulatorHost(plc, () => SerialPortStream.Open(new SerialLineSettings { PortName = again.PathB }));
+            await using var host = new SerialSimulatorHost(plc, new SerialLineSettings { PortName = again.PathB });
             await host.StartAsync();
             (await client.ReadWordsAsync("D0", 1)).Should().Equal(new ushort[] { 0x4321 });
         }

@@ -154,16 +154,4 @@ public sealed class SerialLineSettingsTests
         settings.StopBits = SerialStopBits.One;
         settings.ToString().Should().Be("/dev/ttyUSB0 9600 7O1 XON/XOFF");
     }
-
-    [Fact]
-    public void SerialPortUnavailableException_message_names_the_port_and_the_reason()
-    {
-        var error = new SerialPortUnavailableException("/dev/ttyUSB9", "no such device (ENOENT)", 2, null);
-
-        error.Message.Should().Be("Cannot open serial port /dev/ttyUSB9: no such device (ENOENT)");
-        error.PortName.Should().Be("/dev/ttyUSB9");
-        error.Reason.Should().Be("no such device (ENOENT)");
-        error.NativeErrorCode.Should().Be(2);
-        new SerialPortUnavailableException("COM3", "in use").NativeErrorCode.Should().Be(0);
-    }
 }

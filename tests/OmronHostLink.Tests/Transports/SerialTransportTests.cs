@@ -1,19 +1,17 @@
 using System.Diagnostics;
-using System.Runtime.CompilerServices;
-using System.Runtime.InteropServices;
 using OmronHostLink.Tests.Infrastructure;
 using OmronHostLink.Transports;
 
 namespace OmronHostLink.Tests.Transports;
 
-/// <summary>The Linux serial transport over real pseudo-terminal pairs made by socat.</summary>
-public sealed class SerialPortStreamTests
+/// <summary>The serial transport (System.IO.Ports) over real pseudo-terminal pairs made by socat.</summary>
+public sealed class SerialTransportTests
 {
     // Upper bound for anything that should happen at once; a hang fails the test instead of the run.
     private static readonly TimeSpan Patience = TimeSpan.FromSeconds(10);
     private static readonly TimeSpan Prompt = TimeSpan.FromSeconds(1);
 
-    private static Stream OpenPort(string path) => SerialPortStream.Open(new SerialLineSettings { PortName = path });
+    private static Task<Stream> OpenPortAsync(string path) => SocatPtyPair.OpenAsync(path);
 
     private static async Task<byte[]> ReadExactlyAsync(Stream stream, int count)
     {
@@ -23,44 +21,50 @@ public sealed class SerialPortStreamTests
         return buffer;
     }
 
-    private static async Task WaitUntilAsync(Func<bool> condition, string what)
-    {
-        var clock = Stopwatch.StartNew();
-        while (!condition())
-        {
-            clock.Elapsed.Should().BeLessThan(Patience, $"waiting for {what}");
-            await Task.Delay(10);
-        }
-    }
-
     private static async Task AssertPendingAsync(Task task)
     {
-        // Give the read time to reach poll(); it must still be waiting.
+        // Give the read time to reach the port's I/O loop; it must still be waiting.
         await Task.Delay(100);
         task.IsCompleted.Should().BeFalse("nothing has been sent yet");
     }
 
     [Fact]
-    public async Task Open_returns_a_readable_writable_non_seekable_stream_that_can_discard_input()
+    public async Task Open_returns_a_readable_writable_non_seekable_stream()
     {
         await using var pair = await SocatPtyPair.StartAsync();
-        using var a = OpenPort(pair.PathA);
+        using Stream a = await OpenPortAsync(pair.PathA);
 
         a.CanRead.Should().BeTrue();
         a.CanWrite.Should().BeTrue();
         a.CanSeek.Should().BeFalse();
-        a.Should().BeAssignableTo<IInputDiscardable>();
         a.Invoking(s => s.Length).Should().Throw<NotSupportedException>();
         a.Invoking(s => s.Position).Should().Throw<NotSupportedException>();
         a.Invoking(s => s.Seek(0, SeekOrigin.Begin)).Should().Throw<NotSupportedException>();
     }
 
     [Fact]
+    public async Task A_pty_opens_with_the_default_7E2_settings_again_and_again_in_its_own_8_bit_framing()
+    {
+        // Some kernels refuse a pty any change of data bits or parity after its first user closed it (EINVAL).
+        await using var pair = await SocatPtyPair.StartAsync();
+        var settings = new SerialLineSettings { PortName = pair.PathA };
+        for (int i = 0; i < 3; i++)
+        {
+            var transport = new SerialTransport(settings);
+            Stream stream = await transport.OpenAsync(CancellationToken.None);
+            transport.IsPseudoTerminal.Should().BeTrue();
+            transport.LineTiming!.BitsPerCharacter.Should().Be(11, "deadlines keep the configured 7E2 character time");
+            await transport.CloseAsync();
+            stream.CanRead.Should().BeFalse("closing the transport closed the port");
+        }
+    }
+
+    [Fact]
     public async Task Bytes_written_on_A_arrive_on_B_intact_and_back()
     {
         await using var pair = await SocatPtyPair.StartAsync();
-        using var a = OpenPort(pair.PathA);
-        using var b = OpenPort(pair.PathB);
+        using Stream a = await OpenPortAsync(pair.PathA);
+        using Stream b = await OpenPortAsync(pair.PathB);
 
         byte[] command = "@00RD0000000151*\r"u8.ToArray();
         await a.WriteAsync(command);
@@ -75,8 +79,8 @@ public sealed class SerialPortStreamTests
     public async Task Two_kilobyte_blocks_with_every_byte_value_arrive_intact_in_both_directions()
     {
         await using var pair = await SocatPtyPair.StartAsync();
-        using var a = OpenPort(pair.PathA);
-        using var b = OpenPort(pair.PathB);
+        using Stream a = await OpenPortAsync(pair.PathA);
+        using Stream b = await OpenPortAsync(pair.PathB);
         byte[] block = Enumerable.Range(0, 2048).Select(i => (byte)(i * 7 + (i >> 8))).ToArray();
         block.Distinct().Should().HaveCount(256);
 
@@ -92,8 +96,8 @@ public sealed class SerialPortStreamTests
     public async Task Byte_at_a_time_writes_and_reads_in_both_directions()
     {
         await using var pair = await SocatPtyPair.StartAsync();
-        using var a = OpenPort(pair.PathA);
-        using var b = OpenPort(pair.PathB);
+        using Stream a = await OpenPortAsync(pair.PathA);
+        using Stream b = await OpenPortAsync(pair.PathB);
         byte[] message = "@00MS5A*\r"u8.ToArray();
 
         foreach (var (from, to) in new[] { (a, b), (b, a) })
@@ -113,14 +117,15 @@ public sealed class SerialPortStreamTests
     }
 
     [Fact]
-    public async Task Synchronous_Read_and_Write_work()
+    public async Task Synchronous_Read_Write_and_Flush_work()
     {
         await using var pair = await SocatPtyPair.StartAsync();
-        using var a = OpenPort(pair.PathA);
-        using var b = OpenPort(pair.PathB);
+        using Stream a = await OpenPortAsync(pair.PathA);
+        using Stream b = await OpenPortAsync(pair.PathB);
         byte[] message = "@00TS HELLO*\r"u8.ToArray();
 
         a.Write(message, 0, message.Length);
+        a.Flush();
         var buffer = new byte[message.Length];
         int total = 0;
         while (total < buffer.Length)
@@ -137,8 +142,8 @@ public sealed class SerialPortStreamTests
     public async Task Cancelling_a_pending_ReadAsync_completes_promptly_and_the_stream_stays_usable()
     {
         await using var pair = await SocatPtyPair.StartAsync();
-        using var a = OpenPort(pair.PathA);
-        using var b = OpenPort(pair.PathB);
+        using Stream a = await OpenPortAsync(pair.PathA);
+        using Stream b = await OpenPortAsync(pair.PathB);
 
         using var cts = new CancellationTokenSource();
         Task<int> read = b.ReadAsync(new byte[16], cts.Token).AsTask();
@@ -160,7 +165,7 @@ public sealed class SerialPortStreamTests
     public async Task A_read_timed_out_by_CancelAfter_completes_promptly_and_repeatedly()
     {
         await using var pair = await SocatPtyPair.StartAsync();
-        using var a = OpenPort(pair.PathA);
+        using Stream a = await OpenPortAsync(pair.PathA);
 
         for (int i = 0; i < 5; i++)
         {
@@ -175,8 +180,8 @@ public sealed class SerialPortStreamTests
     public async Task An_already_cancelled_token_fails_ReadAsync_without_consuming_data()
     {
         await using var pair = await SocatPtyPair.StartAsync();
-        using var a = OpenPort(pair.PathA);
-        using var b = OpenPort(pair.PathB);
+        using Stream a = await OpenPortAsync(pair.PathA);
+        using Stream b = await OpenPortAsync(pair.PathB);
         await a.WriteAsync("X"u8.ToArray());
 
         await b.Invoking(s => s.ReadAsync(new byte[1], new CancellationToken(canceled: true)).AsTask())
@@ -185,28 +190,10 @@ public sealed class SerialPortStreamTests
     }
 
     [Fact]
-    public async Task DiscardInput_drops_pending_bytes()
-    {
-        await using var pair = await SocatPtyPair.StartAsync();
-        using var a = OpenPort(pair.PathA);
-        using var b = OpenPort(pair.PathB);
-
-        byte[] stale = "@00RD00STALE*\r"u8.ToArray();
-        await a.WriteAsync(stale);
-        await WaitUntilAsync(() => BytesToRead(b) == stale.Length, "the stale bytes to arrive");
-
-        ((IInputDiscardable)b).DiscardInput();
-        BytesToRead(b).Should().Be(0);
-
-        await a.WriteAsync("FRESH"u8.ToArray());
-        (await ReadExactlyAsync(b, 5)).Should().Equal("FRESH"u8.ToArray());
-    }
-
-    [Fact]
     public async Task Dispose_during_a_pending_read_completes_it()
     {
         await using var pair = await SocatPtyPair.StartAsync();
-        var a = OpenPort(pair.PathA);
+        Stream a = await OpenPortAsync(pair.PathA);
         Task<int> read = a.ReadAsync(new byte[16]).AsTask();
         await AssertPendingAsync(read);
 
@@ -218,16 +205,19 @@ public sealed class SerialPortStreamTests
     }
 
     [Fact]
-    public async Task Dispose_during_a_read_with_a_cancellable_token_completes_it()
+    public async Task Closing_the_transport_during_a_read_with_a_cancellable_token_completes_it()
     {
         await using var pair = await SocatPtyPair.StartAsync();
-        var a = OpenPort(pair.PathA);
+        var transport = new SerialTransport(new SerialLineSettings { PortName = pair.PathA });
+        Stream a = await transport.OpenAsync(CancellationToken.None);
         using var cts = new CancellationTokenSource();
         Task<int> read = a.ReadAsync(new byte[16], cts.Token).AsTask();
         await AssertPendingAsync(read);
 
-        a.Dispose();
+        var clock = Stopwatch.StartNew();
+        await transport.CloseAsync();
         Exception? error = await Record.ExceptionAsync(() => read.WaitAsync(Patience));
+        clock.Elapsed.Should().BeLessThan(Prompt);
         error.Should().BeOfType<ObjectDisposedException>();
     }
 
@@ -235,7 +225,7 @@ public sealed class SerialPortStreamTests
     public async Task Operations_after_Dispose_throw_ObjectDisposedException()
     {
         await using var pair = await SocatPtyPair.StartAsync();
-        var a = OpenPort(pair.PathA);
+        Stream a = await OpenPortAsync(pair.PathA);
         a.Dispose();
         a.Dispose(); // twice is harmless
 
@@ -243,28 +233,28 @@ public sealed class SerialPortStreamTests
         a.CanWrite.Should().BeFalse();
         await a.Invoking(s => s.ReadAsync(new byte[1]).AsTask()).Should().ThrowAsync<ObjectDisposedException>();
         await a.Invoking(s => s.WriteAsync(new byte[1]).AsTask()).Should().ThrowAsync<ObjectDisposedException>();
-        a.Invoking(s => ((IInputDiscardable)s).DiscardInput()).Should().Throw<ObjectDisposedException>();
+        a.Invoking(s => s.Flush()).Should().Throw<ObjectDisposedException>();
     }
 
     [Fact]
-    public async Task Killing_socat_during_a_read_surfaces_IOException()
+    public async Task Killing_socat_during_a_read_surfaces_IOException_saying_the_device_hung_up()
     {
         await using var pair = await SocatPtyPair.StartAsync();
-        using var a = OpenPort(pair.PathA);
+        using Stream a = await OpenPortAsync(pair.PathA);
         Task<int> read = a.ReadAsync(new byte[16]).AsTask();
         await AssertPendingAsync(read);
 
         await pair.CloseAsync();
 
         Exception? error = await Record.ExceptionAsync(() => read.WaitAsync(Patience));
-        error.Should().BeOfType<IOException>().Which.Message.Should().Contain(pair.PathA).And.Contain("closed or lost");
+        error.Should().BeOfType<IOException>().Which.Message.Should().Contain("hung up").And.Contain("pseudo-terminal");
     }
 
     [Fact]
     public async Task After_the_link_is_lost_every_read_and_write_throws_IOException_without_spinning()
     {
         await using var pair = await SocatPtyPair.StartAsync();
-        using var a = OpenPort(pair.PathA);
+        using Stream a = await OpenPortAsync(pair.PathA);
         await pair.CloseAsync();
 
         var clock = Stopwatch.StartNew();
@@ -281,8 +271,8 @@ public sealed class SerialPortStreamTests
     public async Task A_WriteAsync_blocked_because_nobody_reads_honours_cancellation()
     {
         await using var pair = await SocatPtyPair.StartAsync();
-        using var a = OpenPort(pair.PathA);
-        using var b = OpenPort(pair.PathB); // open but never read: the pty buffers and socat fill up
+        using Stream a = await OpenPortAsync(pair.PathA);
+        using Stream b = await OpenPortAsync(pair.PathB); // open but never read: the pty buffers and socat fill up
 
         using var cts = new CancellationTokenSource();
         Task write = a.WriteAsync(new byte[4 * 1024 * 1024], cts.Token).AsTask();
@@ -296,70 +286,39 @@ public sealed class SerialPortStreamTests
     }
 
     [Fact]
-    public void Opening_a_missing_path_throws_SerialPortUnavailableException_naming_it()
-    {
-        const string path = "/tmp/does-not-exist-xyz";
-        var error = FluentActions.Invoking(() => OpenPort(path)).Should().Throw<SerialPortUnavailableException>().Which;
-
-        error.Message.Should().Contain(path).And.Contain("ENOENT");
-        error.PortName.Should().Be(path);
-        error.NativeErrorCode.Should().Be(2);
-        error.Should().BeAssignableTo<IOException>();
-    }
-
-    [Fact]
-    public void Opening_a_regular_file_throws_SerialPortUnavailableException_not_a_serial_device()
-    {
-        string path = Path.GetTempFileName();
-        try
-        {
-            FluentActions.Invoking(() => OpenPort(path)).Should().Throw<SerialPortUnavailableException>()
-                .Which.Message.Should().Contain(path).And.Contain("ENOTTY");
-        }
-        finally
-        {
-            File.Delete(path);
-        }
-    }
-
-    [Fact]
-    public async Task Asking_for_DTR_on_a_pty_fails_with_a_clear_message()
+    public async Task The_transport_reopens_the_port_after_CloseAsync_and_a_lost_stream_is_replaced()
     {
         await using var pair = await SocatPtyPair.StartAsync();
-        var settings = new SerialLineSettings { PortName = pair.PathA, DtrEnable = true };
+        await using var transport = new SerialTransport(new SerialLineSettings { PortName = pair.PathA });
+        using Stream b = await OpenPortAsync(pair.PathB);
 
-        FluentActions.Invoking(() => SerialPortStream.Open(settings)).Should().Throw<SerialPortUnavailableException>()
-            .Which.Message.Should().Contain(pair.PathA).And.Contain("DTR");
+        Stream first = await transport.OpenAsync(CancellationToken.None);
+        (await transport.OpenAsync(CancellationToken.None)).Should().BeSameAs(first, "an open port is handed out again");
+        await transport.CloseAsync();
+
+        Stream second = await transport.OpenAsync(CancellationToken.None);
+        second.Should().NotBeSameAs(first);
+        await second.WriteAsync("AGAIN"u8.ToArray());
+        (await ReadExactlyAsync(b, 5)).Should().Equal("AGAIN"u8.ToArray());
     }
 
     [Fact]
     public void Invalid_settings_are_rejected_before_anything_is_opened()
     {
-        FluentActions.Invoking(() => SerialPortStream.Open(new SerialLineSettings { PortName = "/dev/null", DataBits = 5 }))
+        FluentActions.Invoking(() => new SerialTransport(new SerialLineSettings { PortName = "/dev/null", DataBits = 5 }))
             .Should().Throw<ArgumentException>().WithMessage("*DataBits*");
-        FluentActions.Invoking(() => SerialPortStream.Open(null!)).Should().Throw<ArgumentNullException>();
+        FluentActions.Invoking(() => new SerialTransport(null!)).Should().Throw<ArgumentNullException>();
     }
 
     [Fact]
-    public void GetPortNames_lists_only_existing_serial_devices_and_never_ptys()
+    public void The_transport_keeps_its_own_copy_of_the_settings()
     {
-        IReadOnlyList<string> names = SerialPortStream.GetPortNames();
+        var settings = new SerialLineSettings { PortName = "/dev/ttyUSB0" };
+        var transport = new SerialTransport(settings);
+        settings.PortName = "/dev/ttyUSB1";
+        settings.BaudRate = 115200;
 
-        names.Should().OnlyContain(n => File.Exists(n));
-        names.Should().NotContain(n => n.StartsWith("/dev/pts/", StringComparison.Ordinal));
-        names.Should().BeInAscendingOrder(StringComparer.Ordinal);
+        transport.Description.Should().Be("/dev/ttyUSB0 9600 7E2");
+        transport.LineTiming!.BaudRate.Should().Be(9600);
     }
-
-    [Fact]
-    public void The_termios_struct_matches_the_glibc_layout()
-    {
-        // sizeof/offsetof from <termios.h> on x86_64 and arm64 Linux.
-        Unsafe.SizeOf<LinuxNative.Termios>().Should().Be(60);
-        Marshal.OffsetOf<LinuxNative.Termios>(nameof(LinuxNative.Termios.c_line)).ToInt32().Should().Be(16);
-        Marshal.OffsetOf<LinuxNative.Termios>(nameof(LinuxNative.Termios.c_ispeed)).ToInt32().Should().Be(52);
-        Marshal.OffsetOf<LinuxNative.Termios>(nameof(LinuxNative.Termios.c_ospeed)).ToInt32().Should().Be(56);
-        Unsafe.SizeOf<LinuxNative.PollFd>().Should().Be(8);
-    }
-
-    private static int BytesToRead(Stream stream) => ((LinuxSerialStream)stream).BytesToRead;
 }
