@@ -27,7 +27,7 @@ public sealed class HostLinkClientRegistrationTests
         var ovenPlc = new VirtualPlc(new VirtualPlcOptions { Units = new[] { 3 } });
         ovenPlc.WriteWords(PlcArea.Dm, 20000, new ushort[] { 0x0001, 0x0002 });
         await using SocatPtyPair pty = await SocatPtyPair.StartAsync();
-        await using var ovenSimulator = new SerialSimulatorHost(ovenPlc, () => SerialPortStream.Open(new SerialLineSettings { PortName = pty.PathB }));
+        await using var ovenSimulator = new SerialSimulatorHost(ovenPlc, new SerialLineSettings { PortName = pty.PathB });
         await ovenSimulator.StartAsync();
 
         string json = $$"""
