@@ -55,8 +55,11 @@ public sealed class MqttTopics
 
         string[] levels = topic.Substring(Prefix.Length + 1).Split('/');
         if (levels.Length != 4 || levels[3] != SetLevel
-            || !int.TryParse(levels[1], NumberStyles.None, CultureInfo.InvariantCulture, out unit))
+            || !int.TryParse(levels[1], NumberStyles.None, CultureInfo.InvariantCulture, out unit)
+            || levels[1] != unit.ToString(CultureInfo.InvariantCulture))
         {
+            // Only the spelling the value topics use ("3", not "03").
+            unit = -1;
             return false;
         }
 

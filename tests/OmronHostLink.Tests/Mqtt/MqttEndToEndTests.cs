@@ -165,6 +165,7 @@ public sealed class MqttEndToEndTests(ITestOutputHelper output) : IAsyncLifetime
         listener.Start();
 
         OutboundQueue queue = host.Services.GetRequiredService<OutboundQueue>();
+        await subscriber.WaitUntilAsync(ms => ms.Count >= 1, "the first value");
         await Count(plc, simulator, 1, 5);
         await subscriber.WaitUntilAsync(ms => ms.Any(m => Value(m) == 5), "5 before the outage");
         await MqttWorkerConfig.Eventually(() => queue.Count == 0, "the broker acknowledged everything", logs);
