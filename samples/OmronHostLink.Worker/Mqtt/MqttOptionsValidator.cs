@@ -116,7 +116,7 @@ public sealed class MqttOptionsValidator : IValidateOptions<MqttOptions>
         {
             if (MqttTopics.LevelProblem(level) is { } problem)
             {
-                failures.Add($"{key} '{prefix}': a level {(level.Length == 0 ? "is empty (a leading, trailing or doubled '/')" : problem)}; levels are separated by '/' and may not hold the wildcards '+' or '#'.");
+                failures.Add($"{key} '{prefix}': a level {(level.Length == 0 ? "is empty (a leading, trailing or doubled '/')" : problem)}.");
                 return;
             }
         }

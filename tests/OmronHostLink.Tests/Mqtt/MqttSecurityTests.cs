@@ -11,8 +11,9 @@ namespace OmronHostLink.Tests.Mqtt;
 [Collection(MosquittoCollection.Name)]
 public sealed class MqttSecurityTests(ITestOutputHelper output) : IAsyncLifetime
 {
-    /// <summary>The ACL of docs/deployment.md, for a worker "worker-a" with the link "plc" and a SCADA user.</summary>
+    /// <summary>The ACL of docs/deployment.md, with the prefix "test" for "plant1" and the link "plc" for "line1".</summary>
     private const string Acl = """
+        # /etc/mosquitto/acl — one block per worker and per consumer
         user worker-a
         topic readwrite test/status/worker-a
         topic write test/plc/#
@@ -21,17 +22,23 @@ public sealed class MqttSecurityTests(ITestOutputHelper output) : IAsyncLifetime
         user scada
         topic read test/#
         topic write test/+/+/+/set
+        # replies to its own response topics
+        topic readwrite scada/replies/#
+
+        user historian
+        topic read test/#
         """;
 
     private readonly List<IAsyncDisposable> _cleanup = new();
     private readonly CapturingLoggerProvider _logs = new();
     private RecordingSimulator _simulator = null!;
+    private VirtualPlc _plc = null!;
 
     public async Task InitializeAsync()
     {
-        var plc = new VirtualPlc();
-        plc.WriteWords("D100", [77]);
-        _simulator = await RecordingSimulator.StartAsync(plc);
+        _plc = new VirtualPlc();
+        _plc.WriteWords("D100", [77]);
+        _simulator = await RecordingSimulator.StartAsync(_plc);
     }
 
     public async Task DisposeAsync()
@@ -46,7 +53,7 @@ public sealed class MqttSecurityTests(ITestOutputHelper output) : IAsyncLifetime
     }
 
     [Fact]
-    public async Task With_username_and_password_the_worker_publishes_within_its_acl()
+    public async Task With_username_and_password_the_worker_publishes_and_takes_writes_within_its_acl()
     {
         MosquittoBroker broker = await Broker(PasswordSettings());
         TestSubscriber scada = await Subscriber(broker, "scada", "scada-secret");
@@ -55,12 +62,22 @@ public sealed class MqttSecurityTests(ITestOutputHelper output) : IAsyncLifetime
             config["Mqtt:ClientId"] = "worker-a";
             config["Mqtt:Username"] = "worker-a";
             config["Mqtt:Password"] = "worker-a-secret";
+            config["Mqtt:Writes:Enabled"] = "true";
+            MqttWorkerConfig.Group(config, "setpoint", "D500", intervalMs: 50, writable: true);
         });
 
         ReceivedMessage level = await scada.WaitForAsync(MqttWorkerConfig.Topic("level"));
         level.Payload.Should().Contain("\"value\":77");
         await scada.WaitForAsync($"{MqttWorkerConfig.Prefix}/status/worker-a", m => m.Payload == "online");
+        await MqttWorkerConfig.Eventually(() => _logs.WithEvent(MqttLog.Events.WritesAccepted).Count > 0, "the worker subscribes to its command topics", _logs);
+
+        await scada.PublishAsync(MqttWorkerConfig.Topic("setpoint") + "/set", "321");
+
+        ReceivedMessage reply = await scada.WaitForAsync(MqttWorkerConfig.Topic("setpoint") + "/set/result");
+        reply.Payload.Should().Contain("\"status\":\"done\"");
+        _plc.ReadWords("D500", 1).Should().Equal([(ushort)321]);
         _logs.WithEvent(MqttLog.Events.PublishRefused).Should().BeEmpty();
+        _logs.WithEvent(MqttLog.Events.SubscribeRefused).Should().BeEmpty();
     }
 
     [Fact]
