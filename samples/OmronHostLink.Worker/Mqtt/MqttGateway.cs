@@ -108,9 +108,15 @@ public sealed class MqttGateway : IHostedService, IAsyncDisposable
             return;
         }
 
-        // The links stop first (they are registered after this service) and queue their offline states; send them.
+        // The links stop first (they are registered after this service) and queue their offline states; send them
+        // if the broker is there. If it is not, there is nothing to wait for: the queue is lost with the process.
         _stopping = true;
         _queue.Wake();
+        if (!IsConnected)
+        {
+            await _stop.CancelAsync().ConfigureAwait(false);
+        }
+
         using (var drain = CancellationTokenSource.CreateLinkedTokenSource(cancellationToken))
         {
             drain.CancelAfter(DrainLimit);

@@ -238,6 +238,26 @@ public sealed class MqttEndToEndTests(ITestOutputHelper output) : IAsyncLifetime
         subscriber.PayloadsOn($"{MqttWorkerConfig.Prefix}/plc/status").Should().Equal("online", "offline");
     }
 
+    [Fact]
+    public async Task A_worker_stops_promptly_while_it_waits_to_reconnect()
+    {
+        var plc = new VirtualPlc();
+        RecordingSimulator simulator = await Simulator(plc);
+        Dictionary<string, string?> config = MqttWorkerConfig.Create(simulator.Port, _broker);
+        config["Mqtt:Reconnect:Initial"] = "00:00:30";
+        config["Mqtt:Reconnect:Max"] = "00:00:30";
+        MqttWorkerConfig.Group(config, "a", "D100");
+        await _broker.StopAsync();
+        (IHost host, CapturingLoggerProvider logs) = await StartWorker(config);
+        await MqttWorkerConfig.Eventually(() => logs.WithEvent(MqttLog.Events.Unreachable).Count == 1, "the broker is reported unreachable", logs);
+
+        var clock = System.Diagnostics.Stopwatch.StartNew();
+        await host.StopAsync();
+
+        clock.Elapsed.Should().BeLessThan(TimeSpan.FromSeconds(3), "nothing can be sent, so nothing is waited for");
+        ((int?)logs.WithEvent(MqttLog.Events.Stopped).Should().ContainSingle().Subject["Queued"]).Should().BeGreaterThan(0, "what was queued is reported as not sent");
+    }
+
     private static async Task Count(VirtualPlc plc, RecordingSimulator simulator, int from, int to)
     {
         for (int k = from; k <= to; k++)
