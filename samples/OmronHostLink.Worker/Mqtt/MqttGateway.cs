@@ -36,6 +36,7 @@ public sealed class MqttGateway : IHostedService, IAsyncDisposable
     private Task? _loop;
     private Task? _writeLoop;
     private volatile bool _stopping;
+    private int _stopCalls;
     private bool _everConnected;
     private long _overflowSince;
     private volatile string? _certificateProblem;
@@ -103,7 +104,7 @@ public sealed class MqttGateway : IHostedService, IAsyncDisposable
     /// <inheritdoc/>
     public async Task StopAsync(CancellationToken cancellationToken)
     {
-        if (_loop is null)
+        if (_loop is null || Interlocked.Exchange(ref _stopCalls, 1) != 0)
         {
             return;
         }
