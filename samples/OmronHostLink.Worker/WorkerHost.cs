@@ -3,6 +3,7 @@ using Microsoft.Extensions.DependencyInjection.Extensions;
 using Microsoft.Extensions.Hosting;
 using Microsoft.Extensions.Options;
 using OmronHostLink.Worker.Configuration;
+using OmronHostLink.Worker.Mqtt;
 using OmronHostLink.Worker.Polling;
 using OmronHostLink.Worker.Simulation;
 
@@ -42,9 +43,10 @@ public static class WorkerHost
         services.AddSingleton<IValidateOptions<SimulatorOptions>, SimulatorOptionsValidator>();
 
         // Order matters: hosted services start in registration order and stop in reverse, so the simulator listens
-        // before the links connect and outlives them.
+        // before the links connect and outlives them, and the MQTT output sends the links' last states.
         services.AddSingleton<SimulatorHostedService>();
         services.AddHostedService(sp => sp.GetRequiredService<SimulatorHostedService>());
+        services.AddMqttOutput(builder.Configuration);
         services.AddSingleton<PollingHostedService>();
         services.AddHostedService(sp => sp.GetRequiredService<PollingHostedService>());
 

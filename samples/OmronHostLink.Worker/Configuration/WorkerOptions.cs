@@ -79,6 +79,9 @@ public sealed class PollGroupOptions
 
     /// <summary>EveryPoll (default) or OnChange (only values that differ from the last ones logged).</summary>
     public string Log { get; set; } = nameof(PollLogMode.EveryPoll);
+
+    /// <summary>Allow writes to this group from MQTT (with <c>Mqtt:Writes:Enabled</c>). Default false.</summary>
+    public bool Writable { get; set; }
 }
 
 /// <summary>When a poll group's values are logged.</summary>

@@ -2,6 +2,7 @@ using Microsoft.Extensions.Hosting;
 using Microsoft.Extensions.Logging;
 using OmronHostLink.Link;
 using OmronHostLink.Worker.Configuration;
+using OmronHostLink.Worker.Mqtt;
 
 namespace OmronHostLink.Worker.Polling;
 
@@ -18,12 +19,17 @@ public sealed class LinkPollingService : BackgroundService
     private readonly ILogger _logger;
     private readonly TimeProvider _time;
     private readonly Dictionary<int, UnitHealth> _units = new();
+    private readonly ITagSink? _sink;
+    private List<PollGroup> _groups = [];
     private long _origin;
     private long _polls;
     private long _failures;
 
-    /// <summary>Creates the service for the link <paramref name="name"/>; nothing happens until it is started.</summary>
-    public LinkPollingService(string name, LinkOptions options, ILoggerFactory loggerFactory, TimeProvider? timeProvider = null)
+    /// <summary>
+    /// Creates the service for the link <paramref name="name"/>; nothing happens until it is started. A
+    /// <paramref name="sink"/> receives every poll's outcome and the link's state.
+    /// </summary>
+    public LinkPollingService(string name, LinkOptions options, ILoggerFactory loggerFactory, TimeProvider? timeProvider = null, ITagSink? sink = null)
     {
         ArgumentNullException.ThrowIfNull(name);
         ArgumentNullException.ThrowIfNull(options);
@@ -33,6 +39,7 @@ public sealed class LinkPollingService : BackgroundService
         _loggerFactory = loggerFactory;
         _logger = loggerFactory.CreateLogger<LinkPollingService>();
         _time = timeProvider ?? TimeProvider.System;
+        _sink = sink;
     }
 
     /// <summary>The link's name.</summary>
@@ -58,6 +65,7 @@ public sealed class LinkPollingService : BackgroundService
         catch (Exception e)
         {
             WorkerLog.LinkFailed(_logger, e, _name);
+            _sink?.LinkChanged(_name, LinkState.Offline, e.Message);
             return;
         }
 
@@ -73,6 +81,8 @@ public sealed class LinkPollingService : BackgroundService
 
             var scheduler = new PollScheduler<PollGroup>(groups.Select(g => (g, g.Interval)), Now);
             WorkerLog.LinkStarted(_logger, _name, groups.Count, client.Description);
+            _groups = groups;
+            _sink?.LinkOpened(_name, client);
             try
             {
                 while (!stoppingToken.IsCancellationRequested)
@@ -99,6 +109,7 @@ public sealed class LinkPollingService : BackgroundService
             }
         }
 
+        _sink?.LinkChanged(_name, LinkState.Offline);
         WorkerLog.LinkStopped(_logger, _name, _polls, _failures);
     }
 
@@ -156,6 +167,7 @@ public sealed class LinkPollingService : BackgroundService
                 WorkerLog.GroupFailed(_logger, _name, group.Name, group.UnitNumber, group.AddressText, e.Message);
             }
 
+            _sink?.TagChanged(group.Change(_name, TagQuality.Stale, _time.GetUtcNow(), e.Message));
             return;
         }
         catch (Exception e)
@@ -167,6 +179,7 @@ public sealed class LinkPollingService : BackgroundService
                 WorkerLog.GroupCrashed(_logger, e, _name, group.Name, group.UnitNumber, group.AddressText);
             }
 
+            _sink?.TagChanged(group.Change(_name, TagQuality.Stale, _time.GetUtcNow(), e.Message));
             return;
         }
 
@@ -176,6 +189,8 @@ public sealed class LinkPollingService : BackgroundService
             group.Failure = null;
             WorkerLog.GroupRecovered(_logger, _name, group.Name, group.UnitNumber, group.AddressText);
         }
+
+        _sink?.TagChanged(group.Change(_name, TagQuality.Good, _time.GetUtcNow()));
 
         if (group.Mode == PollLogMode.EveryPoll || group.LastLogged != values)
         {
@@ -201,6 +216,17 @@ public sealed class LinkPollingService : BackgroundService
             unit.Backoff = _options.Backoff.Initial;
             unit.RetryAt = now + unit.Backoff;
             WorkerLog.UnitDown(_logger, _name, group.UnitNumber, reason, e.Message, unit.Backoff.TotalSeconds, _options.Backoff.Max.TotalSeconds);
+            if (_sink is not null)
+            {
+                // Every tag of the unit, not only the one that failed: none of them can be read now.
+                foreach (PollGroup g in _groups.Where(g => g.UnitNumber == group.UnitNumber))
+                {
+                    _sink.TagChanged(g.Change(_name, TagQuality.CommError, _time.GetUtcNow(), e.Message));
+                }
+
+                _sink.LinkChanged(_name, LinkState.CommError, e.Message);
+            }
+
             return;
         }
 
@@ -222,6 +248,10 @@ public sealed class LinkPollingService : BackgroundService
         unit.Down = false;
         unit.Attempts = 0;
         unit.RetryAt = TimeSpan.Zero;
+        if (!_units.Values.Any(u => u.Down))
+        {
+            _sink?.LinkChanged(_name, LinkState.Online);
+        }
     }
 
     /// <summary>Whether a PLC on the link answers, and when to try it again if not.</summary>

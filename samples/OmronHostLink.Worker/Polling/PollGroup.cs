@@ -1,4 +1,5 @@
 using OmronHostLink.Worker.Configuration;
+using OmronHostLink.Worker.Mqtt;
 
 namespace OmronHostLink.Worker.Polling;
 
@@ -49,15 +50,26 @@ internal sealed class PollGroup
     /// <summary>The failure last reported for this group while its PLC answered; null when it reads.</summary>
     public string? Failure { get; set; }
 
+    /// <summary>The words of the last successful read (a completion flag as one word, 0 or 1), for a tag sink.</summary>
+    public ushort[]? LastWords { get; private set; }
+
     /// <summary>Reads the group and formats its values.</summary>
     public async ValueTask<string> ReadAsync(CancellationToken cancellationToken)
     {
         if (PollValueTypes.IsCompletionFlag(Type, Address))
         {
-            return await Unit.ReadBitAsync(Address, cancellationToken).ConfigureAwait(false) ? "1" : "0";
+            bool flag = await Unit.ReadBitAsync(Address, cancellationToken).ConfigureAwait(false);
+            LastWords = [flag ? (ushort)1 : (ushort)0];
+            return flag ? "1" : "0";
         }
 
         ushort[] words = await Unit.ReadWordsAsync(Address.AsWord(), Words, cancellationToken).ConfigureAwait(false);
-        return PollValueTypes.Format(Type, Address, Count, words, WordOrder);
+        string text = PollValueTypes.Format(Type, Address, Count, words, WordOrder);
+        LastWords = words;
+        return text;
     }
+
+    /// <summary>The outcome for a tag sink: the last value read when <paramref name="quality"/> is good.</summary>
+    public TagChange Change(string link, TagQuality quality, DateTimeOffset time, string? error = null)
+        => new(link, UnitNumber, Name, AddressText, Type, quality == TagQuality.Good ? TagValueCodec.Decode(Type, Address, Count, LastWords, WordOrder) : null, quality, time, error);
 }

@@ -2,6 +2,7 @@ using Microsoft.Extensions.Hosting;
 using Microsoft.Extensions.Logging;
 using Microsoft.Extensions.Options;
 using OmronHostLink.Worker.Configuration;
+using OmronHostLink.Worker.Mqtt;
 
 namespace OmronHostLink.Worker.Polling;
 
@@ -16,13 +17,15 @@ public sealed class PollingHostedService : IHostedService, IDisposable
     private readonly ILoggerFactory _loggerFactory;
     private readonly TimeProvider _time;
     private readonly List<LinkPollingService> _links = new();
+    private readonly ITagSink? _sink;
 
-    /// <summary>Creates the service.</summary>
-    public PollingHostedService(IOptions<WorkerOptions> options, ILoggerFactory loggerFactory, TimeProvider timeProvider)
+    /// <summary>Creates the service; <paramref name="sink"/> (the MQTT output, when configured) receives what the links read.</summary>
+    public PollingHostedService(IOptions<WorkerOptions> options, ILoggerFactory loggerFactory, TimeProvider timeProvider, ITagSink? sink = null)
     {
         _options = options;
         _loggerFactory = loggerFactory;
         _time = timeProvider;
+        _sink = sink;
     }
 
     /// <summary>The links being polled.</summary>
@@ -40,7 +43,7 @@ public sealed class PollingHostedService : IHostedService, IDisposable
                 continue;
             }
 
-            var service = new LinkPollingService(name, link, _loggerFactory, _time);
+            var service = new LinkPollingService(name, link, _loggerFactory, _time, _sink);
             _links.Add(service);
             await service.StartAsync(cancellationToken).ConfigureAwait(false);
         }
