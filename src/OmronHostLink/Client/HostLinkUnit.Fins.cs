@@ -1,4 +1,5 @@
 using OmronHostLink.Link;
+using OmronHostLink.Protocol.CMode;
 using OmronHostLink.Protocol.Fins;
 
 namespace OmronHostLink;
@@ -88,7 +89,7 @@ public partial class HostLinkUnit
         }
 
         var command = new MultipleMemoryAreaReadCommand(items);
-        FinsMultipleReadValue[] values = await FinsAsync(command, items.Length * 3, retryable: true, static (data, c) => FinsMultipleReadValue.ReadAll(data, c), command, cancellationToken).ConfigureAwait(false);
+        FinsMultipleReadValue[] values = await FinsAsync(command, command.ResponseDataLength, retryable: true, static (data, c) => FinsMultipleReadValue.ReadAll(data, c), command, cancellationToken).ConfigureAwait(false);
         return values.Select(v => v.Word).ToArray();
     }
 
@@ -194,7 +195,7 @@ public partial class HostLinkUnit
 
         // Host Link end code, then ICF DA2 SA2 SID, MRC SRC, MRES SRES and the data, two characters a byte.
         int maxText = 2 + (2 * (header.Length + 4 + maxResponseData));
-        var request = new HostLinkRequest(UnitNumber, "FA", message, message.Length, 1, multiFrame: false, expectsResponse: true, maxText, retryable, singleFrameOnly: true);
+        var request = new HostLinkRequest(UnitNumber, CModeHeaders.Fins, message, message.Length, 1, multiFrame: false, expectsResponse: true, maxText, retryable, singleFrameOnly: true);
         return Connection.ExecuteAsync(
             request,
             retryable ? Options.ReadRetries : Options.WriteRetries,

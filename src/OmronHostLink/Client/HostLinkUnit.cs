@@ -232,7 +232,7 @@ public partial class HostLinkUnit
             return await FinsReadCompletionFlagAsync(address, cancellationToken).ConfigureAwait(false);
         }
 
-        int begin = address.Area == PlcArea.Counter ? 2048 + address.Word : address.Word;
+        (_, int begin) = CModeAddressing.Map(address);
         var command = new AreaReadCommand(CModeArea.TimerCounterStatus, begin, 1);
         return await CModeAsync(
             command,

@@ -157,4 +157,32 @@ public static class HexAscii
 
         return true;
     }
+
+    /// <summary>Whether every character of <paramref name="text"/> is a hex digit (either case).</summary>
+    public static bool IsHex(ReadOnlySpan<byte> text)
+    {
+        foreach (byte c in text)
+        {
+            if (!TryParseNibble(c, out _))
+            {
+                return false;
+            }
+        }
+
+        return true;
+    }
+
+    /// <summary>Whether every character of <paramref name="text"/> is a decimal digit.</summary>
+    public static bool IsDecimal(ReadOnlySpan<byte> text)
+    {
+        foreach (byte c in text)
+        {
+            if (c is < (byte)'0' or > (byte)'9')
+            {
+                return false;
+            }
+        }
+
+        return true;
+    }
 }

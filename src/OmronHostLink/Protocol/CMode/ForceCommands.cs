@@ -26,7 +26,7 @@ public sealed class ForceBitCommand : CModeCommand
     public int Bit { get; }
 
     /// <inheritdoc/>
-    public override string Header => Set ? "KS" : "KR";
+    public override string Header => Set ? CModeHeaders.ForcedSet : CModeHeaders.ForcedReset;
 
     /// <inheritdoc/>
     public override int TextLength => 10;
@@ -111,7 +111,7 @@ public sealed class MultipleForceCommand : CModeCommand
     public IReadOnlyList<ForceAction> Actions => _actions;
 
     /// <inheritdoc/>
-    public override string Header => "FK";
+    public override string Header => CModeHeaders.MultipleForcedSetReset;
 
     /// <inheritdoc/>
     public override int TextLength => 24;

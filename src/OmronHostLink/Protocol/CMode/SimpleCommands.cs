@@ -7,7 +7,7 @@ public sealed class StatusReadCommand : CModeCommand
     public static StatusReadCommand Instance { get; } = new();
 
     /// <inheritdoc/>
-    public override string Header => "MS";
+    public override string Header => CModeHeaders.StatusRead;
 
     /// <inheritdoc/>
     public override int TextLength => 0;
@@ -25,7 +25,7 @@ public sealed class ModelReadCommand : CModeCommand
     public static ModelReadCommand Instance { get; } = new();
 
     /// <inheritdoc/>
-    public override string Header => "MM";
+    public override string Header => CModeHeaders.ModelRead;
 
     /// <inheritdoc/>
     public override int TextLength => 0;
@@ -43,7 +43,7 @@ public sealed class ForcedCancelCommand : CModeCommand
     public static ForcedCancelCommand Instance { get; } = new();
 
     /// <inheritdoc/>
-    public override string Header => "KC";
+    public override string Header => CModeHeaders.ForcedSetResetCancel;
 
     /// <inheritdoc/>
     public override int TextLength => 0;
@@ -61,7 +61,7 @@ public sealed class AbortCommand : CModeCommand
     public static AbortCommand Instance { get; } = new();
 
     /// <inheritdoc/>
-    public override string Header => "XZ";
+    public override string Header => CModeHeaders.Abort;
 
     /// <inheritdoc/>
     public override int TextLength => 0;
@@ -93,7 +93,7 @@ public sealed class StatusChangeCommand : CModeCommand
     public PlcMode Mode { get; }
 
     /// <inheritdoc/>
-    public override string Header => "SC";
+    public override string Header => CModeHeaders.StatusChange;
 
     /// <inheritdoc/>
     public override int TextLength => 2;
@@ -120,7 +120,7 @@ public sealed class ErrorReadCommand : CModeCommand
     public bool Clear { get; }
 
     /// <inheritdoc/>
-    public override string Header => "MF";
+    public override string Header => CModeHeaders.ErrorRead;
 
     /// <inheritdoc/>
     public override int TextLength => 2;
@@ -155,7 +155,7 @@ public sealed class TestCommand : CModeCommand
     public string Text { get; }
 
     /// <inheritdoc/>
-    public override string Header => "TS";
+    public override string Header => CModeHeaders.Test;
 
     /// <inheritdoc/>
     public override int TextLength => _text.Length;

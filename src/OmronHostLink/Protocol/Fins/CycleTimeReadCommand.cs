@@ -36,7 +36,7 @@ public sealed class CycleTimeReadCommand : FinsCommand
         {
             0x00 => new CycleTimeReadCommand(initialize: true),
             0x01 => new CycleTimeReadCommand(initialize: false),
-            _ => throw new FinsFormatException(0x110C, $"CYCLE TIME READ parameter {parameters[0]:X2} is neither 00 (initialise) nor 01 (read)."),
+            _ => throw new FinsFormatException(FinsEndCodes.ParameterError, $"CYCLE TIME READ parameter {parameters[0]:X2} is neither 00 (initialise) nor 01 (read)."),
         };
     }
 }

@@ -83,12 +83,12 @@ public readonly struct FinsMemoryAddress : IEquatable<FinsMemoryAddress>
         byte bit = source[3];
         if (!FinsMemoryArea.IsDefined(area))
         {
-            throw new FinsFormatException(0x1101, $"Area code {area:X2} is not a CS/CJ memory area.");
+            throw new FinsFormatException(FinsEndCodes.AreaClassificationMissing, $"Area code {area:X2} is not a CS/CJ memory area.");
         }
 
         if (bit > 15)
         {
-            throw new FinsFormatException(0x1103, $"Bit {bit:X2} is out of range (00-0F) for area {area:X2} ({FinsMemoryArea.Describe(area)}).");
+            throw new FinsFormatException(FinsEndCodes.AddressRangeError, $"Bit {bit:X2} is out of range (00-0F) for area {area:X2} ({FinsMemoryArea.Describe(area)}).");
         }
 
         return new FinsMemoryAddress(area, (ushort)word, bit, unchecked_: true);

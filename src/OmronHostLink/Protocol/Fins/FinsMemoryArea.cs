@@ -99,7 +99,7 @@ public static class FinsMemoryArea
     public const byte ConditionFlags = 0x07;
 
     /// <summary>The highest EM bank number <see cref="WordCode"/> and <see cref="BitCode"/> map (bank C; CS/CJ1).</summary>
-    public const int MaxEmBank = 0x0C;
+    public const int MaxEmBank = PlcAreaInfo.EmBankCount - 1;
 
     /// <summary>The highest timer or counter number (CS/CJ: T/C 0000–4095).</summary>
     public const int MaxTimerCounterNumber = 4095;

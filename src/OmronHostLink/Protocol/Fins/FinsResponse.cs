@@ -122,7 +122,7 @@ public sealed class FinsResponse
 
         if (hostLinkEnd != OmronHostLink.EndCode.NormalCompletion)
         {
-            throw new HostLinkEndCodeException(hostLinkEnd, "FA", unit);
+            throw new HostLinkEndCodeException(hostLinkEnd, CMode.CModeHeaders.Fins, unit);
         }
 
         ReadOnlySpan<byte> hex = text.Slice(2);

@@ -67,12 +67,12 @@ public sealed class ForcedSetResetCommand : FinsCommand
         ReadOnlySpan<byte> rest = parameters.Slice(2);
         if (rest.Length % FinsForcedBit.Length != 0)
         {
-            throw new FinsFormatException(0x1002, $"FORCED SET/RESET items take {FinsForcedBit.Length} bytes each; the last of {rest.Length} bytes is cut short.");
+            throw new FinsFormatException(FinsEndCodes.CommandTooShort, $"FORCED SET/RESET items take {FinsForcedBit.Length} bytes each; the last of {rest.Length} bytes is cut short.");
         }
 
         if (count != rest.Length / FinsForcedBit.Length)
         {
-            throw new FinsFormatException(0x1003, $"FORCED SET/RESET announces {count} bits but carries {rest.Length / FinsForcedBit.Length}.");
+            throw new FinsFormatException(FinsEndCodes.ElementsDataMismatch, $"FORCED SET/RESET announces {count} bits but carries {rest.Length / FinsForcedBit.Length}.");
         }
 
         var items = new FinsForcedBit[count];

@@ -58,7 +58,7 @@ public sealed class MemoryAreaFillCommand : FinsCommand
         FinsMemoryAddress address = FinsMemoryAddress.Read(parameters);
         if (address.ElementSize != 2)
         {
-            throw new FinsFormatException(0x1101, $"MEMORY AREA FILL cannot fill area {address.AreaCode:X2} ({FinsMemoryArea.Describe(address.AreaCode)}).");
+            throw new FinsFormatException(FinsEndCodes.AreaClassificationMissing, $"MEMORY AREA FILL cannot fill area {address.AreaCode:X2} ({FinsMemoryArea.Describe(address.AreaCode)}).");
         }
 
         return new MemoryAreaFillCommand(address, FinsBytes.ReadUInt16(parameters, 4), FinsBytes.ReadUInt16(parameters, 6));

@@ -81,7 +81,7 @@ public sealed class MemoryAreaReadCommand : FinsCommand
         int count = FinsBytes.ReadUInt16(parameters, 4);
         if (count > MaxCount(address.AreaCode))
         {
-            throw new FinsFormatException(0x110B, $"Reading {count} elements of {FinsMemoryArea.Describe(address.AreaCode)} needs a response longer than a Host Link frame holds.");
+            throw new FinsFormatException(FinsEndCodes.ResponseTooLong, $"Reading {count} elements of {FinsMemoryArea.Describe(address.AreaCode)} needs a response longer than a Host Link frame holds.");
         }
 
         return new MemoryAreaReadCommand(address, count);

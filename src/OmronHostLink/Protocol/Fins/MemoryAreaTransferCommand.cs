@@ -64,7 +64,7 @@ public sealed class MemoryAreaTransferCommand : FinsCommand
         FinsMemoryAddress destination = FinsMemoryAddress.Read(parameters.Slice(4));
         if (source.ElementSize != 2 || destination.ElementSize != 2)
         {
-            throw new FinsFormatException(0x1101, "MEMORY AREA TRANSFER copies 2-byte words only.");
+            throw new FinsFormatException(FinsEndCodes.AreaClassificationMissing, "MEMORY AREA TRANSFER copies 2-byte words only.");
         }
 
         return new MemoryAreaTransferCommand(source, destination, FinsBytes.ReadUInt16(parameters, 8));
