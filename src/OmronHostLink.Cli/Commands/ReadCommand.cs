@@ -64,7 +64,7 @@ internal static class ReadCommand
         }
 
         HostLinkProtocol protocol = parse.GetValue(connection.Fins) ? HostLinkProtocol.Fins : HostLinkProtocol.CMode;
-        return ReadRequest.Create(plcAddress, c, parse.GetValue(kind), protocol);
+        return ReadRequest.Create(plcAddress, c, parse.GetValue(kind), protocol, connection.WordOrder);
     }
 
     /// <summary>One line per value: address, then the value with hex and decimal.</summary>

@@ -141,16 +141,8 @@ public sealed class ReadPlan
     internal static long Key(int unit, PlcAddress word)
         => ((long)unit << 40) | ((long)word.Area << 32) | ((long)word.Bank << 24) | (uint)word.Word;
 
-    private static object Decode(PlcTag tag, ushort[] raw, WordOrder order) => tag.Type switch
-    {
-        PlcValueType.Word or PlcValueType.UInt16 => raw[0],
-        PlcValueType.Int16 => PlcWords.ToInt16(raw[0]),
-        PlcValueType.Int32 => PlcWords.ReadInt32(raw, order),
-        PlcValueType.UInt32 => PlcWords.ReadUInt32(raw, order),
-        PlcValueType.Float => PlcWords.ReadSingle(raw, order),
-        PlcValueType.Bcd => PlcWords.FromBcd(raw[0]),
-        _ => PlcWords.GetBit(raw[0], tag.Address.Bit),
-    };
+    private static object Decode(PlcTag tag, ushort[] raw, WordOrder order)
+        => PlcValueCodec.Decode(tag.Type, raw, order, tag.Address.IsBit ? tag.Address.Bit : 0).ToObject();
 }
 
 /// <summary>Turns characters and exchanges into time for a line.</summary>
