@@ -161,14 +161,9 @@ internal sealed class HostLinkExchange
             return Error(header, EndCode.FrameLengthError);
         }
 
-        FrameInfo info;
-        try
+        if (Damaged(frame, first: true, out FrameInfo info) is { } damaged)
         {
-            info = FrameParser.ParseFirst(frame);
-        }
-        catch (HostLinkFrameException e)
-        {
-            return Error(header, e.Error == FrameError.BadFcs ? EndCode.FcsError : EndCode.FormatError);
+            return Error(header, damaged);
         }
 
         ReadOnlySpan<byte> text = info.Text(frame);
@@ -208,14 +203,9 @@ internal sealed class HostLinkExchange
             return Error(_header, EndCode.AbortedFrameLengthError);
         }
 
-        FrameInfo info;
-        try
+        if (Damaged(frame, first: false, out FrameInfo info) is { } damaged)
         {
-            info = FrameParser.ParseContinuation(frame);
-        }
-        catch (HostLinkFrameException e)
-        {
-            return Error(_header, e.Error == FrameError.BadFcs ? EndCode.AbortedFcsError : EndCode.AbortedFormatError);
+            return Error(_header, damaged);
         }
 
         ReadOnlySpan<byte> text = info.Text(frame);
@@ -246,6 +236,27 @@ internal sealed class HostLinkExchange
         int unit = _unit;
         Reset();
         return Send(_responder.Respond(unit, header, all));
+    }
+
+    /// <summary>
+    /// The end code a damaged frame is answered with: FCS or format error (13, 14) for a first frame, the aborted ones
+    /// (A3, A4) for a later frame; null for a sound frame.
+    /// </summary>
+    private static EndCode? Damaged(ReadOnlySpan<byte> frame, bool first, out FrameInfo info)
+    {
+        try
+        {
+            info = first ? FrameParser.ParseFirst(frame) : FrameParser.ParseContinuation(frame);
+            return null;
+        }
+        catch (HostLinkFrameException e)
+        {
+            info = default;
+            bool fcs = e.Error == FrameError.BadFcs;
+            return first
+                ? fcs ? EndCode.FcsError : EndCode.FormatError
+                : fcs ? EndCode.AbortedFcsError : EndCode.AbortedFormatError;
+        }
     }
 
     private void AddText(ReadOnlySpan<byte> text)

@@ -36,25 +36,21 @@ internal static class CModeCommandParser
         switch (h)
         {
             case CModeHeaders.StatusRead:
-                ExpectLength(text, 0, h);
-                return StatusReadCommand.Instance;
+                return WithoutText(text, StatusReadCommand.Instance);
             case CModeHeaders.ModelRead:
-                ExpectLength(text, 0, h);
-                return ModelReadCommand.Instance;
+                return WithoutText(text, ModelReadCommand.Instance);
             case CModeHeaders.ForcedSetResetCancel:
-                ExpectLength(text, 0, h);
-                return ForcedCancelCommand.Instance;
+                return WithoutText(text, ForcedCancelCommand.Instance);
             case CModeHeaders.Abort:
-                ExpectLength(text, 0, h);
-                return AbortCommand.Instance;
+                return WithoutText(text, AbortCommand.Instance);
             case CModeHeaders.StatusChange:
                 ExpectLength(text, 2, h);
-                if (!HexAscii.TryParseByte(text, out byte mode) || mode is not (0x00 or 0x02 or 0x03))
+                if (!HexAscii.TryParseByte(text, out byte code) || !StatusChangeCommand.TryGetMode(code, out PlcMode mode))
                 {
                     throw Reject(EndCode.EntryNumberDataError, "SC mode must be 00, 02 or 03.");
                 }
 
-                return new StatusChangeCommand(mode switch { 0x00 => PlcMode.Program, 0x02 => PlcMode.Monitor, _ => PlcMode.Run });
+                return new StatusChangeCommand(mode);
             case CModeHeaders.ErrorRead:
                 ExpectLength(text, 2, h);
                 if (!HexAscii.TryParseDecimal(text, out int clear) || clear > 1)
@@ -165,6 +161,12 @@ internal static class CModeCommandParser
         }
 
         return Checked(() => new MultipleForceCommand(area, word, actions));
+    }
+
+    private static CModeCommand WithoutText(ReadOnlySpan<byte> text, CModeCommand command)
+    {
+        ExpectLength(text, 0, command.Header);
+        return command;
     }
 
     private static void ExpectLength(ReadOnlySpan<byte> text, int length, string header)

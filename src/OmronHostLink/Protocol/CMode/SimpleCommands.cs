@@ -106,6 +106,22 @@ public sealed class StatusChangeCommand : CModeCommand
         _ => 0x03,
     };
 
+    /// <summary>The mode an SC mode code names; false for a code other than 00, 02 and 03.</summary>
+    public static bool TryGetMode(byte code, out PlcMode mode)
+    {
+        foreach (PlcMode candidate in new[] { PlcMode.Program, PlcMode.Monitor, PlcMode.Run })
+        {
+            if (ModeCode(candidate) == code)
+            {
+                mode = candidate;
+                return true;
+            }
+        }
+
+        mode = default;
+        return false;
+    }
+
     /// <inheritdoc/>
     public override void WriteText(Span<byte> destination) => HexAscii.WriteByte(ModeCode(Mode), destination);
 }
