@@ -120,7 +120,7 @@ internal sealed class ConnectionOptions
             ReadRetries = retries,
             WriteRetries = 0,
             WordOrder = WordOrder,
-            Protocol = parse.GetValue(Fins) ? HostLinkProtocol.Fins : HostLinkProtocol.CMode,
+            CommandSet = parse.GetValue(Fins) ? HostLinkCommandSet.Fins : HostLinkCommandSet.CMode,
         };
 
         configure?.Invoke(options);

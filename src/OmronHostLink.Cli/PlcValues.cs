@@ -34,7 +34,7 @@ internal sealed class ReadRequest
     public bool IsTimerCounterFlag => Kind == PlcValueType.Bit && Address.Area is PlcArea.Timer or PlcArea.Counter;
 
     /// <summary>Checks everything before anything is sent.</summary>
-    public static ReadRequest Create(PlcAddress address, string? countText, string? kindText, HostLinkProtocol protocol, WordOrder order)
+    public static ReadRequest Create(PlcAddress address, string? countText, string? kindText, HostLinkCommandSet protocol, WordOrder order)
     {
         PlcValueType kind = kindText is null
             ? address.IsBit ? PlcValueType.Bit : PlcValueType.Word

@@ -6,7 +6,7 @@ namespace OmronHostLink;
 public static class EndCodes
 {
     /// <summary>Parses the two characters of an end code (or <c>IC</c>).</summary>
-    public static bool TryParse(ReadOnlySpan<byte> text, out EndCode code)
+    internal static bool TryParse(ReadOnlySpan<byte> text, out EndCode code)
     {
         if (Protocol.CMode.CModeHeaders.Is(text, Protocol.CMode.CModeHeaders.UndefinedCommand))
         {
@@ -45,6 +45,12 @@ public static class EndCodes
         EndCode.CpuUnitError => EndCodeCategory.CpuError,
         _ => EndCodeCategory.NotExecutable,
     };
+
+    /// <summary>
+    /// Whether the code reports a frame the PLC received damaged (13, A3; on CV-series also 10–12 and A0–A2): the same
+    /// command, sent again, may get through.
+    /// </summary>
+    public static bool IsTransient(this EndCode code) => code.Category() == EndCodeCategory.FrameDamaged;
 
     /// <summary>Every end code the manuals define.</summary>
     public static IReadOnlyList<EndCode> All { get; } =

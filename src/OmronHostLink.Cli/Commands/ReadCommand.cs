@@ -63,7 +63,7 @@ internal static class ReadCommand
             plcAddress = Addresses.Parse(a);
         }
 
-        HostLinkProtocol protocol = parse.GetValue(connection.Fins) ? HostLinkProtocol.Fins : HostLinkProtocol.CMode;
+        HostLinkCommandSet protocol = parse.GetValue(connection.Fins) ? HostLinkCommandSet.Fins : HostLinkCommandSet.CMode;
         return ReadRequest.Create(plcAddress, c, parse.GetValue(kind), protocol, connection.WordOrder);
     }
 

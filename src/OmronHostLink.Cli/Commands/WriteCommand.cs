@@ -42,7 +42,7 @@ internal static class WriteCommand
 
             string? kindText = parse.GetValue(kind);
             PlcValueType k = kindText is null ? target.IsBit ? PlcValueType.Bit : PlcValueType.Word : ValueKinds.Parse(kindText);
-            HostLinkProtocol protocol = parse.GetValue(connection.Fins) ? HostLinkProtocol.Fins : HostLinkProtocol.CMode;
+            HostLinkCommandSet protocol = parse.GetValue(connection.Fins) ? HostLinkCommandSet.Fins : HostLinkCommandSet.CMode;
             bool useRmw = parse.GetValue(rmw);
             string summary;
             if (k == PlcValueType.Bit)

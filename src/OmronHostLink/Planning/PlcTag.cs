@@ -2,7 +2,7 @@ namespace OmronHostLink.Planning;
 
 /// <summary>
 /// A value to read: an address, how to read it, and optionally the unit (multidrop) it lives in. Used with
-/// <see cref="ReadPlanner"/> and <c>ReadManyAsync</c>.
+/// <see cref="ReadPlanner"/> and <c>ReadTagsAsync</c>.
 /// </summary>
 public sealed class PlcTag
 {

@@ -6,7 +6,7 @@ public enum PlannedReadKind
     /// <summary>One C-mode area read (RR, RH, RJ, RD, RC, RE), multi-frame when long: one transaction, one snapshot.</summary>
     CModeArea,
 
-    /// <summary>One FINS 0101 MEMORY AREA READ of at most <see cref="Protocol.Fins.MemoryAreaReadCommand.MaxWords"/> words.</summary>
+    /// <summary>One FINS 0101 MEMORY AREA READ of at most 269 words (what one FA answer frame holds).</summary>
     FinsArea,
 
     /// <summary>One FINS 0104 MULTIPLE MEMORY AREA READ of scattered words.</summary>
@@ -59,7 +59,7 @@ public sealed class PlannedRead
 
 /// <summary>
 /// The transactions that read a set of tags, from <see cref="ReadPlanner.Plan"/>. Pure data: execute the reads (for
-/// example with <c>HostLinkUnit.ReadManyAsync(ReadPlan, CancellationToken)</c>) and turn their words into tag values
+/// example with <c>HostLinkUnit.ReadTagsAsync(ReadPlan, CancellationToken)</c>) and turn their words into tag values
 /// with <see cref="Resolve"/>.
 /// </summary>
 public sealed class ReadPlan

@@ -5,7 +5,7 @@ namespace OmronHostLink.Protocol;
 /// matches, and for a first frame the unit number. <see cref="FrameParser"/> refuses a frame on the first fault it
 /// finds; a diagnostic tool reports every one, in the same words.
 /// </summary>
-public readonly struct FrameCheck
+internal readonly struct FrameCheck
 {
     /// <summary>Characters of <c>@</c>, unit and header before the text of a first frame.</summary>
     private const int FirstFramePrefix = MessagePrefix.Length;

@@ -4,7 +4,7 @@ namespace OmronHostLink.Protocol;
 /// Validates the shape and FCS of single frames. Every failure is a <see cref="HostLinkFrameException"/>: a damaged
 /// frame never yields text.
 /// </summary>
-public static class FrameParser
+internal static class FrameParser
 {
     /// <summary>The shortest first frame: <c>@</c>, unit, header, FCS, <c>*</c>, CR.</summary>
     public const int MinFirstFrameLength = 9;

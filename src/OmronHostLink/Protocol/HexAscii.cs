@@ -4,7 +4,7 @@ namespace OmronHostLink.Protocol;
 /// ASCII encodings used inside Host Link frames: hexadecimal bytes and words, and fixed-width decimal (BCD-style) fields.
 /// Output is always upper case, as every Omron unit writes it; input accepts either case.
 /// </summary>
-public static class HexAscii
+internal static class HexAscii
 {
     private static ReadOnlySpan<byte> Digits => "0123456789ABCDEF"u8;
 

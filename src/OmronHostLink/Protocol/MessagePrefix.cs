@@ -4,7 +4,7 @@ namespace OmronHostLink.Protocol;
 /// The start every Host Link message shares, commands and answers, C-mode and FINS alike: <c>@</c>, the unit number as
 /// two decimal digits, and the two header characters (<c>@00RD</c>, <c>@31FA</c>).
 /// </summary>
-public static class MessagePrefix
+internal static class MessagePrefix
 {
     /// <summary>Characters of <c>@</c> and the unit number.</summary>
     public const int UnitLength = 3;

@@ -1,7 +1,7 @@
 namespace OmronHostLink.Protocol.CMode;
 
 /// <summary>RR, RL, RH, RC, RG, RD, RJ, RE: read <see cref="Count"/> entries from <see cref="Begin"/> (EM: in <see cref="Bank"/>).</summary>
-public sealed class AreaReadCommand : CModeCommand
+internal sealed class AreaReadCommand : CModeCommand
 {
     /// <summary>Creates the command; the range is checked against the area's C-mode limits.</summary>
     /// <exception cref="ArgumentOutOfRangeException">The range is outside what C-mode reaches.</exception>

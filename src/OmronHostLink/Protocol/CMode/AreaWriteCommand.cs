@@ -4,7 +4,7 @@ namespace OmronHostLink.Protocol.CMode;
 /// WR, WL, WH, WC, WD, WJ, WE: write words from <see cref="Begin"/>. Long writes span several frames; the address and
 /// the first word stay in the first frame and no word is split between frames.
 /// </summary>
-public sealed class AreaWriteCommand : CModeCommand
+internal sealed class AreaWriteCommand : CModeCommand
 {
     private readonly ushort[] _words;
 

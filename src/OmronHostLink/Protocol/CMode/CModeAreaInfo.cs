@@ -1,7 +1,7 @@
 namespace OmronHostLink.Protocol.CMode;
 
 /// <summary>Headers and address limits of each <see cref="CModeArea"/> on CS/CJ CPU Units (W342 4-3; PROTOCOL.md §3).</summary>
-public static class CModeAreaInfo
+internal static class CModeAreaInfo
 {
     /// <summary>The highest EM bank C-mode reaches (bank C).</summary>
     public const int MaxEmBank = PlcAreaInfo.EmBankCount - 1;

@@ -4,7 +4,7 @@ namespace OmronHostLink.Protocol.CMode;
 /// A C-mode command: a two-character header and its text. The message on the wire is <c>@</c> + unit + header + text,
 /// framed by <see cref="FrameWriter"/>.
 /// </summary>
-public abstract class CModeCommand
+internal abstract class CModeCommand
 {
     /// <summary>Characters before the text: <c>@</c>, two unit digits, two header characters.</summary>
     public const int PrefixLength = MessagePrefix.Length;

@@ -1,7 +1,7 @@
 namespace OmronHostLink.Protocol.CMode;
 
 /// <summary>Fixed C-mode transmissions.</summary>
-public static class CModeFrames
+internal static class CModeFrames
 {
     /// <summary>INITIALIZE: <c>@**</c>CR. No unit, no FCS, no answer: resets the Host Link transmission control of every unit on the line.</summary>
     public static ReadOnlySpan<byte> Initialize => "@**\r"u8;

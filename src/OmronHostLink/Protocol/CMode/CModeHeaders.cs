@@ -4,7 +4,7 @@ namespace OmronHostLink.Protocol.CMode;
 /// The two-character headers of Host Link commands and answers, with their names in the manuals (W342 section 4;
 /// C200HX). The area read and write headers (RR … WE) belong to <see cref="CModeAreaInfo"/>.
 /// </summary>
-public static class CModeHeaders
+internal static class CModeHeaders
 {
     /// <summary>MS: STATUS READ.</summary>
     public const string StatusRead = "MS";

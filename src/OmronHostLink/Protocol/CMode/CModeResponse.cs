@@ -6,7 +6,7 @@ namespace OmronHostLink.Protocol.CMode;
 /// Decoding of C-mode response text (the text of every frame joined: end code, then data) and encoding of responses
 /// from the PLC side. Anything that does not have the exact expected shape is a <see cref="HostLinkFrameException"/>.
 /// </summary>
-public static class CModeResponse
+internal static class CModeResponse
 {
     /// <summary>Characters before the end code in a first response frame: <c>@</c>, unit, header.</summary>
     public const int PrefixLength = MessagePrefix.Length;

@@ -1,7 +1,7 @@
 namespace OmronHostLink.Protocol.CMode;
 
 /// <summary>The areas KS, KR and FK force bits in, with the four-character names the commands carry.</summary>
-public enum ForceArea
+internal enum ForceArea
 {
     /// <summary><c>CIO </c>.</summary>
     Cio,
@@ -23,7 +23,7 @@ public enum ForceArea
 }
 
 /// <summary>Names and limits of <see cref="ForceArea"/>.</summary>
-public static class ForceAreaInfo
+internal static class ForceAreaInfo
 {
     /// <summary>The four-character name, space padded.</summary>
     public static string Name(ForceArea area) => area switch

@@ -1,7 +1,7 @@
 namespace OmronHostLink.Protocol.CMode;
 
 /// <summary>MS: STATUS READ. The answer holds the status word and, when one is active, the FAL/FALS message.</summary>
-public sealed class StatusReadCommand : CModeCommand
+internal sealed class StatusReadCommand : CModeCommand
 {
     /// <summary>The one instance (the command has no parameters).</summary>
     public static StatusReadCommand Instance { get; } = new();
@@ -19,7 +19,7 @@ public sealed class StatusReadCommand : CModeCommand
 }
 
 /// <summary>MM: PLC MODEL READ.</summary>
-public sealed class ModelReadCommand : CModeCommand
+internal sealed class ModelReadCommand : CModeCommand
 {
     /// <summary>The one instance.</summary>
     public static ModelReadCommand Instance { get; } = new();
@@ -37,7 +37,7 @@ public sealed class ModelReadCommand : CModeCommand
 }
 
 /// <summary>KC: FORCED SET/RESET CANCEL (cancels every forced bit).</summary>
-public sealed class ForcedCancelCommand : CModeCommand
+internal sealed class ForcedCancelCommand : CModeCommand
 {
     /// <summary>The one instance.</summary>
     public static ForcedCancelCommand Instance { get; } = new();
@@ -55,7 +55,7 @@ public sealed class ForcedCancelCommand : CModeCommand
 }
 
 /// <summary>XZ: ABORT. Stops the Host Link exchange in progress; the PLC sends no answer.</summary>
-public sealed class AbortCommand : CModeCommand
+internal sealed class AbortCommand : CModeCommand
 {
     /// <summary>The one instance.</summary>
     public static AbortCommand Instance { get; } = new();
@@ -76,7 +76,7 @@ public sealed class AbortCommand : CModeCommand
 }
 
 /// <summary>SC: STATUS CHANGE to PROGRAM (00), MONITOR (02) or RUN (03).</summary>
-public sealed class StatusChangeCommand : CModeCommand
+internal sealed class StatusChangeCommand : CModeCommand
 {
     /// <summary>Creates the command.</summary>
     public StatusChangeCommand(PlcMode mode)
@@ -127,7 +127,7 @@ public sealed class StatusChangeCommand : CModeCommand
 }
 
 /// <summary>MF: ERROR READ, optionally clearing the errors (01) or not (00).</summary>
-public sealed class ErrorReadCommand : CModeCommand
+internal sealed class ErrorReadCommand : CModeCommand
 {
     /// <summary>Creates the command.</summary>
     public ErrorReadCommand(bool clear) => Clear = clear;
@@ -146,7 +146,7 @@ public sealed class ErrorReadCommand : CModeCommand
 }
 
 /// <summary>TS: TEST. The PLC echoes the text back unchanged, with no end code.</summary>
-public sealed class TestCommand : CModeCommand
+internal sealed class TestCommand : CModeCommand
 {
     /// <summary>The longest text that fits a single frame both ways.</summary>
     public const int MaxTextLength = 122;

@@ -5,7 +5,7 @@ namespace OmronHostLink.Protocol.Fins;
 /// second, then optionally day of week (00 = Sunday … 06 = Saturday; only after the second).
 /// </summary>
 /// <remarks>Two-digit years follow <see cref="FinsClock"/>: 70–99 are 1970–1999, 00–69 are 2000–2069.</remarks>
-public sealed class ClockWriteCommand : FinsCommand
+internal sealed class ClockWriteCommand : FinsCommand
 {
     /// <summary>The command code, 0702.</summary>
     public const ushort Code = FinsCommandCodes.ClockWrite;

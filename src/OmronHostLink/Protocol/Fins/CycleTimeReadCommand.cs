@@ -4,7 +4,7 @@ namespace OmronHostLink.Protocol.Fins;
 /// 0620 CYCLE TIME READ. Parameter: one byte, 00 = initialise (reset the measurements; no data in the response),
 /// 01 = read (average, maximum and minimum cycle time; see <see cref="FinsCycleTime"/>).
 /// </summary>
-public sealed class CycleTimeReadCommand : FinsCommand
+internal sealed class CycleTimeReadCommand : FinsCommand
 {
     /// <summary>The command code, 0620.</summary>
     public const ushort Code = FinsCommandCodes.CycleTimeRead;

@@ -5,7 +5,7 @@ namespace OmronHostLink.Protocol.Fins;
 /// Parameters: first record(2), count(2). The response is described by <see cref="FinsErrorLog"/>.
 /// </summary>
 /// <remarks>Through a Host Link (FA) frame at most <see cref="MaxRecords"/> = 53 records fit in one response (SCU manual).</remarks>
-public sealed class ErrorLogReadCommand : FinsCommand
+internal sealed class ErrorLogReadCommand : FinsCommand
 {
     /// <summary>The command code, 2102.</summary>
     public const ushort Code = FinsCommandCodes.ErrorLogRead;

@@ -6,7 +6,7 @@ namespace OmronHostLink.Protocol.Fins;
 /// received bytes (codes it does not model become a <see cref="RawFinsCommand"/>).
 /// </summary>
 /// <remarks>Two commands are equal when they have the same type, code and parameter bytes.</remarks>
-public abstract class FinsCommand : IEquatable<FinsCommand>
+internal abstract class FinsCommand : IEquatable<FinsCommand>
 {
     /// <summary>
     /// The most parameter bytes a command may carry: what fits in a 1,115-character FA frame with a network header

@@ -1,7 +1,7 @@
 namespace OmronHostLink.Protocol.Fins;
 
 /// <summary>FINS command codes (MRC × 256 + SRC) this library models.</summary>
-public static class FinsCommandCodes
+internal static class FinsCommandCodes
 {
     /// <summary>0101 MEMORY AREA READ.</summary>
     public const ushort MemoryAreaRead = 0x0101;

@@ -44,6 +44,9 @@ public readonly struct FinsEndCode : IEquatable<FinsEndCode>
     /// <summary>True when the command completed (the CPU flags may still be set).</summary>
     public bool IsSuccess => Code == FinsEndCodes.NormalCompletion;
 
+    /// <summary>Whether the code reports a busy or timed-out network (<see cref="FinsEndCodes.IsTransient"/>).</summary>
+    public bool IsTransient => FinsEndCodes.IsTransient(Code);
+
     /// <summary>The meaning of <see cref="Code"/>, in the manuals' words.</summary>
     public string Meaning => FinsEndCodes.Describe(Code);
 

@@ -159,6 +159,13 @@ public static class FinsEndCodes
         _ => "Unknown FINS response code " + code.ToString("X4", CultureInfo.InvariantCulture),
     };
 
+    /// <summary>
+    /// Whether a response code (flags masked off) reports a busy or timed-out network that may clear: 0102 token
+    /// timeout, 0103 retries failed, 0104 too many send frames, 0204 destination node busy, 0205 response timeout.
+    /// </summary>
+    public static bool IsTransient(ushort code)
+        => code is TokenTimeout or RetriesFailed or TooManySendFrames or DestinationNodeBusy or ResponseTimeout;
+
     /// <summary>Whether the code is one the manuals define.</summary>
     public static bool IsDefined(ushort code) => !Describe(code).StartsWith("Unknown", StringComparison.Ordinal);
 }

@@ -1,7 +1,7 @@
 namespace OmronHostLink.Protocol.Fins;
 
 /// <summary>One item of 2301 FORCED SET/RESET: the action and the bit it applies to.</summary>
-public readonly struct FinsForcedBit : IEquatable<FinsForcedBit>
+internal readonly struct FinsForcedBit : IEquatable<FinsForcedBit>
 {
     /// <summary>Bytes one item takes: action(2) area(1) address(2) bit(1).</summary>
     public const int Length = 6;

@@ -4,7 +4,7 @@ namespace OmronHostLink.Protocol.Fins;
 /// A FINS memory address: area code (1 byte), word address (2 bytes) and bit (1 byte), as commands 0101–0105 and
 /// 2301 carry it.
 /// </summary>
-public readonly struct FinsMemoryAddress : IEquatable<FinsMemoryAddress>
+internal readonly struct FinsMemoryAddress : IEquatable<FinsMemoryAddress>
 {
     /// <summary>Bytes the address takes in a command: area, word, bit.</summary>
     public const int Length = 4;

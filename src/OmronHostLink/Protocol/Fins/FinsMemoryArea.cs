@@ -9,7 +9,7 @@ namespace OmronHostLink.Protocol.Fins;
 /// per bit and accepts bits 00–15. Timer and counter numbers share one address space: timer <c>n</c> is address
 /// <c>n</c>, counter <c>n</c> is <c>0x8000 + n</c> [unverified for CS/CJ].
 /// </remarks>
-public static class FinsMemoryArea
+internal static class FinsMemoryArea
 {
     /// <summary>CIO area, bit access.</summary>
     public const byte CioBit = 0x30;

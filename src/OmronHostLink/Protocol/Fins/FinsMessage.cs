@@ -9,7 +9,7 @@ namespace OmronHostLink.Protocol.Fins;
 /// <para>Command: <c>@</c> unit(2) <c>FA</c> wait(1 hex char) then hex bytes: FINS header, MRC SRC, parameters.</para>
 /// <para>Response: <c>@</c> unit(2) <c>FA</c> Host Link end code(2) then hex bytes: FINS header, MRC SRC, MRES SRES, data.</para>
 /// </remarks>
-public static class FinsMessage
+internal static class FinsMessage
 {
     /// <summary>The longest FA frame, FCS and <c>*</c>CR included (W342 p69, stated for responses; applied to commands too).</summary>
     public const int MaxFrameLength = 1115;

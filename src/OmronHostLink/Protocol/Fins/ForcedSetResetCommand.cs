@@ -4,7 +4,7 @@ namespace OmronHostLink.Protocol.Fins;
 /// 2301 FORCED SET/RESET: forces bits ON or OFF (or releases them).
 /// Parameters: count(2) then [designation(2) area(1) address(2) bit(1)] per bit.
 /// </summary>
-public sealed class ForcedSetResetCommand : FinsCommand
+internal sealed class ForcedSetResetCommand : FinsCommand
 {
     /// <summary>The command code, 2301.</summary>
     public const ushort Code = FinsCommandCodes.ForcedSetReset;

@@ -4,7 +4,7 @@ namespace OmronHostLink.Protocol.Fins;
 /// 0103 MEMORY AREA FILL: writes one word value to <see cref="Count"/> consecutive words.
 /// Parameters: area(1) address(2) bit(1) count(2) value(2). Word areas only.
 /// </summary>
-public sealed class MemoryAreaFillCommand : FinsCommand
+internal sealed class MemoryAreaFillCommand : FinsCommand
 {
     /// <summary>The command code, 0103.</summary>
     public const ushort Code = FinsCommandCodes.MemoryAreaFill;

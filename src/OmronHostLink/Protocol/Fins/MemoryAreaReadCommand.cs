@@ -9,7 +9,7 @@ namespace OmronHostLink.Protocol.Fins;
 /// bytes (W342 p69): at most <see cref="MaxWords"/> = 269 words or 538 bits in one command; a longer read must be
 /// split into several commands. A count of 0 is legal and returns no data (W342 p194).
 /// </remarks>
-public sealed class MemoryAreaReadCommand : FinsCommand
+internal sealed class MemoryAreaReadCommand : FinsCommand
 {
     /// <summary>The command code, 0101.</summary>
     public const ushort Code = FinsCommandCodes.MemoryAreaRead;

@@ -4,7 +4,7 @@ namespace OmronHostLink.Protocol.Fins;
 /// 0105 MEMORY AREA TRANSFER: copies <see cref="Count"/> words inside the PLC.
 /// Parameters: source area(1) address(2) bit(1), destination area(1) address(2) bit(1), count(2). Word areas only.
 /// </summary>
-public sealed class MemoryAreaTransferCommand : FinsCommand
+internal sealed class MemoryAreaTransferCommand : FinsCommand
 {
     /// <summary>The command code, 0105.</summary>
     public const ushort Code = FinsCommandCodes.MemoryAreaTransfer;

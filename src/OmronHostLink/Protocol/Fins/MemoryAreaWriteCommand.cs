@@ -9,7 +9,7 @@ namespace OmronHostLink.Protocol.Fins;
 /// frame stays within 1,115 characters even with a network header [unverified: the manuals state 1,115 for
 /// responses]. Longer writes must be split into several commands.
 /// </remarks>
-public sealed class MemoryAreaWriteCommand : FinsCommand
+internal sealed class MemoryAreaWriteCommand : FinsCommand
 {
     /// <summary>The command code, 0102.</summary>
     public const ushort Code = FinsCommandCodes.MemoryAreaWrite;

@@ -4,7 +4,7 @@ namespace OmronHostLink.Protocol.Fins;
 /// 0104 MULTIPLE MEMORY AREA READ: reads one element at each of several addresses.
 /// Parameters: [area(1) address(2) bit(1)] repeated. The response repeats [area(1) data(element size)].
 /// </summary>
-public sealed class MultipleMemoryAreaReadCommand : FinsCommand
+internal sealed class MultipleMemoryAreaReadCommand : FinsCommand
 {
     /// <summary>The command code, 0104.</summary>
     public const ushort Code = FinsCommandCodes.MultipleMemoryAreaRead;

@@ -4,7 +4,7 @@ namespace OmronHostLink.Protocol.Fins;
 /// 0401 RUN: puts the CPU Unit into MONITOR or RUN mode. Parameters (all optional): program number(2, <c>FFFF</c>)
 /// then mode(1: 02 MONITOR, 04 RUN). The mode can only be sent after a program number.
 /// </summary>
-public sealed class RunCommand : FinsCommand
+internal sealed class RunCommand : FinsCommand
 {
     /// <summary>The command code, 0401.</summary>
     public const ushort Code = FinsCommandCodes.Run;

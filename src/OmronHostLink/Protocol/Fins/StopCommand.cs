@@ -1,7 +1,7 @@
 namespace OmronHostLink.Protocol.Fins;
 
 /// <summary>0402 STOP: puts the CPU Unit into PROGRAM mode. Parameter (optional): program number(2, <c>FFFF</c>).</summary>
-public sealed class StopCommand : FinsCommand
+internal sealed class StopCommand : FinsCommand
 {
     /// <summary>The command code, 0402.</summary>
     public const ushort Code = FinsCommandCodes.Stop;
