@@ -32,7 +32,7 @@ internal static class Addresses
     }
 
     /// <summary>Checks a range against the protocol's reach, as a usage error.</summary>
-    public static void EnsureRange(PlcAddress address, int words, HostLinkProtocol protocol, bool forWrite)
+    public static void EnsureRange(PlcAddress address, int words, HostLinkCommandSet protocol, bool forWrite)
     {
         try
         {

@@ -52,6 +52,9 @@ internal sealed class ConnectionOptions
 
     public Option<bool> Fins { get; }
 
+    /// <summary>How 32- and 64-bit values lie in two or four words: Omron's own layout, low word first.</summary>
+    public WordOrder WordOrder => WordOrder.LowWordFirst;
+
     public void AddTo(Command command)
     {
         command.Add(Port);
@@ -116,7 +119,8 @@ internal sealed class ConnectionOptions
             TurnaroundAllowance = TimeSpan.FromMilliseconds(timeout),
             ReadRetries = retries,
             WriteRetries = 0,
-            Protocol = parse.GetValue(Fins) ? HostLinkProtocol.Fins : HostLinkProtocol.CMode,
+            WordOrder = WordOrder,
+            CommandSet = parse.GetValue(Fins) ? HostLinkCommandSet.Fins : HostLinkCommandSet.CMode,
         };
 
         configure?.Invoke(options);

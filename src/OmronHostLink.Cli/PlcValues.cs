@@ -1,4 +1,4 @@
-using System.Globalization;
+using System.Text;
 using System.Text.Json;
 
 namespace OmronHostLink.Cli;
@@ -9,12 +9,13 @@ internal sealed class ReadRequest
     /// <summary>Characters <c>--as string</c> reads when no count is given.</summary>
     public const int DefaultStringLength = 16;
 
-    private ReadRequest(PlcAddress address, int count, PlcValueType kind, int words)
+    private ReadRequest(PlcAddress address, int count, PlcValueType kind, int words, WordOrder order)
     {
         Address = address;
         Count = count;
         Kind = kind;
         Words = words;
+        Order = order;
     }
 
     public PlcAddress Address { get; }
@@ -27,10 +28,13 @@ internal sealed class ReadRequest
     /// <summary>Words read (0 for timer/counter completion flags, read one by one).</summary>
     public int Words { get; }
 
+    /// <summary>How 32- and 64-bit values lie in their words.</summary>
+    public WordOrder Order { get; }
+
     public bool IsTimerCounterFlag => Kind == PlcValueType.Bit && Address.Area is PlcArea.Timer or PlcArea.Counter;
 
     /// <summary>Checks everything before anything is sent.</summary>
-    public static ReadRequest Create(PlcAddress address, string? countText, string? kindText, HostLinkProtocol protocol)
+    public static ReadRequest Create(PlcAddress address, string? countText, string? kindText, HostLinkCommandSet protocol, WordOrder order)
     {
         PlcValueType kind = kindText is null
             ? address.IsBit ? PlcValueType.Bit : PlcValueType.Word
@@ -57,19 +61,19 @@ internal sealed class ReadRequest
             if (timerCounter)
             {
                 Addresses.EnsureRange(address, count, protocol, forWrite: false);
-                return new ReadRequest(address, count, kind, 0);
+                return new ReadRequest(address, count, kind, 0, order);
             }
 
-            words = (address.Bit + count + 15) / 16;
+            words = PlcValueCodec.WordCount(kind, count, address.Bit);
             Addresses.EnsureRange(address.AsWord(), words, protocol, forWrite: false);
         }
         else
         {
-            words = kind == PlcValueType.String ? PlcWords.WordsForString(count) : count * kind.WordsPerValue();
+            words = PlcValueCodec.WordCount(kind, count);
             Addresses.EnsureRange(address, words, protocol, forWrite: false);
         }
 
-        return new ReadRequest(address, count, kind, words);
+        return new ReadRequest(address, count, kind, words, order);
     }
 
     /// <summary>Reads the values: one command for any number of words (the answer spans frames as needed).</summary>
@@ -77,56 +81,68 @@ internal sealed class ReadRequest
     {
         if (IsTimerCounterFlag)
         {
-            var flags = new bool[Count];
+            var flags = new PlcValue?[Count];
             for (int i = 0; i < Count; i++)
             {
-                flags[i] = await plc.ReadBitAsync(PlcAddress.WordOf(Address.Area, Address.Word + i), cancellationToken).ConfigureAwait(false);
+                flags[i] = PlcValue.FromBit(await plc.ReadBitAsync(PlcAddress.WordOf(Address.Area, Address.Word + i), cancellationToken).ConfigureAwait(false));
             }
 
             return new Snapshot(this, [], flags);
         }
 
         ushort[] words = await plc.ReadWordsAsync(Address.AsWord(), Words, cancellationToken).ConfigureAwait(false);
-        if (Kind != PlcValueType.Bit)
+        return new Snapshot(this, words, Decode(words));
+    }
+
+    /// <summary>The values in the words; null where the words hold no value of the type (not BCD, not ASCII text).</summary>
+    private PlcValue?[] Decode(ushort[] words)
+    {
+        if (Kind == PlcValueType.String)
         {
-            return new Snapshot(this, words, null);
+            try
+            {
+                return [PlcValueCodec.DecodeValues(Kind, words, Count, Order)[0]];
+            }
+            catch (FormatException)
+            {
+                return [null];
+            }
         }
 
-        var bits = new bool[Count];
-        for (int i = 0; i < Count; i++)
+        var values = new PlcValue?[Count];
+        int per = Kind.WordsPerValue();
+        for (int i = 0; i < values.Length; i++)
         {
-            int n = Address.Bit + i;
-            bits[i] = PlcWords.GetBit(words[n / 16], n % 16);
+            bool bit = Kind == PlcValueType.Bit;
+            values[i] = PlcValueCodec.TryDecode(Kind, bit ? words : words.AsSpan(i * per, per), Order, bit ? Address.Bit + i : 0, out PlcValue value)
+                ? value
+                : null;
         }
 
-        return new Snapshot(this, words, bits);
+        return values;
     }
 }
 
 /// <summary>Values read at one moment, with their presentation.</summary>
 internal sealed class Snapshot
 {
-    public Snapshot(ReadRequest request, ushort[] words, bool[]? bits)
+    public Snapshot(ReadRequest request, ushort[] words, PlcValue?[] values)
     {
         Request = request;
         Words = words;
-        Bits = bits;
+        Values = values;
     }
 
     public ReadRequest Request { get; }
 
     public ushort[] Words { get; }
 
-    public bool[]? Bits { get; }
+    /// <summary>The decoded values; null where the words hold no value of the type.</summary>
+    public PlcValue?[] Values { get; }
 
     private PlcValueType Kind => Request.Kind;
 
-    public int ValueCount => Kind switch
-    {
-        PlcValueType.Bit => Bits!.Length,
-        PlcValueType.String => 1,
-        _ => Request.Count,
-    };
+    public int ValueCount => Values.Length;
 
     /// <summary>The address of value <paramref name="i"/>.</summary>
     public PlcAddress AddressOf(int i)
@@ -156,7 +172,7 @@ internal sealed class Snapshot
 
         if (Kind == PlcValueType.Bit)
         {
-            return Bits![i] != other.Bits![i];
+            return Values[i] != other.Values[i];
         }
 
         if (Kind == PlcValueType.String)
@@ -171,79 +187,67 @@ internal sealed class Snapshot
     /// <summary>The value in words for people, with hex and decimal where both say something.</summary>
     public string Human(int i)
     {
+        PlcValue? value = Values[i];
         switch (Kind)
         {
             case PlcValueType.Bit:
-                return Bits![i] ? "1 (ON)" : "0 (OFF)";
+                return value!.Value.ToBoolean() ? "1 (ON)" : "0 (OFF)";
             case PlcValueType.String:
-                return "\"" + Protocol.FrameText.Printable(TextBytes()) + "\"";
+                return value is { } text
+                    ? "\"" + Protocol.FrameText.Printable(Encoding.ASCII.GetBytes(text.ToString())) + "\""
+                    : $"not ASCII text  ({string.Join(" ", Words.Select(Numbers.Hex))})";
             case PlcValueType.Int32:
             case PlcValueType.UInt32:
             case PlcValueType.Float:
-                uint raw = PlcWords.ReadUInt32(Words.AsSpan(i * 2, 2));
-                string v = Kind switch
-                {
-                    PlcValueType.Int32 => Numbers.Invariant(PlcWords.ReadInt32(Words.AsSpan(i * 2, 2))),
-                    PlcValueType.UInt32 => Numbers.Invariant(raw),
-                    _ => PlcWords.ReadSingle(Words.AsSpan(i * 2, 2)).ToString("R", CultureInfo.InvariantCulture),
-                };
-                return $"{v}  ({Numbers.Hex(raw)})";
+                return $"{value}  ({Numbers.Hex(PlcWords.ReadUInt32(Words.AsSpan(i * 2, 2), Request.Order))})";
             default:
                 ushort w = Words[i];
                 return Kind switch
                 {
-                    PlcValueType.Int16 => $"{Numbers.Invariant(PlcWords.ToInt16(w))}  ({Numbers.Hex(w)})",
-                    PlcValueType.Bcd => TryBcd(w, out int bcd) ? $"{Numbers.Invariant(bcd)}  (BCD {Numbers.Hex(w)})" : $"not BCD  ({Numbers.Hex(w)})",
+                    PlcValueType.Int16 => $"{value}  ({Numbers.Hex(w)})",
+                    PlcValueType.Bcd => value is { } bcd ? $"{bcd}  (BCD {Numbers.Hex(w)})" : $"not BCD  ({Numbers.Hex(w)})",
                     _ => $"{Numbers.Hex(w)}  {Numbers.Invariant(w)}",
                 };
         }
     }
 
-    /// <summary>The value in its natural JSON type (words as unsigned integers; a word that is not BCD as null; NaN/∞ as null).</summary>
+    /// <summary>The value in its natural JSON type (words as unsigned integers; words that hold no value of the type as null; NaN/∞ as null).</summary>
     public void WriteJson(Utf8JsonWriter json, int i)
     {
-        switch (Kind)
+        if (Values[i] is not { } value)
+        {
+            json.WriteNullValue();
+            return;
+        }
+
+        switch (value.Type)
         {
             case PlcValueType.Bit:
-                json.WriteBooleanValue(Bits![i]);
+                json.WriteBooleanValue(value.ToBoolean());
                 break;
             case PlcValueType.String:
-                json.WriteStringValue(Text());
+                json.WriteStringValue(value.ToString());
                 break;
-            case PlcValueType.Int32:
-                json.WriteNumberValue(PlcWords.ReadInt32(Words.AsSpan(i * 2, 2)));
+            case PlcValueType.Int32 or PlcValueType.Bcd:
+                json.WriteNumberValue(value.ToInt32());
                 break;
             case PlcValueType.UInt32:
-                json.WriteNumberValue(PlcWords.ReadUInt32(Words.AsSpan(i * 2, 2)));
-                break;
-            case PlcValueType.Float:
-                float f = PlcWords.ReadSingle(Words.AsSpan(i * 2, 2));
-                if (float.IsFinite(f))
-                {
-                    json.WriteNumberValue(f);
-                }
-                else
-                {
-                    json.WriteNullValue();
-                }
-
+                json.WriteNumberValue(value.ToUInt32());
                 break;
             case PlcValueType.Int16:
-                json.WriteNumberValue(PlcWords.ToInt16(Words[i]));
+                json.WriteNumberValue(value.ToInt16());
                 break;
-            case PlcValueType.Bcd:
-                if (TryBcd(Words[i], out int bcd))
-                {
-                    json.WriteNumberValue(bcd);
-                }
-                else
-                {
-                    json.WriteNullValue();
-                }
-
+            case PlcValueType.Float when float.IsFinite(value.ToSingle()):
+                json.WriteNumberValue(value.ToSingle());
+                break;
+            case PlcValueType.Double when double.IsFinite(value.ToDouble()):
+                json.WriteNumberValue(value.ToDouble());
+                break;
+            case PlcValueType.Float or PlcValueType.Double:
+                json.WriteNullValue();
                 break;
             default:
-                json.WriteNumberValue(Words[i]);
+                json.WriteNumberValue(value.ToUInt16());
                 break;
         }
     }
@@ -270,41 +274,6 @@ internal sealed class Snapshot
             }
 
             json.WriteEndArray();
-        }
-    }
-
-    /// <summary>The characters of a string read: two a word, high byte first, up to the first NUL or the count.</summary>
-    private byte[] TextBytes()
-    {
-        var bytes = new List<byte>(Request.Count);
-        for (int n = 0; n < Request.Count && n / 2 < Words.Length; n++)
-        {
-            ushort w = Words[n / 2];
-            byte b = (byte)(n % 2 == 0 ? w >> 8 : w & 0xFF);
-            if (b == 0)
-            {
-                break;
-            }
-
-            bytes.Add(b);
-        }
-
-        return bytes.ToArray();
-    }
-
-    private string Text() => System.Text.Encoding.Latin1.GetString(TextBytes());
-
-    private static bool TryBcd(ushort word, out int value)
-    {
-        try
-        {
-            value = PlcWords.FromBcd(word);
-            return true;
-        }
-        catch (FormatException)
-        {
-            value = 0;
-            return false;
         }
     }
 }

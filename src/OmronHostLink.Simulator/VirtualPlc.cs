@@ -18,21 +18,21 @@ namespace OmronHostLink.Simulator;
 public sealed class VirtualPlc
 {
     /// <summary>The number of EM banks (0-C).</summary>
-    public const int EmBankCount = 13;
+    public const int EmBankCount = PlcAreaInfo.EmBankCount;
 
     /// <summary>Words per EM bank.</summary>
-    public const int EmBankSize = 32768;
+    public static int EmBankSize { get; } = PlcAddress.AreaSize(PlcArea.Em);
 
     private readonly object _gate = new();
-    private readonly ushort[] _cio = new ushort[6144];
-    private readonly ushort[] _work = new ushort[512];
-    private readonly ushort[] _holding = new ushort[512];
-    private readonly ushort[] _auxiliary = new ushort[960];
-    private readonly ushort[] _dm = new ushort[32768];
-    private readonly ushort[] _timers = new ushort[4096];
-    private readonly ushort[] _counters = new ushort[4096];
-    private readonly bool[] _timerFlags = new bool[4096];
-    private readonly bool[] _counterFlags = new bool[4096];
+    private readonly ushort[] _cio = new ushort[PlcAddress.AreaSize(PlcArea.Cio)];
+    private readonly ushort[] _work = new ushort[PlcAddress.AreaSize(PlcArea.Work)];
+    private readonly ushort[] _holding = new ushort[PlcAddress.AreaSize(PlcArea.Holding)];
+    private readonly ushort[] _auxiliary = new ushort[PlcAddress.AreaSize(PlcArea.Auxiliary)];
+    private readonly ushort[] _dm = new ushort[PlcAddress.AreaSize(PlcArea.Dm)];
+    private readonly ushort[] _timers = new ushort[PlcAddress.AreaSize(PlcArea.Timer)];
+    private readonly ushort[] _counters = new ushort[PlcAddress.AreaSize(PlcArea.Counter)];
+    private readonly bool[] _timerFlags = new bool[PlcAddress.AreaSize(PlcArea.Timer)];
+    private readonly bool[] _counterFlags = new bool[PlcAddress.AreaSize(PlcArea.Counter)];
     private readonly ushort[][] _em = new ushort[EmBankCount][];
     private readonly ForcedBits _forced = new();
     private PlcMode _mode;

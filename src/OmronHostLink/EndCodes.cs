@@ -6,9 +6,9 @@ namespace OmronHostLink;
 public static class EndCodes
 {
     /// <summary>Parses the two characters of an end code (or <c>IC</c>).</summary>
-    public static bool TryParse(ReadOnlySpan<byte> text, out EndCode code)
+    internal static bool TryParse(ReadOnlySpan<byte> text, out EndCode code)
     {
-        if (text.Length == 2 && text[0] == (byte)'I' && text[1] == (byte)'C')
+        if (Protocol.CMode.CModeHeaders.Is(text, Protocol.CMode.CModeHeaders.UndefinedCommand))
         {
             code = EndCode.UndefinedHeader;
             return true;
@@ -21,7 +21,7 @@ public static class EndCodes
 
     /// <summary>The code as the PLC sends it: two hex digits, or <c>IC</c>.</summary>
     public static string ToCode(this EndCode code)
-        => code == EndCode.UndefinedHeader ? "IC" : ((int)code).ToString("X2", CultureInfo.InvariantCulture);
+        => code == EndCode.UndefinedHeader ? Protocol.CMode.CModeHeaders.UndefinedCommand : ((int)code).ToString("X2", CultureInfo.InvariantCulture);
 
     /// <summary>Whether the code is one the manuals define.</summary>
     public static bool IsDefined(EndCode code) => Describe(code) is not null;
@@ -45,6 +45,12 @@ public static class EndCodes
         EndCode.CpuUnitError => EndCodeCategory.CpuError,
         _ => EndCodeCategory.NotExecutable,
     };
+
+    /// <summary>
+    /// Whether the code reports a frame the PLC received damaged (13, A3; on CV-series also 10–12 and A0–A2): the same
+    /// command, sent again, may get through.
+    /// </summary>
+    public static bool IsTransient(this EndCode code) => code.Category() == EndCodeCategory.FrameDamaged;
 
     /// <summary>Every end code the manuals define.</summary>
     public static IReadOnlyList<EndCode> All { get; } =

@@ -102,11 +102,11 @@ internal static class WireEfficiency
         Console.WriteLine("| Protocol | Method | Transactions | Chars on wire | Measured ms (median) | Speed-up |");
         Console.WriteLine("|---|---|---|---|---|---|");
         PlcTag[] tags = ScatteredTags(100, 42);
-        foreach (HostLinkProtocol protocol in new[] { HostLinkProtocol.CMode, HostLinkProtocol.Fins })
+        foreach (HostLinkCommandSet protocol in new[] { HostLinkCommandSet.CMode, HostLinkCommandSet.Fins })
         {
             await using var rig = await Rig.StartAsync(9600, TimeSpan.Zero, protocol);
             ReadPlan plan = new ReadPlanner(protocol, new LineTiming(9600, Bits)).Plan(tags);
-            Measurement planned = await rig.MeasureAsync(runs, c => c.ReadManyAsync(plan).AsTask());
+            Measurement planned = await rig.MeasureAsync(runs, c => c.ReadTagsAsync(plan).AsTask());
             Measurement naive = await rig.MeasureAsync(runs, async c =>
             {
                 foreach (PlcTag tag in tags)
@@ -115,10 +115,10 @@ internal static class WireEfficiency
                     await unit.ReadWordsAsync(tag.Address.AsWord(), tag.WordCount);
                 }
             });
-            string name = protocol == HostLinkProtocol.CMode ? "C-mode" : "FINS";
+            string name = protocol == HostLinkCommandSet.CMode ? "C-mode" : "FINS";
             string kinds = string.Join(", ", plan.Reads.GroupBy(r => r.Kind).Select(g => $"{g.Count()} {g.Key}"));
             Console.WriteLine($"| {name} | one read per tag | {naive.Exchanges} | {naive.Characters} | {naive.MedianMs:0} | 1.00× |");
-            Console.WriteLine($"| {name} | ReadManyAsync (planned: {kinds}) | {plan.TransactionCount} | {planned.Characters} | {planned.MedianMs:0} | {naive.MedianMs / planned.MedianMs:0.00}× |");
+            Console.WriteLine($"| {name} | ReadTagsAsync (planned: {kinds}) | {plan.TransactionCount} | {planned.Characters} | {planned.MedianMs:0} | {naive.MedianMs / planned.MedianMs:0.00}× |");
         }
     }
 
@@ -158,7 +158,7 @@ internal static class WireEfficiency
         private int _baud;
         private TimeSpan _turnaround;
 
-        public static async Task<Rig> StartAsync(int baud, TimeSpan turnaround, HostLinkProtocol protocol = HostLinkProtocol.CMode)
+        public static async Task<Rig> StartAsync(int baud, TimeSpan turnaround, HostLinkCommandSet protocol = HostLinkCommandSet.CMode)
         {
             var plc = new VirtualPlc(new VirtualPlcOptions { Units = [0, 1], BaudRate = baud, BitsPerCharacter = Bits, Turnaround = turnaround });
             for (int i = 0; i < 10000; i++)
@@ -174,7 +174,7 @@ internal static class WireEfficiency
             {
                 LineTiming = new LineTiming(baud, Bits),
                 TurnaroundAllowance = TimeSpan.FromMilliseconds(200) + turnaround,
-                Protocol = protocol,
+                CommandSet = protocol,
             });
 
             // Warm-up: JIT, pools, the link's pump.

@@ -31,7 +31,7 @@ public sealed class LinkOptions
     public int? LineBaudRate { get; set; }
 
     /// <summary>C-mode (default) or FINS for the reads.</summary>
-    public HostLinkProtocol Protocol { get; set; } = HostLinkProtocol.CMode;
+    public HostLinkCommandSet Protocol { get; set; } = HostLinkCommandSet.CMode;
 
     /// <summary>How long the PLC (and a gateway) may take to start answering. Default 300 ms.</summary>
     public TimeSpan TurnaroundAllowance { get; set; } = TimeSpan.FromMilliseconds(300);

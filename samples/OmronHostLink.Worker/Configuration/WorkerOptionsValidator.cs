@@ -123,7 +123,7 @@ public sealed class WorkerOptionsValidator : IValidateOptions<WorkerOptions>
         }
     }
 
-    private static void ValidateGroup(string path, PollGroupOptions group, HostLinkProtocol protocol, List<string> failures)
+    private static void ValidateGroup(string path, PollGroupOptions group, HostLinkCommandSet protocol, List<string> failures)
     {
         if (group.Unit is < 0 or > 31)
         {

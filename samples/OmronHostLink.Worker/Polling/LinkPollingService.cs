@@ -119,7 +119,7 @@ public sealed class LinkPollingService : BackgroundService
         {
             TurnaroundAllowance = _options.TurnaroundAllowance,
             ReadRetries = _options.ReadRetries,
-            Protocol = _options.Protocol,
+            CommandSet = _options.Protocol,
             WordOrder = _options.WordOrder,
             LoggerFactory = _loggerFactory,
         };

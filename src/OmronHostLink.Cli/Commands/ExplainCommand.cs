@@ -1,4 +1,5 @@
 using System.CommandLine;
+using System.Globalization;
 
 namespace OmronHostLink.Cli.Commands;
 
@@ -17,7 +18,7 @@ internal static class ExplainCommand
         context.SetAction(command, json, (parse, output, _) =>
         {
             FrameExplanation x = FrameExplainer.Explain(parse.GetValue(frame)!, parse.GetValue(response));
-            output.Result(w => FrameExplainer.WriteHuman(w, x), j => FrameExplainer.WriteJson(j, x));
+            output.Result(w => WriteHuman(w, x), j => ExplainJsonContext.Write(j, x));
             if (!x.Valid)
             {
                 output.Fail($"The frame is not valid: {x.Problems[0]}");
@@ -28,4 +29,64 @@ internal static class ExplainCommand
         });
         return command;
     }
+
+    /// <summary>Prints the explanation for people.</summary>
+    private static void WriteHuman(TextWriter w, FrameExplanation x)
+    {
+        w.WriteLine($"Frame:      {x.Frame}");
+        w.WriteLine($"Direction:  {(x.IsResponse ? "response (PLC to host)" : "command (host to PLC)")}");
+        if (x.Unit is { } unit)
+        {
+            w.WriteLine($"Unit:       {unit:D2}");
+        }
+
+        if (x.Header is not null)
+        {
+            w.WriteLine($"Header:     {x.Header}{(x.Name is null ? " (unknown header)" : " - " + x.Name)}");
+        }
+
+        if (x.EndCode is not null || x.EndCodeMeaning is not null)
+        {
+            w.WriteLine($"End code:   {x.EndCode ?? "(none)"} - {x.EndCodeMeaning}");
+        }
+
+        if (x.Text is not null)
+        {
+            w.WriteLine($"Text:       {(x.Text.Length == 0 ? "(none)" : x.Text)}");
+        }
+
+        if (x.Fcs is { } fcs)
+        {
+            w.WriteLine($"FCS:        found {fcs.Found}, expected {fcs.Expected}: {(fcs.Ok ? "OK" : "MISMATCH")}");
+        }
+
+        w.WriteLine($"Ending:     {(x.Final ? "*CR (final frame)" : "CR (more frames follow)")}");
+        foreach (KeyValuePair<string, object?> field in x.Fields)
+        {
+            w.WriteLine($"  {field.Key}: {Human(field.Value)}");
+        }
+
+        foreach (string note in x.Notes)
+        {
+            w.WriteLine($"Note:       {note}");
+        }
+
+        foreach (string problem in x.Problems)
+        {
+            w.WriteLine($"Problem:    {problem}");
+        }
+
+        w.WriteLine($"Valid:      {(x.Valid ? "yes" : "no")}");
+    }
+
+    private static string Human(object? value) => value switch
+    {
+        null => "(none)",
+        bool b => b ? "yes" : "no",
+        long[] ls => string.Join(" ", ls.Select(l => $"0x{l:X4}({l})")),
+        bool[] bs => string.Join(" ", bs.Select(b => b ? "1" : "0")),
+        string[] ss => string.Join(" ", ss),
+        string s when s.Length == 0 => "(empty)",
+        _ => Convert.ToString(value, CultureInfo.InvariantCulture) ?? string.Empty,
+    };
 }

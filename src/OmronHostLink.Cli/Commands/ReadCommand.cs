@@ -63,8 +63,8 @@ internal static class ReadCommand
             plcAddress = Addresses.Parse(a);
         }
 
-        HostLinkProtocol protocol = parse.GetValue(connection.Fins) ? HostLinkProtocol.Fins : HostLinkProtocol.CMode;
-        return ReadRequest.Create(plcAddress, c, parse.GetValue(kind), protocol);
+        HostLinkCommandSet protocol = parse.GetValue(connection.Fins) ? HostLinkCommandSet.Fins : HostLinkCommandSet.CMode;
+        return ReadRequest.Create(plcAddress, c, parse.GetValue(kind), protocol, connection.WordOrder);
     }
 
     /// <summary>One line per value: address, then the value with hex and decimal.</summary>

@@ -42,7 +42,7 @@ internal static class WriteCommand
 
             string? kindText = parse.GetValue(kind);
             PlcValueType k = kindText is null ? target.IsBit ? PlcValueType.Bit : PlcValueType.Word : ValueKinds.Parse(kindText);
-            HostLinkProtocol protocol = parse.GetValue(connection.Fins) ? HostLinkProtocol.Fins : HostLinkProtocol.CMode;
+            HostLinkCommandSet protocol = parse.GetValue(connection.Fins) ? HostLinkCommandSet.Fins : HostLinkCommandSet.CMode;
             bool useRmw = parse.GetValue(rmw);
             string summary;
             if (k == PlcValueType.Bit)
@@ -80,7 +80,7 @@ internal static class WriteCommand
                 throw new UsageException($"{target} names a bit; write it with --as bit, or give the word address {target.AsWord()}.");
             }
 
-            ushort[] words = Encode(k, v);
+            ushort[] words = Encode(k, v, connection.WordOrder);
             Addresses.EnsureRange(target, words.Length, protocol, forWrite: true);
             await using (HostLinkClient client = connection.CreateClient(parse, output))
             {
@@ -111,7 +111,7 @@ internal static class WriteCommand
             });
 
     /// <summary>The words for the values, checked (nothing is sent when one is out of range).</summary>
-    public static ushort[] Encode(PlcValueType kind, string[] values)
+    public static ushort[] Encode(PlcValueType kind, string[] values, WordOrder order)
     {
         if (kind == PlcValueType.String)
         {
@@ -121,56 +121,30 @@ internal static class WriteCommand
                 throw new UsageException("The text must be ASCII.");
             }
 
-            return PlcWords.FromString(text);
+            return PlcValueCodec.Encode([PlcValue.FromString(text)], order);
         }
 
-        var words = new List<ushort>();
-        Span<ushort> pair = stackalloc ushort[2];
-        foreach (string v in values)
-        {
-            switch (kind)
-            {
-                case PlcValueType.Word:
-                case PlcValueType.UInt16:
-                    words.Add((ushort)Numbers.ParseInteger(v, 0, ushort.MaxValue, "The value"));
-                    break;
-                case PlcValueType.Int16:
-                    long i16 = v.StartsWith("0x", StringComparison.OrdinalIgnoreCase)
-                        ? Numbers.ParseInteger(v, 0, ushort.MaxValue, "The int16 value")
-                        : Numbers.ParseInteger(v, short.MinValue, short.MaxValue, "The int16 value");
-                    words.Add(unchecked((ushort)i16));
-                    break;
-                case PlcValueType.Bcd:
-                    words.Add(PlcWords.ToBcd((int)Numbers.ParseInteger(v, 0, PlcWords.MaxBcd, "The BCD value")));
-                    break;
-                case PlcValueType.Int32:
-                    long i32 = v.StartsWith("0x", StringComparison.OrdinalIgnoreCase)
-                        ? Numbers.ParseInteger(v, 0, uint.MaxValue, "The int32 value")
-                        : Numbers.ParseInteger(v, int.MinValue, int.MaxValue, "The int32 value");
-                    PlcWords.WriteUInt32(unchecked((uint)i32), pair);
-                    words.Add(pair[0]);
-                    words.Add(pair[1]);
-                    break;
-                case PlcValueType.UInt32:
-                    PlcWords.WriteUInt32((uint)Numbers.ParseInteger(v, 0, uint.MaxValue, "The uint32 value"), pair);
-                    words.Add(pair[0]);
-                    words.Add(pair[1]);
-                    break;
-                case PlcValueType.Float:
-                    if (!float.TryParse(v, NumberStyles.Float, CultureInfo.InvariantCulture, out float f) || !float.IsFinite(f))
-                    {
-                        throw new UsageException($"The float value '{v}' is not a finite number such as 1.5 or -2e3.");
-                    }
-
-                    PlcWords.WriteSingle(f, pair);
-                    words.Add(pair[0]);
-                    words.Add(pair[1]);
-                    break;
-            }
-        }
-
-        return words.ToArray();
+        return PlcValueCodec.Encode(values.Select(v => Parse(kind, v)).ToArray(), order);
     }
+
+    /// <summary>One value typed by the user: decimal or 0x-hex integers (hex gives the raw bits of signed types), finite REAL.</summary>
+    private static PlcValue Parse(PlcValueType kind, string v) => kind switch
+    {
+        PlcValueType.Word => PlcValue.FromWord((ushort)Numbers.ParseInteger(v, 0, ushort.MaxValue, "The value")),
+        PlcValueType.UInt16 => PlcValue.FromUInt16((ushort)Numbers.ParseInteger(v, 0, ushort.MaxValue, "The value")),
+        PlcValueType.Int16 => PlcValue.FromInt16(unchecked((short)(v.StartsWith("0x", StringComparison.OrdinalIgnoreCase)
+            ? Numbers.ParseInteger(v, 0, ushort.MaxValue, "The int16 value")
+            : Numbers.ParseInteger(v, short.MinValue, short.MaxValue, "The int16 value")))),
+        PlcValueType.Bcd => PlcValue.FromBcd((int)Numbers.ParseInteger(v, 0, PlcWords.MaxBcd, "The BCD value")),
+        PlcValueType.Int32 => PlcValue.FromInt32(unchecked((int)(v.StartsWith("0x", StringComparison.OrdinalIgnoreCase)
+            ? Numbers.ParseInteger(v, 0, uint.MaxValue, "The int32 value")
+            : Numbers.ParseInteger(v, int.MinValue, int.MaxValue, "The int32 value")))),
+        PlcValueType.UInt32 => PlcValue.FromUInt32((uint)Numbers.ParseInteger(v, 0, uint.MaxValue, "The uint32 value")),
+        PlcValueType.Float => float.TryParse(v, NumberStyles.Float, CultureInfo.InvariantCulture, out float f) && float.IsFinite(f)
+            ? PlcValue.FromSingle(f)
+            : throw new UsageException($"The float value '{v}' is not a finite number such as 1.5 or -2e3."),
+        _ => throw new UsageException($"--as {kind.Name()} values cannot be written as words."),
+    };
 
     public static bool ParseBit(string text) => text.Trim().ToLowerInvariant() switch
     {

@@ -20,14 +20,6 @@ namespace OmronHostLink.Simulator.Protocol;
 /// </remarks>
 public sealed class FinsResponder
 {
-    private const int FirstWritableAuxiliaryWord = 448;
-    private const ushort Normal = 0x0000;
-    private const ushort UndefinedCommand = 0x0401;
-    private const ushort AreaMissing = 0x1101;
-    private const ushort AddressRange = 0x1103;
-    private const ushort ReadOnly = 0x2101;
-    private const ushort NotInRunMode = 0x2206;
-
     private readonly VirtualPlc _plc;
 
     /// <summary>Creates a responder for <paramref name="plc"/>.</summary>
@@ -78,7 +70,7 @@ public sealed class FinsResponder
         }
 
         PlcErrorInfo errors = _plc.Errors;
-        code |= (ushort)((errors.FirstWord != 0 ? 0x0080 : 0) | (errors.SecondWord != 0 ? 0x0040 : 0));
+        code |= (ushort)((errors.FirstWord != 0 ? FinsEndCode.FatalCpuErrorFlag : 0) | (errors.SecondWord != 0 ? FinsEndCode.NonFatalCpuErrorFlag : 0));
         var response = new byte[FinsMessage.GetResponseLength(message.Header, data.Length)];
         FinsMessage.WriteResponse(response, unit, message.Header, message.CommandCode, new FinsEndCode(code), data);
         return new SimResponse(response, response.Length, 1) { IsUnsplit = true, Delay = message.Header.ResponseWaitTime };
@@ -112,51 +104,19 @@ public sealed class FinsResponder
             word += index;
         }
 
-        PlcArea area;
-        int bank = 0;
-        switch (code)
+        // The simulator's current EM bank is always bank 0.
+        if (!FinsAddressing.TryLocate(code, word, currentEmBank: 0, out PlcArea area, out word, out int bank))
         {
-            case FinsMemoryArea.CioWord or FinsMemoryArea.CioBit:
-                area = PlcArea.Cio;
-                break;
-            case FinsMemoryArea.WorkWord or FinsMemoryArea.WorkBit:
-                area = PlcArea.Work;
-                break;
-            case FinsMemoryArea.HoldingWord or FinsMemoryArea.HoldingBit:
-                area = PlcArea.Holding;
-                break;
-            case FinsMemoryArea.AuxiliaryWord or FinsMemoryArea.AuxiliaryBit:
-                area = PlcArea.Auxiliary;
-                break;
-            case FinsMemoryArea.DmWord or FinsMemoryArea.DmBit:
-                area = PlcArea.Dm;
-                break;
-            case FinsMemoryArea.EmCurrentBankWord or FinsMemoryArea.EmCurrentBankBit:
-                area = PlcArea.Em;
-                break;
-            case >= FinsMemoryArea.EmBank0Word and <= FinsMemoryArea.EmBank0Word + FinsMemoryArea.MaxEmBank:
-                area = PlcArea.Em;
-                bank = code - FinsMemoryArea.EmBank0Word;
-                break;
-            case >= FinsMemoryArea.EmBank0Bit and <= FinsMemoryArea.EmBank0Bit + FinsMemoryArea.MaxEmBank:
-                area = PlcArea.Em;
-                bank = code - FinsMemoryArea.EmBank0Bit;
-                break;
-            case FinsMemoryArea.TimerCounterPv or FinsMemoryArea.TimerCounterFlag:
-                if (code == FinsMemoryArea.TimerCounterFlag && address.Bit != 0)
-                {
-                    return false;
-                }
-
-                area = word >= FinsMemoryArea.CounterAddressOffset ? PlcArea.Counter : PlcArea.Timer;
-                word -= area == PlcArea.Counter ? FinsMemoryArea.CounterAddressOffset : 0;
-                location = new Location(area, word, -1, 0, Flag: code == FinsMemoryArea.TimerCounterFlag);
-                return word < PlcAddress.AreaSize(area);
-            default:
-                return false;
+            return false;
         }
 
-        location = new Location(area, word, bit, bank, Flag: false);
+        bool flag = code == FinsMemoryArea.TimerCounterFlag;
+        if (flag && address.Bit != 0)
+        {
+            return false;
+        }
+
+        location = new Location(area, word, flag ? -1 : bit, bank, Flag: flag);
         return word < PlcAddress.AreaSize(area);
     }
 
@@ -164,38 +124,29 @@ public sealed class FinsResponder
     {
         if (!IsSupported(address.AreaCode))
         {
-            return AreaMissing;
+            return FinsEndCodes.AreaClassificationMissing;
         }
 
         if (count == 0)
         {
-            return Normal;
+            return FinsEndCodes.NormalCompletion;
         }
 
         if (!TryLocate(address, 0, out Location first) || !TryLocate(address, count - 1, out Location last)
             || first.Area != last.Area)
         {
-            return AddressRange;
+            return FinsEndCodes.AddressRangeError;
         }
 
-        if (write && first.Area == PlcArea.Auxiliary && first.Word < FirstWritableAuxiliaryWord)
+        if (write && first.Area == PlcArea.Auxiliary && first.Word < PlcAreaInfo.FirstWritableAuxiliaryWord)
         {
-            return ReadOnly;
+            return FinsEndCodes.WriteNotPossibleReadOnly;
         }
 
-        return Normal;
+        return FinsEndCodes.NormalCompletion;
     }
 
-    private static bool IsSupported(byte code) => code switch
-    {
-        FinsMemoryArea.CioWord or FinsMemoryArea.WorkWord or FinsMemoryArea.HoldingWord or FinsMemoryArea.AuxiliaryWord
-            or FinsMemoryArea.DmWord or FinsMemoryArea.TimerCounterPv or FinsMemoryArea.EmCurrentBankWord => true,
-        FinsMemoryArea.CioBit or FinsMemoryArea.WorkBit or FinsMemoryArea.HoldingBit or FinsMemoryArea.AuxiliaryBit
-            or FinsMemoryArea.DmBit or FinsMemoryArea.TimerCounterFlag or FinsMemoryArea.EmCurrentBankBit => true,
-        >= FinsMemoryArea.EmBank0Word and <= FinsMemoryArea.EmBank0Word + FinsMemoryArea.MaxEmBank => true,
-        >= FinsMemoryArea.EmBank0Bit and <= FinsMemoryArea.EmBank0Bit + FinsMemoryArea.MaxEmBank => true,
-        _ => false,
-    };
+    private static bool IsSupported(byte code) => FinsAddressing.TryLocate(code, 0, 0, out _, out _, out _);
 
     private ushort Execute(FinsCommand command, out byte[] data)
     {
@@ -205,7 +156,7 @@ public sealed class FinsResponder
             case MemoryAreaReadCommand read:
             {
                 ushort check = CheckArea(read.Address, read.Count, write: false);
-                if (check == Normal)
+                if (check == FinsEndCodes.NormalCompletion)
                 {
                     data = ReadElements(read.Address, read.Count);
                 }
@@ -216,7 +167,7 @@ public sealed class FinsResponder
             case MemoryAreaWriteCommand write:
             {
                 ushort check = CheckArea(write.Address, write.Count, write: true);
-                if (check == Normal)
+                if (check == FinsEndCodes.NormalCompletion)
                 {
                     WriteElements(write.Address, write.Count, write.Data.Span);
                 }
@@ -227,7 +178,7 @@ public sealed class FinsResponder
             case MemoryAreaFillCommand fill:
             {
                 ushort check = CheckArea(fill.Address, fill.Count, write: true);
-                if (check != Normal)
+                if (check != FinsEndCodes.NormalCompletion)
                 {
                     return check;
                 }
@@ -247,7 +198,7 @@ public sealed class FinsResponder
                 }
 
                 WriteElements(fill.Address, fill.Count, bytes);
-                return Normal;
+                return FinsEndCodes.NormalCompletion;
             }
 
             case MultipleMemoryAreaReadCommand multiple:
@@ -256,7 +207,7 @@ public sealed class FinsResponder
                 foreach (FinsMemoryAddress item in multiple.Items)
                 {
                     ushort check = CheckArea(item, 1, write: false);
-                    if (check != Normal)
+                    if (check != FinsEndCodes.NormalCompletion)
                     {
                         return check;
                     }
@@ -266,19 +217,19 @@ public sealed class FinsResponder
                 }
 
                 data = result.ToArray();
-                return Normal;
+                return FinsEndCodes.NormalCompletion;
             }
 
             case MemoryAreaTransferCommand transfer:
             {
                 if (FinsMemoryArea.ElementSize(transfer.Source.AreaCode) != 2 || FinsMemoryArea.ElementSize(transfer.Destination.AreaCode) != 2)
                 {
-                    return AreaMissing;
+                    return FinsEndCodes.AreaClassificationMissing;
                 }
 
                 ushort check = CheckArea(transfer.Source, transfer.Count, write: false);
-                check = check != Normal ? check : CheckArea(transfer.Destination, transfer.Count, write: true);
-                if (check == Normal && transfer.Count > 0)
+                check = check != FinsEndCodes.NormalCompletion ? check : CheckArea(transfer.Destination, transfer.Count, write: true);
+                if (check == FinsEndCodes.NormalCompletion && transfer.Count > 0)
                 {
                     WriteElements(transfer.Destination, transfer.Count, ReadElements(transfer.Source, transfer.Count));
                 }
@@ -289,16 +240,16 @@ public sealed class FinsResponder
             case RunCommand run:
                 // [unverified] With no mode given the CPU Unit goes to MONITOR mode.
                 _plc.Mode = run.Mode == FinsCpuMode.Run ? PlcMode.Run : PlcMode.Monitor;
-                return Normal;
+                return FinsEndCodes.NormalCompletion;
             case StopCommand:
                 _plc.Mode = PlcMode.Program;
-                return Normal;
+                return FinsEndCodes.NormalCompletion;
             case CpuUnitDataReadCommand:
             {
                 var unitData = new FinsCpuUnitData(CpuModel, CpuVersion);
                 data = new byte[unitData.Length];
                 unitData.Write(data);
-                return Normal;
+                return FinsEndCodes.NormalCompletion;
             }
 
             case CpuUnitStatusReadCommand:
@@ -315,7 +266,7 @@ public sealed class FinsResponder
                     message ?? string.Empty);
                 data = new byte[FinsCpuStatus.Length];
                 status.Write(data);
-                return Normal;
+                return FinsEndCodes.NormalCompletion;
             }
 
             case CycleTimeReadCommand:
@@ -324,7 +275,7 @@ public sealed class FinsResponder
                 var cycle = new FinsCycleTime(10, 15, 8);
                 data = new byte[FinsCycleTime.Length];
                 cycle.Write(data);
-                return Normal;
+                return FinsEndCodes.NormalCompletion;
             }
 
             case ClockReadCommand:
@@ -332,25 +283,25 @@ public sealed class FinsResponder
                 var clock = new FinsClock(_plc.Clock);
                 data = new byte[FinsClock.Length];
                 clock.Write(data);
-                return Normal;
+                return FinsEndCodes.NormalCompletion;
             }
 
             case ClockWriteCommand clockWrite:
             {
                 DateTime now = _plc.Clock;
                 _plc.Clock = clockWrite.IncludesSecond ? clockWrite.Time : clockWrite.Time.AddSeconds(now.Second);
-                return Normal;
+                return FinsEndCodes.NormalCompletion;
             }
 
             case ErrorClearCommand:
                 _plc.ClearErrors();
-                return Normal;
+                return FinsEndCodes.NormalCompletion;
             case ErrorLogReadCommand:
             {
                 var log = new FinsErrorLog(20, 0, []);
                 data = new byte[log.Length];
                 log.Write(data);
-                return Normal;
+                return FinsEndCodes.NormalCompletion;
             }
 
             case ForcedSetResetCommand force:
@@ -358,13 +309,13 @@ public sealed class FinsResponder
             case ForcedSetResetCancelCommand:
                 if (_plc.Mode == PlcMode.Run)
                 {
-                    return NotInRunMode;
+                    return FinsEndCodes.NotExecutableInRunMode;
                 }
 
                 _plc.ReleaseAllForced();
-                return Normal;
+                return FinsEndCodes.NormalCompletion;
             default:
-                return UndefinedCommand;
+                return FinsEndCodes.UndefinedCommand;
         }
     }
 
@@ -372,7 +323,7 @@ public sealed class FinsResponder
     {
         if (_plc.Mode == PlcMode.Run)
         {
-            return NotInRunMode;
+            return FinsEndCodes.NotExecutableInRunMode;
         }
 
         var targets = new List<(FinsForceAction Action, Location Where)>();
@@ -381,12 +332,12 @@ public sealed class FinsResponder
             byte code = item.Address.AreaCode;
             if (code is not (FinsMemoryArea.CioBit or FinsMemoryArea.WorkBit or FinsMemoryArea.HoldingBit or FinsMemoryArea.TimerCounterFlag))
             {
-                return AreaMissing;
+                return FinsEndCodes.AreaClassificationMissing;
             }
 
             if (!TryLocate(item.Address, 0, out Location where))
             {
-                return AddressRange;
+                return FinsEndCodes.AddressRangeError;
             }
 
             targets.Add((item.Action, where));
@@ -410,7 +361,7 @@ public sealed class FinsResponder
             }
         }
 
-        return Normal;
+        return FinsEndCodes.NormalCompletion;
     }
 
     private void SetElement(Location where, bool value)

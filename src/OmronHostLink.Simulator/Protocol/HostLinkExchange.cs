@@ -1,4 +1,5 @@
 using OmronHostLink.Protocol;
+using OmronHostLink.Protocol.CMode;
 using OmronHostLink.Protocol.Fins;
 
 namespace OmronHostLink.Simulator.Protocol;
@@ -64,7 +65,7 @@ internal sealed class HostLinkExchange
             }
         }
 
-        if (IsInitialize(frame))
+        if (CModeFrames.IsInitialize(frame))
         {
             Reset();
             return LinkReply.None;
@@ -87,26 +88,17 @@ internal sealed class HostLinkExchange
         }
     }
 
-    private static bool IsInitialize(ReadOnlySpan<byte> frame)
-        => frame.Length >= 3 && frame[0] == (byte)'@' && frame[1] == (byte)'*' && frame[2] == (byte)'*';
-
-    private static bool TryUnit(ReadOnlySpan<byte> frame, out int unit)
-    {
-        unit = -1;
-        return frame.Length >= 3 && frame[0] == (byte)'@' && HexAscii.TryParseDecimal(frame.Slice(1, 2), out unit);
-    }
-
     private LinkReply WhileSending(ReadOnlySpan<byte> frame)
     {
         if (frame.Length > 0 && frame[0] == (byte)'@')
         {
-            if (!TryUnit(frame, out int unit) || !_units.Contains(unit))
+            if (!MessagePrefix.TryReadUnit(frame, out int unit) || !_units.Contains(unit))
             {
                 // Another unit's traffic: not ours, and not a delimiter for us.
                 return LinkReply.None;
             }
 
-            if (frame.Length >= 5 && frame[3] == (byte)'X' && frame[4] == (byte)'Z')
+            if (frame.Length >= MessagePrefix.Length && CModeHeaders.Is(frame.Slice(3, 2), CModeHeaders.Abort))
             {
                 Reset();
                 return LinkReply.None;
@@ -155,7 +147,7 @@ internal sealed class HostLinkExchange
 
     private LinkReply First(ReadOnlySpan<byte> frame)
     {
-        if (!TryUnit(frame, out int unit) || !_units.Contains(unit) || frame.Length < 6)
+        if (!MessagePrefix.TryReadUnit(frame, out int unit) || !_units.Contains(unit) || frame.Length < 6)
         {
             // Not for us, or too damaged to know whom to answer.
             return LinkReply.None;
@@ -163,20 +155,15 @@ internal sealed class HostLinkExchange
 
         _unit = unit;
         ReadOnlySpan<byte> header = frame.Slice(3, 2);
-        int limit = HostLinkResponder.IsFins(header) ? FinsMessage.MaxFrameLength : FrameWriter.MaxFirstFrameLength;
+        int limit = CModeHeaders.Is(header, CModeHeaders.Fins) ? FinsMessage.MaxFrameLength : FrameWriter.MaxFirstFrameLength;
         if (frame.Length > limit)
         {
             return Error(header, EndCode.FrameLengthError);
         }
 
-        FrameInfo info;
-        try
+        if (Damaged(frame, first: true, out FrameInfo info) is { } damaged)
         {
-            info = FrameParser.ParseFirst(frame);
-        }
-        catch (HostLinkFrameException e)
-        {
-            return Error(header, e.Error == FrameError.BadFcs ? EndCode.FcsError : EndCode.FormatError);
+            return Error(header, damaged);
         }
 
         ReadOnlySpan<byte> text = info.Text(frame);
@@ -185,19 +172,19 @@ internal sealed class HostLinkExchange
             return Send(_responder.Respond(unit, header, text));
         }
 
-        if (!HostLinkResponder.IsDivisible(header))
+        if (!CModeAreaInfo.TryFromHeader(header, out CModeArea area, out bool write) || !write)
         {
-            return Error(header, HostLinkResponder.IsKnownHeader(header) ? EndCode.FormatError : EndCode.UndefinedHeader);
+            return Error(header, CModeHeaders.IsExecutable(header) ? EndCode.FormatError : EndCode.UndefinedHeader);
         }
 
         // A divided write: the address and at least the first word must be in the first frame, in whole words.
-        int fixedLength = header[1] == (byte)'E' ? 6 : 4;
+        int fixedLength = AreaWriteCommand.GetFixedTextLength(area);
         if (text.Length < fixedLength + 4 || (text.Length - fixedLength) % 4 != 0)
         {
             return Error(header, EndCode.FormatError);
         }
 
-        if (!AllHex(text.Slice(fixedLength)) || !AllDigits(text.Slice(fixedLength - 4, 4)) || (fixedLength == 6 && !AllHex(text.Slice(0, 2))))
+        if (!HexAscii.IsHex(text.Slice(fixedLength)) || !HexAscii.IsDecimal(text.Slice(fixedLength - 4, 4)) || !HexAscii.IsHex(text.Slice(0, CModeAreaInfo.BankLength(area))))
         {
             return Error(header, EndCode.EntryNumberDataError);
         }
@@ -216,14 +203,9 @@ internal sealed class HostLinkExchange
             return Error(_header, EndCode.AbortedFrameLengthError);
         }
 
-        FrameInfo info;
-        try
+        if (Damaged(frame, first: false, out FrameInfo info) is { } damaged)
         {
-            info = FrameParser.ParseContinuation(frame);
-        }
-        catch (HostLinkFrameException e)
-        {
-            return Error(_header, e.Error == FrameError.BadFcs ? EndCode.AbortedFcsError : EndCode.AbortedFormatError);
+            return Error(_header, damaged);
         }
 
         ReadOnlySpan<byte> text = info.Text(frame);
@@ -238,7 +220,7 @@ internal sealed class HostLinkExchange
             return Error(_header, EndCode.AbortedFormatError);
         }
 
-        if (!AllHex(text) || _text.Count + text.Length > MaxCommandText)
+        if (!HexAscii.IsHex(text) || _text.Count + text.Length > MaxCommandText)
         {
             return Error(_header, EndCode.AbortedEntryNumberDataError);
         }
@@ -256,37 +238,32 @@ internal sealed class HostLinkExchange
         return Send(_responder.Respond(unit, header, all));
     }
 
+    /// <summary>
+    /// The end code a damaged frame is answered with: FCS or format error (13, 14) for a first frame, the aborted ones
+    /// (A3, A4) for a later frame; null for a sound frame.
+    /// </summary>
+    private static EndCode? Damaged(ReadOnlySpan<byte> frame, bool first, out FrameInfo info)
+    {
+        try
+        {
+            info = first ? FrameParser.ParseFirst(frame) : FrameParser.ParseContinuation(frame);
+            return null;
+        }
+        catch (HostLinkFrameException e)
+        {
+            info = default;
+            bool fcs = e.Error == FrameError.BadFcs;
+            return first
+                ? fcs ? EndCode.FcsError : EndCode.FormatError
+                : fcs ? EndCode.AbortedFcsError : EndCode.AbortedFormatError;
+        }
+    }
+
     private void AddText(ReadOnlySpan<byte> text)
     {
         foreach (byte b in text)
         {
             _text.Add(b);
         }
-    }
-
-    private static bool AllHex(ReadOnlySpan<byte> text)
-    {
-        foreach (byte b in text)
-        {
-            if (!HexAscii.TryParseNibble(b, out _))
-            {
-                return false;
-            }
-        }
-
-        return true;
-    }
-
-    private static bool AllDigits(ReadOnlySpan<byte> text)
-    {
-        foreach (byte b in text)
-        {
-            if (b is < (byte)'0' or > (byte)'9')
-            {
-                return false;
-            }
-        }
-
-        return true;
     }
 }

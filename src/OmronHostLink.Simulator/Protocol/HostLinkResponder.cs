@@ -14,7 +14,7 @@ namespace OmronHostLink.Simulator.Protocol;
 public sealed class HostLinkResponder
 {
     /// <summary>Characters an answer keeps in its first frame: <c>@</c>, unit, header, end code.</summary>
-    public const int ResponseFixedLength = 7;
+    public const int ResponseFixedLength = CModeResponse.PrefixLength + CModeResponse.EndCodeLength;
 
     /// <summary>Completion flags an RG answer carries in each frame after the first.</summary>
     public const int MaxFlagsPerLaterFrame = 124;
@@ -31,30 +31,6 @@ public sealed class HostLinkResponder
         _fins = new FinsResponder(plc);
     }
 
-    /// <summary>Whether a header is <c>FA</c>: FINS over Host Link, whose frames are never divided and may be 1,115 characters long.</summary>
-    /// <param name="header">The two header characters.</param>
-    /// <returns>True for FA.</returns>
-    public static bool IsFins(ReadOnlySpan<byte> header) => header.Length == 2 && header[0] == (byte)'F' && header[1] == (byte)'A';
-
-    /// <summary>Whether a header names a command that may be divided into several frames (the area writes).</summary>
-    /// <param name="header">The two header characters.</param>
-    /// <returns>True for WR, WL, WH, WC, WD, WJ, WE.</returns>
-    public static bool IsDivisible(ReadOnlySpan<byte> header)
-        => CModeAreaInfo.TryFromHeader(header, out _, out bool write) && write;
-
-    /// <summary>Whether the simulator knows the header (anything else is answered with IC).</summary>
-    /// <param name="header">The two header characters.</param>
-    /// <returns>True for the C-mode commands the simulator executes.</returns>
-    public static bool IsKnownHeader(ReadOnlySpan<byte> header)
-    {
-        if (CModeAreaInfo.TryFromHeader(header, out _, out _))
-        {
-            return true;
-        }
-
-        return header.Length == 2 && Encoding.ASCII.GetString(header) is "MS" or "SC" or "MF" or "MM" or "TS" or "KS" or "KR" or "FK" or "KC" or "XZ" or "FA";
-    }
-
     /// <summary>An answer carrying only an end code (error answers carry no text).</summary>
     /// <param name="unit">The unit number 0-31.</param>
     /// <param name="header">The header echoed.</param>
@@ -65,7 +41,7 @@ public sealed class HostLinkResponder
         if (code == EndCode.UndefinedHeader)
         {
             var ic = new byte[CModeCommand.PrefixLength];
-            CModeResponse.WriteMessageWithoutEndCode(ic, unit, "IC", default);
+            CModeResponse.WriteMessageWithoutEndCode(ic, unit, CModeHeaders.UndefinedCommand, default);
             return new SimResponse(ic, CModeCommand.PrefixLength, 1);
         }
 
@@ -79,7 +55,7 @@ public sealed class HostLinkResponder
     /// <returns>The answer, or null when the PLC sends none (XZ; a message too short to carry a unit and header).</returns>
     public SimResponse? Respond(ReadOnlySpan<byte> message)
     {
-        if (message.Length < CModeCommand.PrefixLength || message[0] != (byte)'@' || !HexAscii.TryParseDecimal(message.Slice(1, 2), out int unit) || unit > 31)
+        if (message.Length < CModeCommand.PrefixLength || !MessagePrefix.TryReadUnit(message, out int unit) || unit > 31)
         {
             return null;
         }
@@ -104,12 +80,12 @@ public sealed class HostLinkResponder
             throw new ArgumentException("A header has two characters.", nameof(header));
         }
 
-        if (IsFins(header))
+        if (CModeHeaders.Is(header, CModeHeaders.Fins))
         {
             return _fins.Respond(unit, text);
         }
 
-        if (header[0] == (byte)'T' && header[1] == (byte)'S')
+        if (CModeHeaders.Is(header, CModeHeaders.Test))
         {
             // TS echoes its text exactly, without an end code (the text is not checked like a command's).
             if (text.Length > TestCommand.MaxTextLength)
@@ -118,7 +94,7 @@ public sealed class HostLinkResponder
             }
 
             var echo = new byte[CModeCommand.PrefixLength + text.Length];
-            CModeResponse.WriteMessageWithoutEndCode(echo, unit, "TS", text);
+            CModeResponse.WriteMessageWithoutEndCode(echo, unit, CModeHeaders.Test, text);
             return new SimResponse(echo, CModeCommand.PrefixLength, 1);
         }
 
@@ -150,30 +126,9 @@ public sealed class HostLinkResponder
         CModeResponse.WriteMessage(message, unit, header, EndCode.NormalCompletion, data);
 
         // RG: 121 points in the first frame, 124 in later ones (C200HX RG page), one short of what 128 characters hold.
-        return new SimResponse(message, ResponseFixedLength, atomLength, header == "RG" ? MaxFlagsPerLaterFrame : 0);
+        bool flags = header == CModeAreaInfo.ReadHeader(CModeArea.TimerCounterStatus);
+        return new SimResponse(message, ResponseFixedLength, atomLength, flags ? MaxFlagsPerLaterFrame : 0);
     }
-
-    private static (PlcArea Area, int Word) MapEntry(CModeArea area, int entry) => area switch
-    {
-        CModeArea.Cio => (PlcArea.Cio, entry),
-        CModeArea.Lr => (PlcArea.Cio, 1000 + entry),
-        CModeArea.Holding => (PlcArea.Holding, entry),
-        CModeArea.TimerCounterPv or CModeArea.TimerCounterStatus => entry < 2048 ? (PlcArea.Timer, entry) : (PlcArea.Counter, entry - 2048),
-        CModeArea.Dm => (PlcArea.Dm, entry),
-        CModeArea.Auxiliary => (PlcArea.Auxiliary, entry),
-        CModeArea.Em => (PlcArea.Em, entry),
-        _ => throw new ArgumentOutOfRangeException(nameof(area), area, "Unknown C-mode area."),
-    };
-
-    private static (PlcArea Area, int Word) MapForce(ForceArea area, int word) => area switch
-    {
-        ForceArea.Cio => (PlcArea.Cio, word),
-        ForceArea.Lr => (PlcArea.Cio, 1000 + word),
-        ForceArea.Holding => (PlcArea.Holding, word),
-        ForceArea.Auxiliary => (PlcArea.Auxiliary, word),
-        ForceArea.Timer => (PlcArea.Timer, word),
-        _ => (PlcArea.Counter, word),
-    };
 
     private SimResponse? Execute(int unit, CModeCommand command)
     {
@@ -189,7 +144,7 @@ public sealed class HostLinkResponder
 
                 for (int i = 0; i < write.Words.Length; i++)
                 {
-                    (PlcArea area, int word) = MapEntry(write.Area, write.Begin + i);
+                    (PlcArea area, int word) = CModeAddressing.Locate(write.Area, write.Begin + i);
                     _plc.WriteWord(area, word, write.Words[i], write.Bank);
                 }
 
@@ -205,12 +160,12 @@ public sealed class HostLinkResponder
                     Encoding.ASCII.GetBytes(message, data.Slice(4));
                 }
 
-                return Ok(unit, "MS", data, 1);
+                return Ok(unit, CModeHeaders.StatusRead, data, 1);
             }
 
             case StatusChangeCommand change:
                 _plc.Mode = change.Mode;
-                return Ok(unit, "SC", default);
+                return Ok(unit, CModeHeaders.StatusChange, default);
             case ErrorReadCommand errorRead:
             {
                 PlcErrorInfo errors = _plc.Errors;
@@ -222,14 +177,14 @@ public sealed class HostLinkResponder
                     _plc.ClearErrors();
                 }
 
-                return Ok(unit, "MF", data);
+                return Ok(unit, CModeHeaders.ErrorRead, data);
             }
 
             case ModelReadCommand:
             {
                 Span<byte> data = stackalloc byte[2];
                 HexAscii.WriteByte(_plc.ModelCode, data);
-                return Ok(unit, "MM", data, 2);
+                return Ok(unit, CModeHeaders.ModelRead, data, 2);
             }
 
             case ForceBitCommand force:
@@ -239,7 +194,7 @@ public sealed class HostLinkResponder
                     return EndCodeOnly(unit, Encoding.ASCII.GetBytes(force.Header), EndCode.NotExecutableInRunMode);
                 }
 
-                (PlcArea area, int word) = MapForce(force.Area, force.Word);
+                (PlcArea area, int word) = CModeAddressing.Locate(force.Area, force.Word);
                 _plc.ForceBit(area, word, force.Bit, force.Set);
                 return Ok(unit, force.Header, default);
             }
@@ -247,19 +202,19 @@ public sealed class HostLinkResponder
             case MultipleForceCommand multiple:
                 if (_plc.Mode == PlcMode.Run)
                 {
-                    return EndCodeOnly(unit, "FK"u8, EndCode.NotExecutableInRunMode);
+                    return EndCodeOnly(unit, Encoding.ASCII.GetBytes(multiple.Header), EndCode.NotExecutableInRunMode);
                 }
 
                 MultipleForce(multiple);
-                return Ok(unit, "FK", default);
+                return Ok(unit, CModeHeaders.MultipleForcedSetReset, default);
             case ForcedCancelCommand:
                 if (_plc.Mode == PlcMode.Run)
                 {
-                    return EndCodeOnly(unit, "KC"u8, EndCode.NotExecutableInRunMode);
+                    return EndCodeOnly(unit, Encoding.ASCII.GetBytes(command.Header), EndCode.NotExecutableInRunMode);
                 }
 
                 _plc.ReleaseAllForced();
-                return Ok(unit, "KC", default);
+                return Ok(unit, CModeHeaders.ForcedSetResetCancel, default);
             case AbortCommand:
                 return null;
             default:
@@ -273,7 +228,7 @@ public sealed class HostLinkResponder
         var data = new byte[read.Count * atom];
         for (int i = 0; i < read.Count; i++)
         {
-            (PlcArea area, int word) = MapEntry(read.Area, read.Begin + i);
+            (PlcArea area, int word) = CModeAddressing.Locate(read.Area, read.Begin + i);
             if (read.Area == CModeArea.TimerCounterStatus)
             {
                 data[i] = _plc.GetFlag(area, word) ? (byte)'1' : (byte)'0';
@@ -289,7 +244,7 @@ public sealed class HostLinkResponder
 
     private void MultipleForce(MultipleForceCommand command)
     {
-        (PlcArea area, int word) = MapForce(command.Area, command.Word);
+        (PlcArea area, int word) = CModeAddressing.Locate(command.Area, command.Word);
         bool flag = area is PlcArea.Timer or PlcArea.Counter;
         for (int i = 0; i < 16; i++)
         {

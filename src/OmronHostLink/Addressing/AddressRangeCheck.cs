@@ -1,18 +1,18 @@
 namespace OmronHostLink;
 
-/// <summary>The rules behind <see cref="PlcAddress.EnsureRange"/>: what a transfer may touch, per protocol.</summary>
+/// <summary>The rules behind <see cref="PlcAddress.EnsureRange"/>: what a transfer may touch, per command set.</summary>
 internal static class AddressRangeCheck
 {
-    public static void Ensure(PlcAddress start, int count, HostLinkProtocol protocol, bool forWrite)
+    public static void Ensure(PlcAddress start, int count, HostLinkCommandSet commandSet, bool forWrite)
     {
         if (count < 1)
         {
             throw new ArgumentOutOfRangeException(nameof(count), count, $"A transfer at {start} needs at least 1 word; count was {count}.");
         }
 
-        if (protocol is not (HostLinkProtocol.CMode or HostLinkProtocol.Fins))
+        if (commandSet is not (HostLinkCommandSet.CMode or HostLinkCommandSet.Fins))
         {
-            throw new ArgumentOutOfRangeException(nameof(protocol), protocol, $"{protocol} is not a Host Link protocol.");
+            throw new ArgumentOutOfRangeException(nameof(commandSet), commandSet, $"{commandSet} is not a Host Link command set.");
         }
 
         var area = start.Area;
@@ -32,7 +32,7 @@ internal static class AddressRangeCheck
                 $"{start} is in the read-only part of the auxiliary area (A0–A447); writes can go to A448–A959 only.");
         }
 
-        if (protocol == HostLinkProtocol.CMode)
+        if (commandSet == HostLinkCommandSet.CMode)
         {
             EnsureCMode(start, (int)end, forWrite);
         }

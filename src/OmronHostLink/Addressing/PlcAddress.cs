@@ -143,19 +143,19 @@ public readonly struct PlcAddress : IEquatable<PlcAddress>
     }
 
     /// <summary>
-    /// Checks that <paramref name="count"/> words starting at this address can be transferred with <paramref name="protocol"/>.
+    /// Checks that <paramref name="count"/> words starting at this address can be transferred with <paramref name="commandSet"/>.
     /// </summary>
     /// <param name="count">The number of words (T/C present values for timers and counters), at least 1. For a bit address
     /// this still counts words, starting with the word that holds the bit.</param>
-    /// <param name="protocol">The command set: C-mode reaches less of the PLC than FINS.</param>
+    /// <param name="commandSet">The command set: C-mode reaches less of the PLC than FINS.</param>
     /// <param name="forWrite">Whether the transfer writes to the PLC (A0–A447 are read-only).</param>
     /// <exception cref="ArgumentOutOfRangeException">
     /// <paramref name="count"/> is less than 1; the words run past the end of the area; or, with C-mode, they go beyond
     /// what C-mode reaches (D/EM 10000 and above, T/C 2048 and above).
     /// </exception>
     /// <exception cref="ArgumentException">The transfer writes to the read-only auxiliary words A0–A447, or uses C-mode on the work area.</exception>
-    public void EnsureRange(int count, HostLinkProtocol protocol, bool forWrite) =>
-        AddressRangeCheck.Ensure(this, count, protocol, forWrite);
+    public void EnsureRange(int count, HostLinkCommandSet commandSet, bool forWrite) =>
+        AddressRangeCheck.Ensure(this, count, commandSet, forWrite);
 
     /// <summary>The canonical spelling: <c>D100</c>, <c>CIO100.05</c>, <c>W30</c>, <c>H10.03</c>, <c>A448</c>, <c>T5</c>, <c>C7</c>, <c>E1_100.02</c>.</summary>
     /// <returns>Text that <see cref="Parse(string)"/> reads back to the same address.</returns>

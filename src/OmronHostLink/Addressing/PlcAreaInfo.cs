@@ -1,4 +1,5 @@
 using System.Globalization;
+using OmronHostLink.Protocol.CMode;
 
 namespace OmronHostLink;
 
@@ -30,22 +31,21 @@ internal static class PlcAreaInfo
     public static int CModeLimit(PlcArea area) => area switch
     {
         PlcArea.Work => 0,
-        PlcArea.Dm or PlcArea.Em => 10000,
-        PlcArea.Timer or PlcArea.Counter => 2048,
-        _ => Size(area),
+        PlcArea.Timer or PlcArea.Counter => CModeAreaInfo.CounterOffset,
+        _ => CModeAreaInfo.Size(CModeAddressing.AreaOf(area)),
     };
 
     /// <summary>The C-mode command that would carry the transfer, so messages can name it.</summary>
-    public static string CModeCommand(PlcArea area, bool forWrite) => area switch
+    public static string CModeCommand(PlcArea area, bool forWrite)
     {
-        PlcArea.Cio => forWrite ? "WR" : "RR",
-        PlcArea.Holding => forWrite ? "WH" : "RH",
-        PlcArea.Auxiliary => forWrite ? "WJ" : "RJ",
-        PlcArea.Dm => forWrite ? "WD" : "RD",
-        PlcArea.Timer or PlcArea.Counter => forWrite ? "WC" : "RC",
-        PlcArea.Em => forWrite ? "WE" : "RE",
-        _ => "(none)",
-    };
+        if (area == PlcArea.Work)
+        {
+            return "(none)";
+        }
+
+        CModeArea cmode = CModeAddressing.AreaOf(area);
+        return forWrite ? CModeAreaInfo.WriteHeader(cmode) : CModeAreaInfo.ReadHeader(cmode);
+    }
 
     /// <summary>Timers and counters name a T/C, not a word of bits.</summary>
     public static bool AllowsBit(PlcArea area) => area is not (PlcArea.Timer or PlcArea.Counter);

@@ -16,7 +16,7 @@ namespace OmronHostLink;
 /// PlcStatus status = await plc.ReadStatusAsync();
 /// </code>
 /// </example>
-public sealed class HostLinkClient : HostLinkUnit, IAsyncDisposable, IDisposable
+public sealed class HostLinkClient : HostLinkUnit, IAsyncDisposable
 {
     private HostLinkClient(HostLinkConnection connection, HostLinkClientOptions options)
         : base(connection, options, options.UnitNumber)
@@ -68,9 +68,10 @@ public sealed class HostLinkClient : HostLinkUnit, IAsyncDisposable, IDisposable
         set => Connection.FrameObserver = value;
     }
 
-    /// <summary>Closes the link.</summary>
+    /// <summary>
+    /// Closes the link: waits for the exchange in progress, stops reading and closes the transport. The client is
+    /// <see cref="IAsyncDisposable"/> only (use <c>await using</c>): closing waits for I/O, and a blocking
+    /// <c>Dispose</c> would have to wait on it synchronously.
+    /// </summary>
     public ValueTask DisposeAsync() => Connection.DisposeAsync();
-
-    /// <summary>Closes the link.</summary>
-    public void Dispose() => Connection.DisposeAsync().AsTask().GetAwaiter().GetResult();
 }

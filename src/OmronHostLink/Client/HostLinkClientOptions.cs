@@ -30,8 +30,8 @@ public sealed class HostLinkClientOptions
     /// </summary>
     public int WriteRetries { get; set; }
 
-    /// <summary>Which protocol reads and writes use where both can do the job. Default C-mode.</summary>
-    public HostLinkProtocol Protocol { get; set; } = HostLinkProtocol.CMode;
+    /// <summary>Which command set (C-mode or FINS) reads and writes use where both can do the job. Default C-mode.</summary>
+    public HostLinkCommandSet CommandSet { get; set; } = HostLinkCommandSet.CMode;
 
     /// <summary>
     /// Allow bit writes by reading the word, changing the bit and writing the word back, where FINS bit write is not wanted.

@@ -1,4 +1,5 @@
 using OmronHostLink.Link;
+using OmronHostLink.Protocol.CMode;
 using OmronHostLink.Protocol.Fins;
 
 namespace OmronHostLink;
@@ -57,7 +58,7 @@ public partial class HostLinkUnit
     public async ValueTask FillAsync(string address, int count, ushort value, CancellationToken cancellationToken = default)
     {
         PlcAddress a = PlcAddress.Parse(address).AsWord();
-        a.EnsureRange(count, HostLinkProtocol.Fins, forWrite: true);
+        a.EnsureRange(count, HostLinkCommandSet.Fins, forWrite: true);
         await FinsAsync(new MemoryAreaFillCommand(FinsAddressing.Word(a), count, value), 0, retryable: Options.WriteRetries > 0, ExpectNoData, "0103", cancellationToken).ConfigureAwait(false);
     }
 
@@ -66,29 +67,31 @@ public partial class HostLinkUnit
     {
         PlcAddress from = PlcAddress.Parse(source).AsWord();
         PlcAddress to = PlcAddress.Parse(destination).AsWord();
-        from.EnsureRange(count, HostLinkProtocol.Fins, forWrite: false);
-        to.EnsureRange(count, HostLinkProtocol.Fins, forWrite: true);
+        from.EnsureRange(count, HostLinkCommandSet.Fins, forWrite: false);
+        to.EnsureRange(count, HostLinkCommandSet.Fins, forWrite: true);
         var command = new MemoryAreaTransferCommand(FinsAddressing.Word(from), FinsAddressing.Word(to), count);
         await FinsAsync(command, 0, retryable: Options.WriteRetries > 0, ExpectNoData, "0105", cancellationToken).ConfigureAwait(false);
     }
 
     /// <summary>
-    /// Reads scattered words and bits in one exchange (FINS 0104): a word address gives its value, a bit address (or a
-    /// timer/counter completion flag) 0 or 1.
+    /// Reads scattered words and bits in one exchange, one FINS 0104 MULTIPLE MEMORY AREA READ, so the values are one
+    /// snapshot: a word address gives its value, a bit address (or a timer/counter completion flag) 0 or 1. Raw words
+    /// only, at most 135 addresses, FINS whatever this view's command set; for typed tags planned into the fewest
+    /// exchanges, see <see cref="ReadTagsAsync(IReadOnlyList{Planning.PlcTag}, CancellationToken)"/>.
     /// </summary>
-    public async ValueTask<ushort[]> ReadMultipleAsync(IReadOnlyList<string> addresses, CancellationToken cancellationToken = default)
+    public async ValueTask<ushort[]> ReadScatteredAsync(IReadOnlyList<string> addresses, CancellationToken cancellationToken = default)
     {
         Guard.NotNull(addresses);
         var items = new FinsMemoryAddress[addresses.Count];
         for (int i = 0; i < items.Length; i++)
         {
             PlcAddress a = PlcAddress.Parse(addresses[i]);
-            a.EnsureRange(1, HostLinkProtocol.Fins, forWrite: false);
+            a.EnsureRange(1, HostLinkCommandSet.Fins, forWrite: false);
             items[i] = FinsAddressing.Item(a);
         }
 
         var command = new MultipleMemoryAreaReadCommand(items);
-        FinsMultipleReadValue[] values = await FinsAsync(command, items.Length * 3, retryable: true, static (data, c) => FinsMultipleReadValue.ReadAll(data, c), command, cancellationToken).ConfigureAwait(false);
+        FinsMultipleReadValue[] values = await FinsAsync(command, command.ResponseDataLength, retryable: true, static (data, c) => FinsMultipleReadValue.ReadAll(data, c), command, cancellationToken).ConfigureAwait(false);
         return values.Select(v => v.Word).ToArray();
     }
 
@@ -148,7 +151,7 @@ public partial class HostLinkUnit
 
     private async ValueTask FinsWriteBitAsync(PlcAddress address, bool value, CancellationToken cancellationToken)
     {
-        address.EnsureRange(1, HostLinkProtocol.Fins, forWrite: true);
+        address.EnsureRange(1, HostLinkCommandSet.Fins, forWrite: true);
         var command = MemoryAreaWriteCommand.Bits(FinsAddressing.Bit(address), new[] { value });
         await FinsAsync(command, 0, retryable: Options.WriteRetries > 0, ExpectNoData, "0102", cancellationToken).ConfigureAwait(false);
     }
@@ -172,7 +175,7 @@ public partial class HostLinkUnit
             _ => PlcMode.Program,
         };
         string message = status.ErrorMessage.Trim();
-        return new PlcStatus(mode, global::OmronHostLink.Protocol.CMode.CModeResponse.StatusWord(mode), message.Length == 0 ? null : message);
+        return new PlcStatus(mode, CModeResponse.StatusWord(mode), message.Length == 0 ? null : message);
     }
 
     private static bool ExpectNoData(ReadOnlySpan<byte> data, string command)
@@ -194,7 +197,7 @@ public partial class HostLinkUnit
 
         // Host Link end code, then ICF DA2 SA2 SID, MRC SRC, MRES SRES and the data, two characters a byte.
         int maxText = 2 + (2 * (header.Length + 4 + maxResponseData));
-        var request = new HostLinkRequest(UnitNumber, "FA", message, message.Length, 1, multiFrame: false, expectsResponse: true, maxText, retryable, singleFrameOnly: true);
+        var request = new HostLinkRequest(UnitNumber, CModeHeaders.Fins, message, message.Length, 1, multiFrame: false, expectsResponse: true, maxText, retryable, singleFrameOnly: true);
         return Connection.ExecuteAsync(
             request,
             retryable ? Options.ReadRetries : Options.WriteRetries,

@@ -7,19 +7,20 @@ namespace OmronHostLink;
 public partial class HostLinkUnit
 {
     /// <summary>
-    /// Reads many tags (scattered, overlapping, in several areas and units) in the fewest transactions: gaps cheaper
-    /// to read through than another command are read through, and with FINS, isolated words share 0104 MULTIPLE
-    /// MEMORY AREA READ commands. A tag with a unit number is read through that unit's view on this link; the others
-    /// from this unit. Each transaction is one snapshot; the set as a whole is not.
+    /// Reads typed tags (scattered, overlapping, in several areas and units) in the fewest transactions, each value
+    /// decoded by <see cref="PlcValueCodec"/>: gaps cheaper to read through than another command are read through, and
+    /// with FINS, isolated words share 0104 MULTIPLE MEMORY AREA READ commands. A tag with a unit number is read
+    /// through that unit's view on this link; the others from this unit. Each transaction is one snapshot; the set as a
+    /// whole is not (for one snapshot of scattered raw words, see <see cref="ReadScatteredAsync"/>).
     /// </summary>
     /// <param name="tags">The tags.</param>
     /// <param name="cancellationToken">Cancels the reads.</param>
     /// <returns>One value per tag, in the order of <paramref name="tags"/>.</returns>
-    /// <exception cref="ArgumentException">A tag cannot be read with this view's protocol (nothing is sent).</exception>
-    public ValueTask<PlcTagValue[]> ReadManyAsync(IReadOnlyList<PlcTag> tags, CancellationToken cancellationToken = default)
+    /// <exception cref="ArgumentException">A tag cannot be read with this view's command set (nothing is sent).</exception>
+    public ValueTask<PlcTagValue[]> ReadTagsAsync(IReadOnlyList<PlcTag> tags, CancellationToken cancellationToken = default)
     {
-        var planner = new ReadPlanner(Options.Protocol, LineTiming);
-        return ReadManyAsync(planner.Plan(tags, UnitNumber), cancellationToken);
+        var planner = new ReadPlanner(Options.CommandSet, LineTiming);
+        return ReadTagsAsync(planner.Plan(tags, UnitNumber), cancellationToken);
     }
 
     /// <summary>
@@ -29,7 +30,7 @@ public partial class HostLinkUnit
     /// <param name="plan">The plan.</param>
     /// <param name="cancellationToken">Cancels the reads.</param>
     /// <returns>One value per tag of the plan, in its order.</returns>
-    public async ValueTask<PlcTagValue[]> ReadManyAsync(ReadPlan plan, CancellationToken cancellationToken = default)
+    public async ValueTask<PlcTagValue[]> ReadTagsAsync(ReadPlan plan, CancellationToken cancellationToken = default)
     {
         Guard.NotNull(plan);
         var results = new ushort[plan.Reads.Count][];
@@ -48,22 +49,22 @@ public partial class HostLinkUnit
         switch (read.Kind)
         {
             case PlannedReadKind.FinsMultiple:
-                return ReadMultipleWordsAsync(read.Items, cancellationToken);
+                return ReadScatteredWordsAsync(read.Items, cancellationToken);
             case PlannedReadKind.FinsArea:
-                read.Start.EnsureRange(read.Count, HostLinkProtocol.Fins, forWrite: false);
+                read.Start.EnsureRange(read.Count, HostLinkCommandSet.Fins, forWrite: false);
                 return FinsReadWordsAsync(read.Start, read.Count, cancellationToken);
             default:
-                read.Start.EnsureRange(read.Count, HostLinkProtocol.CMode, forWrite: false);
+                read.Start.EnsureRange(read.Count, HostLinkCommandSet.CMode, forWrite: false);
                 return CModeReadWordsAsync(read.Start, read.Count, cancellationToken);
         }
     }
 
-    private ValueTask<ushort[]> ReadMultipleWordsAsync(IReadOnlyList<PlcAddress> words, CancellationToken cancellationToken)
+    private ValueTask<ushort[]> ReadScatteredWordsAsync(IReadOnlyList<PlcAddress> words, CancellationToken cancellationToken)
     {
         var items = new FinsMemoryAddress[words.Count];
         for (int i = 0; i < items.Length; i++)
         {
-            words[i].EnsureRange(1, HostLinkProtocol.Fins, forWrite: false);
+            words[i].EnsureRange(1, HostLinkCommandSet.Fins, forWrite: false);
             items[i] = FinsAddressing.Word(words[i]);
         }
 

@@ -26,10 +26,9 @@ public partial class HostLinkUnit
             throw new ArgumentException("A raw command needs at least a two-character header.", nameof(text));
         }
 
-        var message = new byte[3 + body.Length];
-        message[0] = (byte)'@';
-        HexAscii.WriteDecimal(UnitNumber, message.AsSpan(1, 2));
-        body.CopyTo(message, 3);
+        var message = new byte[MessagePrefix.UnitLength + body.Length];
+        MessagePrefix.WriteUnit(message, UnitNumber);
+        body.CopyTo(message, MessagePrefix.UnitLength);
         var request = new HostLinkRequest(
             UnitNumber,
             text.Substring(0, 2),

@@ -30,19 +30,19 @@ public partial class HostLinkUnit
     /// <summary>The character timing frame deadlines are derived from.</summary>
     public LineTiming LineTiming => Connection.Timing;
 
-    /// <summary>Which protocol this view uses for reads, writes, status and mode where both can do the job.</summary>
-    public HostLinkProtocol Protocol => Options.Protocol;
+    /// <summary>Which command set (C-mode or FINS) this view uses for reads, writes, status and mode where both can do the job.</summary>
+    public HostLinkCommandSet CommandSet => Options.CommandSet;
 
     /// <summary>A view of another unit on the same line (multidrop), sharing this link.</summary>
     /// <exception cref="ArgumentOutOfRangeException">The unit number is not 0-31.</exception>
     public HostLinkUnit Unit(int unitNumber) => new UnitView(Connection, Options, unitNumber);
 
-    /// <summary>A view of a unit on the same line that uses <paramref name="protocol"/> where both protocols can do a job.</summary>
+    /// <summary>A view of a unit on the same line that uses <paramref name="commandSet"/> where both command sets can do a job.</summary>
     /// <exception cref="ArgumentOutOfRangeException">The unit number is not 0-31.</exception>
-    public HostLinkUnit Unit(int unitNumber, HostLinkProtocol protocol)
+    public HostLinkUnit Unit(int unitNumber, HostLinkCommandSet commandSet)
     {
         HostLinkClientOptions options = Options.Clone();
-        options.Protocol = protocol;
+        options.CommandSet = commandSet;
         return new UnitView(Connection, options, unitNumber);
     }
 
@@ -51,7 +51,7 @@ public partial class HostLinkUnit
     /// <summary>
     /// Reads <paramref name="count"/> consecutive words. With C-mode the read is one command, however long (the answer
     /// spans frames), so the words are one consistent snapshot. FINS reads longer than
-    /// <see cref="global::OmronHostLink.Protocol.Fins.MemoryAreaReadCommand.MaxWords"/> are split into the fewest commands, and are then not one snapshot.
+    /// 269 words (what one FA answer frame holds) are split into the fewest commands, and are then not one snapshot.
     /// </summary>
     /// <exception cref="FormatException">The address is not valid.</exception>
     /// <exception cref="ArgumentException">The range does not fit the area or the protocol (nothing is sent).</exception>
@@ -62,8 +62,8 @@ public partial class HostLinkUnit
     public ValueTask<ushort[]> ReadWordsAsync(PlcAddress address, int count, CancellationToken cancellationToken = default)
     {
         address = address.AsWord();
-        address.EnsureRange(count, Options.Protocol, forWrite: false);
-        return Options.Protocol == HostLinkProtocol.Fins
+        address.EnsureRange(count, Options.CommandSet, forWrite: false);
+        return Options.CommandSet == HostLinkCommandSet.Fins
             ? FinsReadWordsAsync(address, count, cancellationToken)
             : CModeReadWordsAsync(address, count, cancellationToken);
     }
@@ -74,7 +74,7 @@ public partial class HostLinkUnit
 
     /// <summary>
     /// Writes consecutive words as one command (C-mode spans frames as needed; FINS splits writes longer than
-    /// <see cref="global::OmronHostLink.Protocol.Fins.MemoryAreaWriteCommand.MaxWords"/>). Completes only when the PLC answered end code 00.
+    /// 267 words, what one FA command frame holds). Completes only when the PLC answered end code 00.
     /// </summary>
     /// <exception cref="HostLinkEndCodeException">The PLC refused the write (for example 01: C-mode writes are refused in RUN mode).</exception>
     public ValueTask WriteWordsAsync(string address, ReadOnlyMemory<ushort> words, CancellationToken cancellationToken = default)
@@ -84,8 +84,8 @@ public partial class HostLinkUnit
     public ValueTask WriteWordsAsync(PlcAddress address, ReadOnlyMemory<ushort> words, CancellationToken cancellationToken = default)
     {
         address = address.AsWord();
-        address.EnsureRange(words.Length, Options.Protocol, forWrite: true);
-        return Options.Protocol == HostLinkProtocol.Fins
+        address.EnsureRange(words.Length, Options.CommandSet, forWrite: true);
+        return Options.CommandSet == HostLinkCommandSet.Fins
             ? FinsWriteWordsAsync(address, words, cancellationToken)
             : CModeWriteWordsAsync(address, words, cancellationToken);
     }
@@ -98,7 +98,7 @@ public partial class HostLinkUnit
 
     /// <summary>Reads the operating mode, the status word and any FAL/FALS message (C-mode MS; FINS 0601 when the protocol is FINS).</summary>
     public ValueTask<PlcStatus> ReadStatusAsync(CancellationToken cancellationToken = default)
-        => Options.Protocol == HostLinkProtocol.Fins
+        => Options.CommandSet == HostLinkCommandSet.Fins
             ? FinsReadStatusAsync(cancellationToken)
             : CModeAsync(StatusReadCommand.Instance, 2 + 20, retryable: true, static (data, _) => CModeResponse.ReadStatus(data), 0, cancellationToken);
 
@@ -108,7 +108,7 @@ public partial class HostLinkUnit
     /// </summary>
     public async ValueTask SetModeAsync(PlcMode mode, CancellationToken cancellationToken = default)
     {
-        if (Options.Protocol == HostLinkProtocol.Fins)
+        if (Options.CommandSet == HostLinkCommandSet.Fins)
         {
             await (mode == PlcMode.Program ? StopAsync(cancellationToken) : RunAsync(mode, cancellationToken)).ConfigureAwait(false);
             return;
@@ -226,13 +226,13 @@ public partial class HostLinkUnit
 
     private async ValueTask<bool> ReadCompletionFlagAsync(PlcAddress address, CancellationToken cancellationToken)
     {
-        address.EnsureRange(1, Options.Protocol, forWrite: false);
-        if (Options.Protocol == HostLinkProtocol.Fins)
+        address.EnsureRange(1, Options.CommandSet, forWrite: false);
+        if (Options.CommandSet == HostLinkCommandSet.Fins)
         {
             return await FinsReadCompletionFlagAsync(address, cancellationToken).ConfigureAwait(false);
         }
 
-        int begin = address.Area == PlcArea.Counter ? 2048 + address.Word : address.Word;
+        (_, int begin) = CModeAddressing.Map(address);
         var command = new AreaReadCommand(CModeArea.TimerCounterStatus, begin, 1);
         return await CModeAsync(
             command,

@@ -1,6 +1,9 @@
 namespace OmronHostLink;
 
-/// <summary>How PLC words are read as values: the types the console's <c>--as</c>, the worker's poll groups and read tags share.</summary>
+/// <summary>
+/// How PLC words are read as values: the types <see cref="PlcValueCodec"/> decodes and encodes, shared by the console's
+/// <c>--as</c>, the worker's poll groups and read tags.
+/// </summary>
 public enum PlcValueType
 {
     /// <summary>One word, unsigned, shown as a raw word.</summary>
@@ -29,12 +32,15 @@ public enum PlcValueType
 
     /// <summary>One bit of a word (or a timer/counter completion flag).</summary>
     Bit,
+
+    /// <summary>Four words, IEEE 754 double precision (LREAL), in the configured word order.</summary>
+    Double,
 }
 
 /// <summary>Names and sizes of <see cref="PlcValueType"/>.</summary>
 public static class PlcValueTypes
 {
-    private static readonly string[] NameList = ["word", "bcd", "int16", "uint16", "int32", "uint32", "float", "string", "bit"];
+    private static readonly string[] NameList = ["word", "bcd", "int16", "uint16", "int32", "uint32", "float", "string", "bit", "double"];
 
     /// <summary>The names, lower case, in enum order, as users type them.</summary>
     public static IReadOnlyList<string> Names => NameList;
@@ -50,6 +56,11 @@ public static class PlcValueTypes
     /// <summary>The lower-case name.</summary>
     public static string Name(this PlcValueType type) => NameList[(int)type];
 
-    /// <summary>Words one value occupies: 2 for Int32, UInt32 and Float, otherwise 1 (text and bits are not counted per value).</summary>
-    public static int WordsPerValue(this PlcValueType type) => type is PlcValueType.Int32 or PlcValueType.UInt32 or PlcValueType.Float ? 2 : 1;
+    /// <summary>Words one value occupies: 4 for Double, 2 for Int32, UInt32 and Float, otherwise 1 (text and bits are not counted per value).</summary>
+    public static int WordsPerValue(this PlcValueType type) => type switch
+    {
+        PlcValueType.Double => 4,
+        PlcValueType.Int32 or PlcValueType.UInt32 or PlcValueType.Float => 2,
+        _ => 1,
+    };
 }

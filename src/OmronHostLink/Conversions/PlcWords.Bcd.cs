@@ -27,6 +27,10 @@ public static partial class PlcWords
     /// <exception cref="FormatException">A digit of the word is A–F (e.g. 0x12A4), so it is not BCD.</exception>
     public static int FromBcd(ushort word) => DecodeBcd(word, 4);
 
+    /// <summary>Decodes a BCD word as <see cref="FromBcd"/> does, without throwing.</summary>
+    /// <returns>False when a digit of the word is A–F.</returns>
+    internal static bool TryFromBcd(ushort word, out int value) => TryDecodeBcd(word, 4, out value);
+
     /// <summary>Encodes 0–99999999 as 8 BCD digits: 12345678 → 0x12345678.</summary>
     /// <param name="value">0–99999999.</param>
     /// <returns>The BCD digits as a 32-bit value.</returns>
@@ -82,19 +86,31 @@ public static partial class PlcWords
 
     private static int DecodeBcd(uint bcd, int digits)
     {
-        var result = 0;
+        if (TryDecodeBcd(bcd, digits, out var result))
+        {
+            return result;
+        }
+
+        var hex = bcd.ToString(digits == 4 ? "X4" : "X8", CultureInfo.InvariantCulture);
+        var bad = hex.First(c => c > '9');
+        throw new FormatException($"0x{hex} is not BCD: digit {bad} is not 0–9.");
+    }
+
+    private static bool TryDecodeBcd(uint bcd, int digits, out int value)
+    {
+        value = 0;
         for (var shift = (digits - 1) * 4; shift >= 0; shift -= 4)
         {
             var digit = (int)((bcd >> shift) & 0xF);
             if (digit > 9)
             {
-                var hex = bcd.ToString(digits == 4 ? "X4" : "X8", CultureInfo.InvariantCulture);
-                throw new FormatException($"0x{hex} is not BCD: digit {digit:X} is not 0–9.");
+                value = 0;
+                return false;
             }
 
-            result = (result * 10) + digit;
+            value = (value * 10) + digit;
         }
 
-        return result;
+        return true;
     }
 }

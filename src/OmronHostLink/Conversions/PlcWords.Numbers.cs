@@ -72,4 +72,39 @@ public static partial class PlcWords
     /// <exception cref="ArgumentException"><paramref name="dest"/> holds fewer than two words.</exception>
     public static void WriteSingle(float value, Span<ushort> dest, WordOrder order = WordOrder.LowWordFirst) =>
         WriteInt32(SingleBits.ToInt32(value), dest, order);
+
+    /// <summary>Reads an IEEE 754 double-precision value (LREAL) from the first four words: [0, 0, 0, 0x3FF0] low word first → 1.0.</summary>
+    /// <param name="words">At least four words.</param>
+    /// <param name="order">Which end of the value the first word holds; Omron stores the low word first.</param>
+    /// <returns>The value; NaN and infinities come through as they are.</returns>
+    /// <exception cref="ArgumentException"><paramref name="words"/> holds fewer than four words.</exception>
+    public static double ReadDouble(ReadOnlySpan<ushort> words, WordOrder order = WordOrder.LowWordFirst)
+    {
+        EnsureLength(words.Length, 4, nameof(words));
+        CheckOrder(order);
+        ulong bits = 0;
+        for (int i = 0; i < 4; i++)
+        {
+            ushort word = order == WordOrder.LowWordFirst ? words[i] : words[3 - i];
+            bits |= (ulong)word << (16 * i);
+        }
+
+        return BitConverter.Int64BitsToDouble(unchecked((long)bits));
+    }
+
+    /// <summary>Writes an IEEE 754 double-precision value (LREAL) into the first four words.</summary>
+    /// <param name="value">The value.</param>
+    /// <param name="dest">At least four words.</param>
+    /// <param name="order">Which end of the value the first word receives; Omron stores the low word first.</param>
+    /// <exception cref="ArgumentException"><paramref name="dest"/> holds fewer than four words.</exception>
+    public static void WriteDouble(double value, Span<ushort> dest, WordOrder order = WordOrder.LowWordFirst)
+    {
+        EnsureLength(dest.Length, 4, nameof(dest));
+        CheckOrder(order);
+        ulong bits = unchecked((ulong)BitConverter.DoubleToInt64Bits(value));
+        for (int i = 0; i < 4; i++)
+        {
+            dest[order == WordOrder.LowWordFirst ? i : 3 - i] = (ushort)(bits >> (16 * i));
+        }
+    }
 }

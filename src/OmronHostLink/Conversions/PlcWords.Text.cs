@@ -60,11 +60,32 @@ public static partial class PlcWords
     /// <param name="words">The words.</param>
     /// <returns>The text before the first NUL.</returns>
     /// <exception cref="FormatException">A byte before the first NUL is above 0x7F, so the words are not ASCII text.</exception>
-    public static string ReadString(ReadOnlySpan<ushort> words)
+    public static string ReadString(ReadOnlySpan<ushort> words) => ReadString(words, words.Length * 2);
+
+    /// <summary>Unpacks at most <paramref name="maxLength"/> characters; see <see cref="ReadString(ReadOnlySpan{ushort})"/>.</summary>
+    /// <exception cref="FormatException">A byte of the text is above 0x7F.</exception>
+    internal static string ReadString(ReadOnlySpan<ushort> words, int maxLength)
+    {
+        if (TryReadString(words, maxLength, out var text, out var badAt))
+        {
+            return text;
+        }
+
+        var word = words[badAt / 2];
+        throw new FormatException(
+            $"Word {badAt / 2} (0x{word:X4}) holds byte 0x{ByteAt(words, badAt):X2}, which is not ASCII; text must be 0x00–0x7F.");
+    }
+
+    /// <summary>
+    /// Unpacks at most <paramref name="maxLength"/> characters up to the first NUL; false with the position of the
+    /// first byte above 0x7F when the words are not ASCII text.
+    /// </summary>
+    internal static bool TryReadString(ReadOnlySpan<ushort> words, int maxLength, out string text, out int nonAsciiAt)
     {
         // First pass: find the length and check every byte, so the string is built once at its final size.
+        var limit = Math.Min(maxLength, words.Length * 2);
         var length = 0;
-        while (length < words.Length * 2)
+        while (length < limit)
         {
             var b = ByteAt(words, length);
             if (b == 0)
@@ -74,17 +95,19 @@ public static partial class PlcWords
 
             if (b > 0x7F)
             {
-                var word = words[length / 2];
-                throw new FormatException(
-                    $"Word {length / 2} (0x{word:X4}) holds byte 0x{b:X2}, which is not ASCII; text must be 0x00–0x7F.");
+                text = string.Empty;
+                nonAsciiAt = length;
+                return false;
             }
 
             length++;
         }
 
+        nonAsciiAt = -1;
         if (length == 0)
         {
-            return string.Empty;
+            text = string.Empty;
+            return true;
         }
 
         var chars = length <= 256 ? stackalloc char[length] : new char[length];
@@ -94,10 +117,11 @@ public static partial class PlcWords
         }
 
 #if NET
-        return new string(chars);
+        text = new string(chars);
 #else
-        return new string(chars.ToArray());
+        text = new string(chars.ToArray());
 #endif
+        return true;
     }
 
     private static int ByteAt(ReadOnlySpan<ushort> words, int index) =>

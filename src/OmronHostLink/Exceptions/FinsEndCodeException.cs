@@ -22,4 +22,8 @@ public sealed class FinsEndCodeException : HostLinkException
 
     /// <summary>The Host Link unit number that answered.</summary>
     public int Unit { get; }
+
+    /// <inheritdoc/>
+    /// <remarks>True for response codes that report a busy or timed-out network (<see cref="FinsEndCode.IsTransient"/>).</remarks>
+    public override bool IsTransient => EndCode.IsTransient;
 }

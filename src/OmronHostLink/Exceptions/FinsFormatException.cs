@@ -7,7 +7,7 @@ namespace OmronHostLink;
 /// address out of range...). <see cref="EndCode"/> is the FINS response code a PLC answers such a command with, so a
 /// simulator can reply with it.
 /// </summary>
-public sealed class FinsFormatException : HostLinkException
+internal sealed class FinsFormatException : HostLinkException
 {
     /// <summary>Creates the exception.</summary>
     /// <param name="endCode">The FINS response code that reports the problem (for example <c>1002</c>, command too short).</param>

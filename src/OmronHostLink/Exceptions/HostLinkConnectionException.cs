@@ -8,4 +8,8 @@ public sealed class HostLinkConnectionException : HostLinkException
         : base(message, innerException)
     {
     }
+
+    /// <inheritdoc/>
+    /// <remarks>Always true: the next call opens the link again.</remarks>
+    public override bool IsTransient => true;
 }

@@ -26,4 +26,8 @@ public sealed class HostLinkEndCodeException : HostLinkException
 
     /// <summary>The meaning of the end code.</summary>
     public string Meaning => EndCode.Meaning();
+
+    /// <inheritdoc/>
+    /// <remarks>True for end codes that report a frame the PLC received damaged (<see cref="EndCodes.IsTransient"/>).</remarks>
+    public override bool IsTransient => EndCode.IsTransient();
 }

@@ -14,4 +14,13 @@ public class HostLinkException : Exception
         : base(message, innerException)
     {
     }
+
+    /// <summary>
+    /// Whether the same operation may succeed when tried again: true for a timeout, a damaged or unexpected frame, a
+    /// lost or unavailable link, and PLC end codes that report damage on the line or a busy network (C-mode 13, A3 and
+    /// their kin; FINS 0102–0104, 0204, 0205). False for a failure that repeats the same way every time: a refused
+    /// address, the wrong operating mode, an unsupported command. A write that failed transiently may still have been
+    /// executed; whether to repeat it is the caller's decision.
+    /// </summary>
+    public virtual bool IsTransient => false;
 }

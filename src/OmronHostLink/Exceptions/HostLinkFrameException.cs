@@ -18,4 +18,8 @@ public sealed class HostLinkFrameException : HostLinkException
 
     /// <summary>The frame as received, in printable form, where there was one.</summary>
     public string? Frame { get; }
+
+    /// <inheritdoc/>
+    /// <remarks>Always true: a frame damaged or out of step on the line may arrive whole on the next attempt.</remarks>
+    public override bool IsTransient => true;
 }

@@ -12,4 +12,8 @@ public sealed class HostLinkTimeoutException : HostLinkException
 
     /// <summary>The deadline that passed.</summary>
     public TimeSpan Timeout { get; }
+
+    /// <inheritdoc/>
+    /// <remarks>Always true: the next attempt may be answered.</remarks>
+    public override bool IsTransient => true;
 }

@@ -581,10 +581,7 @@ internal sealed class HostLinkConnection : IAsyncDisposable
     private int WriteFenceFrame(int unit)
     {
         Span<byte> message = stackalloc byte[Protocol.CMode.CModeCommand.PrefixLength + 8];
-        message[0] = (byte)'@';
-        HexAscii.WriteDecimal(unit, message.Slice(1, 2));
-        message[3] = (byte)'T';
-        message[4] = (byte)'S';
+        MessagePrefix.Write(message, unit, "TS");
         lock (TokenRandom)
         {
             for (int i = 5; i < message.Length; i++)

@@ -2,7 +2,7 @@ namespace OmronHostLink.Planning;
 
 /// <summary>
 /// A value to read: an address, how to read it, and optionally the unit (multidrop) it lives in. Used with
-/// <see cref="ReadPlanner"/> and <c>ReadManyAsync</c>.
+/// <see cref="ReadPlanner"/> and <c>ReadTagsAsync</c>.
 /// </summary>
 public sealed class PlcTag
 {
@@ -50,7 +50,7 @@ public sealed class PlcTag
             Guard.Unit(u);
         }
 
-        WordCount = type.WordsPerValue();
+        WordCount = PlcValueCodec.WordCount(type);
         if ((long)address.Word + WordCount > PlcAddress.AreaSize(address.Area))
         {
             throw new ArgumentException($"A {type} at {address} runs past the end of the area.", nameof(address));
@@ -70,7 +70,7 @@ public sealed class PlcTag
     /// <summary>The unit, or null for the reading client's own unit.</summary>
     public int? Unit { get; }
 
-    /// <summary>The number of words the value occupies (1 or 2).</summary>
+    /// <summary>The number of words the value occupies (1, 2 or 4).</summary>
     public int WordCount { get; }
 
     /// <inheritdoc/>
@@ -91,12 +91,13 @@ public readonly struct PlcTagValue
     /// <summary>The tag.</summary>
     public PlcTag Tag { get; }
 
-    /// <summary>The raw words (one or two), as read.</summary>
+    /// <summary>The raw words (one, two or four), as read.</summary>
     public IReadOnlyList<ushort> Words { get; }
 
     /// <summary>
-    /// The value in the tag's type: <see cref="ushort"/> (Word), <see cref="short"/> (Int16), <see cref="int"/>
-    /// (Int32, Bcd), <see cref="uint"/> (UInt32), <see cref="float"/> (Float) or <see cref="bool"/> (Bit).
+    /// The value in the tag's type, as <see cref="PlcValue.ToObject"/> gives it: <see cref="ushort"/> (Word, UInt16),
+    /// <see cref="short"/> (Int16), <see cref="int"/> (Int32, Bcd), <see cref="uint"/> (UInt32), <see cref="float"/>
+    /// (Float), <see cref="double"/> (Double) or <see cref="bool"/> (Bit).
     /// </summary>
     public object Value { get; }
 

@@ -6,7 +6,7 @@ public enum PlannedReadKind
     /// <summary>One C-mode area read (RR, RH, RJ, RD, RC, RE), multi-frame when long: one transaction, one snapshot.</summary>
     CModeArea,
 
-    /// <summary>One FINS 0101 MEMORY AREA READ of at most <see cref="Protocol.Fins.MemoryAreaReadCommand.MaxWords"/> words.</summary>
+    /// <summary>One FINS 0101 MEMORY AREA READ of at most 269 words (what one FA answer frame holds).</summary>
     FinsArea,
 
     /// <summary>One FINS 0104 MULTIPLE MEMORY AREA READ of scattered words.</summary>
@@ -59,7 +59,7 @@ public sealed class PlannedRead
 
 /// <summary>
 /// The transactions that read a set of tags, from <see cref="ReadPlanner.Plan"/>. Pure data: execute the reads (for
-/// example with <c>HostLinkUnit.ReadManyAsync(ReadPlan, CancellationToken)</c>) and turn their words into tag values
+/// example with <c>HostLinkUnit.ReadTagsAsync(ReadPlan, CancellationToken)</c>) and turn their words into tag values
 /// with <see cref="Resolve"/>.
 /// </summary>
 public sealed class ReadPlan
@@ -141,16 +141,8 @@ public sealed class ReadPlan
     internal static long Key(int unit, PlcAddress word)
         => ((long)unit << 40) | ((long)word.Area << 32) | ((long)word.Bank << 24) | (uint)word.Word;
 
-    private static object Decode(PlcTag tag, ushort[] raw, WordOrder order) => tag.Type switch
-    {
-        PlcValueType.Word or PlcValueType.UInt16 => raw[0],
-        PlcValueType.Int16 => PlcWords.ToInt16(raw[0]),
-        PlcValueType.Int32 => PlcWords.ReadInt32(raw, order),
-        PlcValueType.UInt32 => PlcWords.ReadUInt32(raw, order),
-        PlcValueType.Float => PlcWords.ReadSingle(raw, order),
-        PlcValueType.Bcd => PlcWords.FromBcd(raw[0]),
-        _ => PlcWords.GetBit(raw[0], tag.Address.Bit),
-    };
+    private static object Decode(PlcTag tag, ushort[] raw, WordOrder order)
+        => PlcValueCodec.Decode(tag.Type, raw, order, tag.Address.IsBit ? tag.Address.Bit : 0).ToObject();
 }
 
 /// <summary>Turns characters and exchanges into time for a line.</summary>

@@ -14,9 +14,9 @@ namespace OmronHostLink.Planning;
 /// characters. Per unit and area the tags' words are sorted and cut into area reads by dynamic programming, so a gap is
 /// read through whenever the extra characters cost less than another command (about 7 words at 9600 bps with no
 /// turnaround, more with a turnaround). C-mode reads are one command however long (the answer spans frames); FINS
-/// 0101 reads are cut at <see cref="MemoryAreaReadCommand.MaxWords"/> words. With FINS, words that are cheaper as
+/// 0101 reads are cut at 269 words (what one FA answer frame holds). With FINS, words that are cheaper as
 /// items of a 0104 MULTIPLE MEMORY AREA READ (isolated words, in any area) go into as few 0104 commands as the limit of
-/// <see cref="MultipleMemoryAreaReadCommand.MaxItems"/> items allows.
+/// 135 items (what one FA command frame holds) allows.
 /// </remarks>
 public sealed class ReadPlanner
 {
@@ -33,15 +33,15 @@ public sealed class ReadPlanner
     private readonly double _turnaroundChars;
 
     /// <summary>Creates a planner.</summary>
-    /// <param name="protocol">The protocol of the reading unit views: C-mode plans area reads only; FINS plans 0101 and 0104.</param>
+    /// <param name="commandSet">The command set of the reading unit views: C-mode plans area reads only; FINS plans 0101 and 0104.</param>
     /// <param name="timing">The line; null for 9600 bps 7E2.</param>
     /// <param name="turnaround">The PLC's turnaround per frame exchange (what makes another command dearer).</param>
     /// <param name="useMultipleRead">Whether FINS plans may use 0104 MULTIPLE MEMORY AREA READ.</param>
-    public ReadPlanner(HostLinkProtocol protocol = HostLinkProtocol.CMode, LineTiming? timing = null, TimeSpan turnaround = default, bool useMultipleRead = true)
+    public ReadPlanner(HostLinkCommandSet commandSet = HostLinkCommandSet.CMode, LineTiming? timing = null, TimeSpan turnaround = default, bool useMultipleRead = true)
     {
-        if (protocol is not (HostLinkProtocol.CMode or HostLinkProtocol.Fins))
+        if (commandSet is not (HostLinkCommandSet.CMode or HostLinkCommandSet.Fins))
         {
-            throw new ArgumentOutOfRangeException(nameof(protocol), protocol, "Not a Host Link protocol.");
+            throw new ArgumentOutOfRangeException(nameof(commandSet), commandSet, "Not a Host Link command set.");
         }
 
         if (turnaround < TimeSpan.Zero)
@@ -49,7 +49,7 @@ public sealed class ReadPlanner
             throw new ArgumentOutOfRangeException(nameof(turnaround), turnaround, "The turnaround cannot be negative.");
         }
 
-        Protocol = protocol;
+        CommandSet = commandSet;
         Timing = timing ?? LineTiming.Default;
         Turnaround = turnaround;
         UseMultipleRead = useMultipleRead;
@@ -57,8 +57,8 @@ public sealed class ReadPlanner
         _turnaroundChars = turnaround.Ticks / (double)Timing.CharacterTime.Ticks;
     }
 
-    /// <summary>The protocol planned for.</summary>
-    public HostLinkProtocol Protocol { get; }
+    /// <summary>The command set planned for.</summary>
+    public HostLinkCommandSet CommandSet { get; }
 
     /// <summary>The line.</summary>
     public LineTiming Timing { get; }
@@ -83,7 +83,7 @@ public sealed class ReadPlanner
         {
             PlcTag tag = tags[t] ?? throw new ArgumentException($"Tag {t} is null.", nameof(tags));
             PlcAddress word = tag.Address.AsWord();
-            word.EnsureRange(tag.WordCount, Protocol, forWrite: false);
+            word.EnsureRange(tag.WordCount, CommandSet, forWrite: false);
             units[t] = tag.Unit ?? defaultUnit;
             var key = (units[t], word.Area, word.Bank);
             if (!spaces.TryGetValue(key, out List<(int, int)>? spans))
@@ -124,7 +124,7 @@ public sealed class ReadPlanner
         return command + FrameWriter.WireLength(message, CModeResponseFixed, 4) + (exchanges - 1);
     }
 
-    /// <summary>Characters (both ways) of one FINS 0101 read of <paramref name="words"/> words (at most <see cref="MemoryAreaReadCommand.MaxWords"/>).</summary>
+    /// <summary>Characters (both ways) of one FINS 0101 read of <paramref name="words"/> words (at most 269).</summary>
     public static int FinsReadCharacters(int words)
         => FinsCommandFixed + FinsAreaParameterChars + FinsResponseFixed + (4 * words);
 
@@ -153,7 +153,7 @@ public sealed class ReadPlanner
 
     private double RangeCost(PlcArea area, int words)
     {
-        if (Protocol == HostLinkProtocol.CMode)
+        if (CommandSet == HostLinkCommandSet.CMode)
         {
             int chars = CModeReadCharacters(area, words, out int exchanges);
             return chars + (exchanges * _turnaroundChars);
@@ -167,7 +167,7 @@ public sealed class ReadPlanner
 
     private void PlanSpace(int unit, PlcArea area, int bank, List<(int Start, int End)> clusters, List<PlannedRead> reads, SortedDictionary<int, List<PlcAddress>> multiple)
     {
-        bool items = Protocol == HostLinkProtocol.Fins && UseMultipleRead;
+        bool items = CommandSet == HostLinkCommandSet.Fins && UseMultipleRead;
         const int ItemChars = FinsItemCommandChars + FinsItemResponseChars;
         int n = clusters.Count;
 
@@ -271,7 +271,7 @@ public sealed class ReadPlanner
 
     private void AddRange(List<PlannedRead> reads, int unit, PlcArea area, int bank, int start, int count)
     {
-        if (Protocol == HostLinkProtocol.CMode)
+        if (CommandSet == HostLinkCommandSet.CMode)
         {
             int chars = CModeReadCharacters(area, count, out int exchanges);
             reads.Add(new PlannedRead(PlannedReadKind.CModeArea, unit, PlcAddress.WordOf(area, start, bank), count, Array.Empty<PlcAddress>(), chars, exchanges));

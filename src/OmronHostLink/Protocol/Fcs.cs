@@ -4,7 +4,7 @@ namespace OmronHostLink.Protocol;
 /// The Host Link frame check sequence: the XOR of every character of a frame from its first character
 /// (<c>@</c> in a first frame) to its last text character, sent as two upper-case hex characters.
 /// </summary>
-public static class Fcs
+internal static class Fcs
 {
     /// <summary>Computes the FCS over <paramref name="characters"/>.</summary>
     public static byte Compute(ReadOnlySpan<byte> characters)

@@ -4,7 +4,7 @@ namespace OmronHostLink.Protocol;
 /// Where the parts of one validated frame lie. For a first frame: <c>@</c>, unit, header, text, FCS, ending.
 /// For a continuation frame: text, FCS, ending.
 /// </summary>
-public readonly struct FrameInfo
+internal readonly struct FrameInfo
 {
     /// <summary>Creates the description of a frame.</summary>
     public FrameInfo(int unit, int textStart, int textLength, bool isFinal)

@@ -4,7 +4,7 @@ namespace OmronHostLink.Protocol;
 /// Validates the shape and FCS of single frames. Every failure is a <see cref="HostLinkFrameException"/>: a damaged
 /// frame never yields text.
 /// </summary>
-public static class FrameParser
+internal static class FrameParser
 {
     /// <summary>The shortest first frame: <c>@</c>, unit, header, FCS, <c>*</c>, CR.</summary>
     public const int MinFirstFrameLength = 9;
@@ -15,73 +15,38 @@ public static class FrameParser
     {
         if (frame.Length < MinFirstFrameLength - 1 || frame[0] != (byte)'@')
         {
-            throw Malformed(frame, "it does not start with '@' and a unit number and header");
+            throw new HostLinkFrameException(FrameError.Malformed, FrameCheck.Malformed("it does not start with '@' and a unit number and header"), frame);
         }
 
-        int body = BodyEnd(frame, out bool final);
-        if (body < 5)
+        FrameCheck check = FrameCheck.Of(frame);
+        if ((check.ShapeFault(frame) ?? check.FirstFrameFault(frame)) is { } fault)
         {
-            throw Malformed(frame, "it is too short to hold a unit number, a header and an FCS");
+            throw new HostLinkFrameException(FrameError.Malformed, fault, frame);
         }
 
-        if (!HexAscii.TryParseDecimal(frame.Slice(1, 2), out int unit))
-        {
-            throw new HostLinkFrameException(FrameError.Malformed, $"The unit number '{FrameText.Printable(frame.Slice(1, 2))}' is not two decimal digits.", frame);
-        }
-
-        CheckFcs(frame, 0, body);
-        return new FrameInfo(unit, 5, body - 5, final);
+        ThrowIfFcsFault(frame, check);
+        return new FrameInfo(check.Unit, MessagePrefix.Length, check.FirstFrameTextLength, check.IsFinal);
     }
 
     /// <summary>Validates a continuation frame: text + FCS + ending (the FCS covers that frame's text only).</summary>
     /// <exception cref="HostLinkFrameException">The frame is malformed or its FCS does not match.</exception>
     public static FrameInfo ParseContinuation(ReadOnlySpan<byte> frame)
     {
-        int body = BodyEnd(frame, out bool final);
-        CheckFcs(frame, 0, body);
-        return new FrameInfo(-1, 0, body, final);
+        FrameCheck check = FrameCheck.Of(frame);
+        if (check.ShapeFault(frame) is { } fault)
+        {
+            throw new HostLinkFrameException(FrameError.Malformed, fault, frame);
+        }
+
+        ThrowIfFcsFault(frame, check);
+        return new FrameInfo(-1, 0, check.FcsAt, check.IsFinal);
     }
 
-    /// <summary>Returns where the checked characters end (the FCS starts there) and what ending the frame has.</summary>
-    private static int BodyEnd(ReadOnlySpan<byte> frame, out bool final)
+    private static void ThrowIfFcsFault(ReadOnlySpan<byte> frame, FrameCheck check)
     {
-        if (frame.Length < 3 || frame[frame.Length - 1] != (byte)'\r')
+        if (check.FcsFault(frame) is { } fault)
         {
-            throw Malformed(frame, "it does not end with CR");
-        }
-
-        final = frame[frame.Length - 2] == (byte)'*';
-        int fcsEnd = frame.Length - (final ? 2 : 1);
-        int body = fcsEnd - 2;
-        if (body < 0)
-        {
-            throw Malformed(frame, "it is too short to hold an FCS");
-        }
-
-        for (int i = 0; i < fcsEnd; i++)
-        {
-            byte c = frame[i];
-            if (c < 0x20 || c > 0x7E)
-            {
-                throw Malformed(frame, $"it contains the non-printable character 0x{c:X2} at position {i}");
-            }
-        }
-
-        return body;
-    }
-
-    private static void CheckFcs(ReadOnlySpan<byte> frame, int start, int end)
-    {
-        ReadOnlySpan<byte> found = frame.Slice(end, 2);
-        if (!Fcs.Verify(frame.Slice(start, end - start), found, out byte expected))
-        {
-            throw new HostLinkFrameException(
-                FrameError.BadFcs,
-                $"FCS error: the frame carries '{FrameText.Printable(found)}' but its characters give '{expected:X2}'.",
-                frame);
+            throw new HostLinkFrameException(FrameError.BadFcs, fault, frame);
         }
     }
-
-    private static HostLinkFrameException Malformed(ReadOnlySpan<byte> frame, string why)
-        => new(FrameError.Malformed, $"The frame is malformed: {why}.", frame);
 }

@@ -3,7 +3,7 @@ using System.Buffers;
 namespace OmronHostLink.Protocol;
 
 /// <summary>What <see cref="FrameReader.TryReadFrame"/> found in the buffer.</summary>
-public enum FrameScanResult
+internal enum FrameScanResult
 {
     /// <summary>A CR-terminated frame was taken from the buffer.</summary>
     Frame,
@@ -20,7 +20,7 @@ public enum FrameScanResult
 /// <c>@</c> is line noise and is discarded. Nothing is buffered without bound: past
 /// <see cref="MaxFrameLength"/> characters without a CR the reader reports <see cref="FrameScanResult.Overflow"/>.
 /// </summary>
-public static class FrameReader
+internal static class FrameReader
 {
     /// <summary>
     /// The longest run of characters accepted before a CR. FINS over Host Link frames reach 1,115 characters; a CS/CJ

@@ -3,7 +3,7 @@ using System.Text;
 namespace OmronHostLink.Protocol;
 
 /// <summary>Turns frame bytes into text fit for logs and messages (CR as <c>\r</c>, other control bytes as <c>\xNN</c>).</summary>
-public static class FrameText
+internal static class FrameText
 {
     /// <summary>A printable rendering of <paramref name="bytes"/>.</summary>
     public static string Printable(ReadOnlySpan<byte> bytes)

@@ -11,7 +11,7 @@ namespace OmronHostLink.Protocol;
 /// The first <c>fixedLength</c> characters (address fields, end code) must stay in the first frame, and the rest is
 /// cut only between whole atoms (four characters of one word), so no word is ever split across frames.
 /// </remarks>
-public static class FrameWriter
+internal static class FrameWriter
 {
     /// <summary>Longest first (or single) frame, including FCS and ending.</summary>
     public const int MaxFirstFrameLength = 131;

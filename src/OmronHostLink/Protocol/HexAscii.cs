@@ -4,7 +4,7 @@ namespace OmronHostLink.Protocol;
 /// ASCII encodings used inside Host Link frames: hexadecimal bytes and words, and fixed-width decimal (BCD-style) fields.
 /// Output is always upper case, as every Omron unit writes it; input accepts either case.
 /// </summary>
-public static class HexAscii
+internal static class HexAscii
 {
     private static ReadOnlySpan<byte> Digits => "0123456789ABCDEF"u8;
 
@@ -153,6 +153,34 @@ public static class HexAscii
             }
 
             value = (value * 10) + (c - '0');
+        }
+
+        return true;
+    }
+
+    /// <summary>Whether every character of <paramref name="text"/> is a hex digit (either case).</summary>
+    public static bool IsHex(ReadOnlySpan<byte> text)
+    {
+        foreach (byte c in text)
+        {
+            if (!TryParseNibble(c, out _))
+            {
+                return false;
+            }
+        }
+
+        return true;
+    }
+
+    /// <summary>Whether every character of <paramref name="text"/> is a decimal digit.</summary>
+    public static bool IsDecimal(ReadOnlySpan<byte> text)
+    {
+        foreach (byte c in text)
+        {
+            if (c is < (byte)'0' or > (byte)'9')
+            {
+                return false;
+            }
         }
 
         return true;

@@ -1,7 +1,7 @@
 namespace OmronHostLink.Protocol;
 
 /// <summary>Checks text that is copied into a frame as it is, so that it can never end or fake a frame.</summary>
-public static class SafeText
+internal static class SafeText
 {
     /// <summary>ASCII bytes of <paramref name="text"/>, refusing anything that is not printable ASCII and the frame characters <c>*</c> and <c>@</c>.</summary>
     /// <exception cref="ArgumentException">The text holds a character that may not travel inside a frame.</exception>

@@ -2,30 +2,30 @@ namespace OmronHostLink.Tests.Addressing;
 
 public class PlcAddressRangeTests
 {
-    private static Action Ensure(string address, int count, HostLinkProtocol protocol, bool forWrite = false) =>
+    private static Action Ensure(string address, int count, HostLinkCommandSet protocol, bool forWrite = false) =>
         () => PlcAddress.Parse(address).EnsureRange(count, protocol, forWrite);
 
     [Theory]
-    [InlineData("D0", 32768, HostLinkProtocol.Fins, true)]
-    [InlineData("D32767", 1, HostLinkProtocol.Fins, true)]
-    [InlineData("D10000", 1, HostLinkProtocol.Fins, false)]
-    [InlineData("W0", 512, HostLinkProtocol.Fins, true)]
-    [InlineData("T4095", 1, HostLinkProtocol.Fins, false)]
-    [InlineData("EC_32767", 1, HostLinkProtocol.Fins, true)]
-    [InlineData("A0", 960, HostLinkProtocol.Fins, false)]
-    [InlineData("A448", 512, HostLinkProtocol.Fins, true)]
-    [InlineData("A0", 960, HostLinkProtocol.CMode, false)]
-    [InlineData("A448", 512, HostLinkProtocol.CMode, true)]
-    [InlineData("D0", 10000, HostLinkProtocol.CMode, true)]
-    [InlineData("D9999", 1, HostLinkProtocol.CMode, false)]
-    [InlineData("E1_9999", 1, HostLinkProtocol.CMode, true)]
-    [InlineData("CIO0", 6144, HostLinkProtocol.CMode, true)]
-    [InlineData("H0", 512, HostLinkProtocol.CMode, true)]
-    [InlineData("T2047", 1, HostLinkProtocol.CMode, false)]
-    [InlineData("C0", 2048, HostLinkProtocol.CMode, true)]
-    [InlineData("CIO100.05", 1, HostLinkProtocol.CMode, false)]
-    [InlineData("D9999.15", 1, HostLinkProtocol.CMode, true)]
-    public void Accepts_transfers_within_reach(string address, int count, HostLinkProtocol protocol, bool forWrite) =>
+    [InlineData("D0", 32768, HostLinkCommandSet.Fins, true)]
+    [InlineData("D32767", 1, HostLinkCommandSet.Fins, true)]
+    [InlineData("D10000", 1, HostLinkCommandSet.Fins, false)]
+    [InlineData("W0", 512, HostLinkCommandSet.Fins, true)]
+    [InlineData("T4095", 1, HostLinkCommandSet.Fins, false)]
+    [InlineData("EC_32767", 1, HostLinkCommandSet.Fins, true)]
+    [InlineData("A0", 960, HostLinkCommandSet.Fins, false)]
+    [InlineData("A448", 512, HostLinkCommandSet.Fins, true)]
+    [InlineData("A0", 960, HostLinkCommandSet.CMode, false)]
+    [InlineData("A448", 512, HostLinkCommandSet.CMode, true)]
+    [InlineData("D0", 10000, HostLinkCommandSet.CMode, true)]
+    [InlineData("D9999", 1, HostLinkCommandSet.CMode, false)]
+    [InlineData("E1_9999", 1, HostLinkCommandSet.CMode, true)]
+    [InlineData("CIO0", 6144, HostLinkCommandSet.CMode, true)]
+    [InlineData("H0", 512, HostLinkCommandSet.CMode, true)]
+    [InlineData("T2047", 1, HostLinkCommandSet.CMode, false)]
+    [InlineData("C0", 2048, HostLinkCommandSet.CMode, true)]
+    [InlineData("CIO100.05", 1, HostLinkCommandSet.CMode, false)]
+    [InlineData("D9999.15", 1, HostLinkCommandSet.CMode, true)]
+    public void Accepts_transfers_within_reach(string address, int count, HostLinkCommandSet protocol, bool forWrite) =>
         Ensure(address, count, protocol, forWrite).Should().NotThrow();
 
     [Theory]
@@ -33,7 +33,7 @@ public class PlcAddressRangeTests
     [InlineData(-1)]
     [InlineData(int.MinValue)]
     public void Count_must_be_at_least_one(int count) =>
-        Ensure("D100", count, HostLinkProtocol.Fins).Should().Throw<ArgumentOutOfRangeException>()
+        Ensure("D100", count, HostLinkCommandSet.Fins).Should().Throw<ArgumentOutOfRangeException>()
             .WithMessage($"*D100 needs at least 1 word; count was {count}*").Which.ParamName.Should().Be("count");
 
     [Theory]
@@ -45,14 +45,14 @@ public class PlcAddressRangeTests
     [InlineData("D0", int.MaxValue, "*run past the end of the DM area*")]
     public void Words_must_fit_in_the_area(string address, int count, string message)
     {
-        Ensure(address, count, HostLinkProtocol.Fins).Should().Throw<ArgumentOutOfRangeException>().WithMessage(message);
-        Ensure(address, count, HostLinkProtocol.CMode).Should().Throw<ArgumentOutOfRangeException>().WithMessage(message);
+        Ensure(address, count, HostLinkCommandSet.Fins).Should().Throw<ArgumentOutOfRangeException>().WithMessage(message);
+        Ensure(address, count, HostLinkCommandSet.CMode).Should().Throw<ArgumentOutOfRangeException>().WithMessage(message);
     }
 
     [Theory]
-    [InlineData(HostLinkProtocol.CMode)]
-    [InlineData(HostLinkProtocol.Fins)]
-    public void Writes_to_read_only_auxiliary_words_are_refused(HostLinkProtocol protocol)
+    [InlineData(HostLinkCommandSet.CMode)]
+    [InlineData(HostLinkCommandSet.Fins)]
+    public void Writes_to_read_only_auxiliary_words_are_refused(HostLinkCommandSet protocol)
     {
         Ensure("A0", 1, protocol, forWrite: true).Should().Throw<ArgumentException>()
             .WithMessage("A0 is in the read-only part of the auxiliary area (A0–A447); writes can go to A448–A959 only.");
@@ -68,10 +68,10 @@ public class PlcAddressRangeTests
     [InlineData(true)]
     public void C_mode_cannot_reach_the_work_area(bool forWrite)
     {
-        Ensure("W30", 1, HostLinkProtocol.CMode, forWrite).Should().Throw<ArgumentException>()
+        Ensure("W30", 1, HostLinkCommandSet.CMode, forWrite).Should().Throw<ArgumentException>()
             .WithMessage("W30: the work area (W) is not reachable with C-mode commands; use FINS.");
-        Ensure("W30.06", 1, HostLinkProtocol.CMode, forWrite).Should().Throw<ArgumentException>().WithMessage("W30.06: *use FINS*");
-        Ensure("W30", 1, HostLinkProtocol.Fins, forWrite).Should().NotThrow();
+        Ensure("W30.06", 1, HostLinkCommandSet.CMode, forWrite).Should().Throw<ArgumentException>().WithMessage("W30.06: *use FINS*");
+        Ensure("W30", 1, HostLinkCommandSet.Fins, forWrite).Should().NotThrow();
     }
 
     [Theory]
@@ -86,11 +86,11 @@ public class PlcAddressRangeTests
     [InlineData("C2000", 100, false, "100 words from C2000 reach C2099, beyond the counter numbers (0–2047)*")]
     public void C_mode_limits_are_named_in_the_message(string address, int count, bool forWrite, string message)
     {
-        Ensure(address, count, HostLinkProtocol.CMode, forWrite).Should().Throw<ArgumentOutOfRangeException>().WithMessage(message);
-        Ensure(address, count, HostLinkProtocol.Fins, forWrite).Should().NotThrow("FINS reaches the whole area");
+        Ensure(address, count, HostLinkCommandSet.CMode, forWrite).Should().Throw<ArgumentOutOfRangeException>().WithMessage(message);
+        Ensure(address, count, HostLinkCommandSet.Fins, forWrite).Should().NotThrow("FINS reaches the whole area");
     }
 
     [Fact]
     public void An_undefined_protocol_is_rejected() =>
-        Ensure("D0", 1, (HostLinkProtocol)7).Should().Throw<ArgumentOutOfRangeException>().Which.ParamName.Should().Be("protocol");
+        Ensure("D0", 1, (HostLinkCommandSet)7).Should().Throw<ArgumentOutOfRangeException>().Which.ParamName.Should().Be("commandSet");
 }

@@ -21,8 +21,10 @@ public class AreaReadCommandSpanTests
     [InlineData(CModeArea.Holding, 0, 512, 0, 31)]
     [InlineData(CModeArea.Em, 9990, 10, 0xC, 2)]
     [InlineData(CModeArea.TimerCounterStatus, 2048, 5, 0, 3)]
-    public void Static_encoders_match_the_command_object(CModeArea area, int begin, int count, int bank, int unit)
+    public void Static_encoders_match_the_command_object(object areaValue, int begin, int count, int bank, int unit)
     {
+        // The area arrives as object: the test method is public, the protocol types are internal.
+        var area = (CModeArea)areaValue;
         var command = new AreaReadCommand(area, begin, count, bank);
         byte[] expectedMessage = command.ToMessage(unit);
         var expectedFrame = new ArrayBufferWriter<byte>();

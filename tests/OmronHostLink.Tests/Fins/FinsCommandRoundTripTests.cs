@@ -85,8 +85,10 @@ public class FinsCommandRoundTripTests
 
     [Theory]
     [MemberData(nameof(Generators))]
-    public void Command_survives_encode_frame_parse(string kind, Func<Random, FinsCommand> generate)
+    public void Command_survives_encode_frame_parse(string kind, object generator)
     {
+        // The generator arrives as object: the test method is public, the protocol types are internal.
+        var generate = (Func<Random, FinsCommand>)generator;
         var random = new Random(kind.GetHashCode(StringComparison.Ordinal) & 0x7FFF ^ 0x5EED);
         for (int i = 0; i < Iterations; i++)
         {

@@ -62,8 +62,10 @@ public class FinsEndCodeAndAreaTests
     [InlineData(FinsAreaKind.Auxiliary, 0xB3, 0x33)]
     [InlineData(FinsAreaKind.Dm, 0x82, 0x02)]
     [InlineData(FinsAreaKind.EmCurrentBank, 0x98, 0x0A)]
-    public void Area_codes_of_the_protocol_table(FinsAreaKind kind, int word, int bit)
+    public void Area_codes_of_the_protocol_table(object kindValue, int word, int bit)
     {
+        // The kind arrives as object: the test method is public, the protocol types are internal.
+        var kind = (FinsAreaKind)kindValue;
         FinsMemoryArea.WordCode(kind).Should().Be((byte)word);
         FinsMemoryArea.BitCode(kind).Should().Be((byte)bit);
         FinsMemoryArea.ElementSize((byte)word).Should().Be(2);

@@ -16,11 +16,11 @@ public sealed class ClientSimulatorTests
         Pty,
     }
 
-    private static HostLinkClientOptions Options(HostLinkProtocol protocol = HostLinkProtocol.CMode) => new()
+    private static HostLinkClientOptions Options(HostLinkCommandSet protocol = HostLinkCommandSet.CMode) => new()
     {
         LineTiming = new LineTiming(115200, 11),
         TurnaroundAllowance = TimeSpan.FromMilliseconds(500),
-        Protocol = protocol,
+        CommandSet = protocol,
     };
 
     /// <summary>A simulator and a client connected to it over the chosen wire.</summary>
@@ -32,7 +32,7 @@ public sealed class ClientSimulatorTests
 
         public HostLinkClient Client { get; private set; } = null!;
 
-        public static async Task<Rig> StartAsync(Wire wire, HostLinkProtocol protocol = HostLinkProtocol.CMode, VirtualPlcOptions? plcOptions = null)
+        public static async Task<Rig> StartAsync(Wire wire, HostLinkCommandSet protocol = HostLinkCommandSet.CMode, VirtualPlcOptions? plcOptions = null)
         {
             var rig = new Rig { Plc = new VirtualPlc(plcOptions ?? new VirtualPlcOptions { Units = new[] { 0, 3 } }) };
             if (wire == Wire.Tcp)
@@ -69,15 +69,15 @@ public sealed class ClientSimulatorTests
 
     public static IEnumerable<object[]> WiresAndProtocols =>
         from w in new[] { Wire.Tcp, Wire.Pty }
-        from p in new[] { HostLinkProtocol.CMode, HostLinkProtocol.Fins }
+        from p in new[] { HostLinkCommandSet.CMode, HostLinkCommandSet.Fins }
         select new object[] { w, p };
 
     [Theory]
     [MemberData(nameof(WiresAndProtocols))]
-    public async Task Every_area_round_trips(Wire wire, HostLinkProtocol protocol)
+    public async Task Every_area_round_trips(Wire wire, HostLinkCommandSet protocol)
     {
         await using Rig rig = await Rig.StartAsync(wire, protocol);
-        string[] addresses = protocol == HostLinkProtocol.CMode
+        string[] addresses = protocol == HostLinkCommandSet.CMode
             ? new[] { "D100", "CIO 200", "H10", "A448", "T5", "C7", "E1_100", "EC_9990" }
             : new[] { "D100", "D20000", "CIO 200", "W30", "H10", "A448", "T3000", "C7", "E1_30000", "EC_9990" };
         ushort value = 0x1234;
@@ -94,7 +94,7 @@ public sealed class ClientSimulatorTests
 
     [Theory]
     [MemberData(nameof(WiresAndProtocols))]
-    public async Task A_1000_word_read_and_a_200_word_write(Wire wire, HostLinkProtocol protocol)
+    public async Task A_1000_word_read_and_a_200_word_write(Wire wire, HostLinkCommandSet protocol)
     {
         await using Rig rig = await Rig.StartAsync(wire, protocol);
         ushort[] seeded = Enumerable.Range(0, 1000).Select(i => (ushort)(i * 7)).ToArray();
@@ -109,7 +109,7 @@ public sealed class ClientSimulatorTests
 
     [Theory]
     [MemberData(nameof(WiresAndProtocols))]
-    public async Task Mode_changes_and_status(Wire wire, HostLinkProtocol protocol)
+    public async Task Mode_changes_and_status(Wire wire, HostLinkCommandSet protocol)
     {
         await using Rig rig = await Rig.StartAsync(wire, protocol);
 

@@ -6,8 +6,8 @@ namespace OmronHostLink.Tests.Planning;
 
 public class ReadPlannerTests
 {
-    private static readonly ReadPlanner CMode = new(HostLinkProtocol.CMode);
-    private static readonly ReadPlanner Fins = new(HostLinkProtocol.Fins);
+    private static readonly ReadPlanner CMode = new(HostLinkCommandSet.CMode);
+    private static readonly ReadPlanner Fins = new(HostLinkCommandSet.Fins);
 
     private static PlcTag[] Tags(params string[] addresses) => addresses.Select(a => new PlcTag(a)).ToArray();
 
@@ -59,7 +59,7 @@ public class ReadPlannerTests
     [Fact]
     public void A_turnaround_makes_commands_dearer_so_larger_gaps_are_merged()
     {
-        var slow = new ReadPlanner(HostLinkProtocol.CMode, LineTiming.Default, TimeSpan.FromMilliseconds(20));
+        var slow = new ReadPlanner(HostLinkCommandSet.CMode, LineTiming.Default, TimeSpan.FromMilliseconds(20));
         slow.Plan(Tags("D0", "D8")).Reads.Should().ContainSingle();
         slow.Plan(Tags("D0", "D30")).Reads.Should().HaveCount(2);
     }
@@ -135,7 +135,7 @@ public class ReadPlannerTests
     [Fact]
     public void Without_multiple_read_fins_uses_area_reads()
     {
-        var planner = new ReadPlanner(HostLinkProtocol.Fins, useMultipleRead: false);
+        var planner = new ReadPlanner(HostLinkCommandSet.Fins, useMultipleRead: false);
         planner.Plan(Tags("D0", "D500", "H10")).Reads.Should().OnlyContain(r => r.Kind == PlannedReadKind.FinsArea).And.HaveCount(3);
     }
 
@@ -208,8 +208,8 @@ public class ReadPlannerTests
             foreach (ReadPlanner planner in new[] { CMode, Fins })
             {
                 ReadPlan plan = planner.Plan(tags);
-                ReadPlan naive = new ReadPlanner(planner.Protocol, useMultipleRead: false).Plan(tags);
-                plan.Characters.Should().BeLessThanOrEqualTo(tags.Sum(t => planner.Protocol == HostLinkProtocol.CMode
+                ReadPlan naive = new ReadPlanner(planner.CommandSet, useMultipleRead: false).Plan(tags);
+                plan.Characters.Should().BeLessThanOrEqualTo(tags.Sum(t => planner.CommandSet == HostLinkCommandSet.CMode
                     ? ReadPlanner.CModeReadCharacters(t.Address.Area, t.WordCount, out _)
                     : ReadPlanner.FinsReadCharacters(t.WordCount)));
                 plan.TransactionCount.Should().BeLessThanOrEqualTo(naive.TransactionCount);

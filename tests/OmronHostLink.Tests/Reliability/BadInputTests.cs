@@ -9,7 +9,7 @@ namespace OmronHostLink.Tests.Reliability;
 /// </summary>
 public sealed class BadInputTests
 {
-    public sealed record Row(string Name, Func<HostLinkUnit, Task> Call, Type Exception, string MessageNames, HostLinkProtocol Protocol = HostLinkProtocol.CMode)
+    public sealed record Row(string Name, Func<HostLinkUnit, Task> Call, Type Exception, string MessageNames, HostLinkCommandSet Protocol = HostLinkCommandSet.CMode)
     {
         public override string ToString() => Name;
     }
@@ -36,18 +36,18 @@ public sealed class BadInputTests
         new("read: count -1", u => u.ReadWordsAsync("D0", -1).AsTask(), typeof(ArgumentOutOfRangeException), "count"),
         new("read: count past the area", u => u.ReadWordsAsync("D9999", 2).AsTask(), typeof(ArgumentOutOfRangeException), "9999"),
         new("read: count over any limit", u => u.ReadWordsAsync("D0", 100_000).AsTask(), typeof(ArgumentOutOfRangeException), "100000"),
-        new("FINS read: count past DM", u => u.ReadWordsAsync("D32767", 2).AsTask(), typeof(ArgumentOutOfRangeException), "32767", HostLinkProtocol.Fins),
+        new("FINS read: count past DM", u => u.ReadWordsAsync("D32767", 2).AsTask(), typeof(ArgumentOutOfRangeException), "32767", HostLinkCommandSet.Fins),
         new("write: empty data", u => u.WriteWordsAsync("D0", ReadOnlyMemory<ushort>.Empty).AsTask(), typeof(ArgumentOutOfRangeException), "count"),
         new("write: past the area", u => u.WriteWordsAsync("D9999", new ushort[2]).AsTask(), typeof(ArgumentOutOfRangeException), "9999"),
         new("write: AR read-only part", u => u.WriteWordAsync("A0", 1).AsTask(), typeof(ArgumentException), "A"),
         new("read string: length 0", u => u.ReadStringAsync("D0", 0).AsTask(), typeof(ArgumentOutOfRangeException), "length"),
-        new("fill: count 0", u => u.FillAsync("D0", 0, 1).AsTask(), typeof(ArgumentOutOfRangeException), "count", HostLinkProtocol.Fins),
-        new("transfer: past DM", u => u.TransferAsync("D0", "D32767", 2).AsTask(), typeof(ArgumentOutOfRangeException), "32767", HostLinkProtocol.Fins),
-        new("error log: count 0", u => u.ReadErrorLogAsync(0, 0).AsTask(), typeof(ArgumentOutOfRangeException), "count", HostLinkProtocol.Fins),
-        new("error log: count 54", u => u.ReadErrorLogAsync(0, 54).AsTask(), typeof(ArgumentOutOfRangeException), "count", HostLinkProtocol.Fins),
-        new("read multiple: null", u => u.ReadMultipleAsync(null!).AsTask(), typeof(ArgumentNullException), "addresses", HostLinkProtocol.Fins),
-        new("read multiple: empty", u => u.ReadMultipleAsync(Array.Empty<string>()).AsTask(), typeof(ArgumentException), "item", HostLinkProtocol.Fins),
-        new("read multiple: bad address", u => u.ReadMultipleAsync(new[] { "D0", "Q7" }).AsTask(), typeof(FormatException), "Q7", HostLinkProtocol.Fins),
+        new("fill: count 0", u => u.FillAsync("D0", 0, 1).AsTask(), typeof(ArgumentOutOfRangeException), "count", HostLinkCommandSet.Fins),
+        new("transfer: past DM", u => u.TransferAsync("D0", "D32767", 2).AsTask(), typeof(ArgumentOutOfRangeException), "32767", HostLinkCommandSet.Fins),
+        new("error log: count 0", u => u.ReadErrorLogAsync(0, 0).AsTask(), typeof(ArgumentOutOfRangeException), "count", HostLinkCommandSet.Fins),
+        new("error log: count 54", u => u.ReadErrorLogAsync(0, 54).AsTask(), typeof(ArgumentOutOfRangeException), "count", HostLinkCommandSet.Fins),
+        new("read multiple: null", u => u.ReadScatteredAsync(null!).AsTask(), typeof(ArgumentNullException), "addresses", HostLinkCommandSet.Fins),
+        new("read multiple: empty", u => u.ReadScatteredAsync(Array.Empty<string>()).AsTask(), typeof(ArgumentException), "item", HostLinkCommandSet.Fins),
+        new("read multiple: bad address", u => u.ReadScatteredAsync(new[] { "D0", "Q7" }).AsTask(), typeof(FormatException), "Q7", HostLinkCommandSet.Fins),
 
         // Values.
         new("BCD 10000", u => u.WriteBcdAsync("D0", 10000).AsTask(), typeof(ArgumentOutOfRangeException), "10000"),
@@ -63,15 +63,15 @@ public sealed class BadInputTests
         new("TS: null", u => u.TestAsync(null!).AsTask(), typeof(ArgumentNullException), "text"),
         new("bit write: word address", u => u.WriteBitAsync("D10", true).AsTask(), typeof(ArgumentException), "D10"),
         new("bit read: word address", u => u.ReadBitAsync("D10").AsTask(), typeof(ArgumentException), "D10"),
-        new("force: word address", u => u.ForceBitAsync("CIO10", FinsForceAction.ForceSet).AsTask(), typeof(ArgumentException), "CIO", HostLinkProtocol.Fins),
+        new("force: word address", u => u.ForceBitAsync("CIO10", FinsForceAction.ForceSet).AsTask(), typeof(ArgumentException), "CIO", HostLinkCommandSet.Fins),
         new("mode: undefined", u => u.SetModeAsync((PlcMode)99).AsTask(), typeof(ArgumentOutOfRangeException), "mode"),
-        new("FINS run: PROGRAM", u => u.RunAsync(PlcMode.Program).AsTask(), typeof(ArgumentException), "StopAsync", HostLinkProtocol.Fins),
-        new("clock: year 1960", u => u.WriteClockAsync(new DateTime(1960, 1, 1)).AsTask(), typeof(ArgumentOutOfRangeException), "1960", HostLinkProtocol.Fins),
+        new("FINS run: PROGRAM", u => u.RunAsync(PlcMode.Program).AsTask(), typeof(ArgumentException), "StopAsync", HostLinkCommandSet.Fins),
+        new("clock: year 1960", u => u.WriteClockAsync(new DateTime(1960, 1, 1)).AsTask(), typeof(ArgumentOutOfRangeException), "1960", HostLinkCommandSet.Fins),
 
         // Units.
         new("unit -1", u => Task.FromResult(u.Unit(-1)), typeof(ArgumentOutOfRangeException), "-1"),
         new("unit 32", u => Task.FromResult(u.Unit(32)), typeof(ArgumentOutOfRangeException), "32"),
-        new("unit 99", u => Task.FromResult(u.Unit(99, HostLinkProtocol.Fins)), typeof(ArgumentOutOfRangeException), "99"),
+        new("unit 99", u => Task.FromResult(u.Unit(99, HostLinkCommandSet.Fins)), typeof(ArgumentOutOfRangeException), "99"),
     };
 
     public static IEnumerable<object[]> Cases => Rows.Select(r => new object[] { r });
@@ -81,7 +81,7 @@ public sealed class BadInputTests
     public async Task Bad_input_is_refused_before_anything_is_sent(Row row)
     {
         var stream = new RecordingStream();
-        await using (HostLinkClient client = HostLinkClient.ForStream(stream, new HostLinkClientOptions { Protocol = row.Protocol }))
+        await using (HostLinkClient client = HostLinkClient.ForStream(stream, new HostLinkClientOptions { CommandSet = row.Protocol }))
         {
             Exception? caught = null;
             try

@@ -1,7 +1,7 @@
 namespace OmronHostLink.Protocol.CMode;
 
 /// <summary>RR, RL, RH, RC, RG, RD, RJ, RE: read <see cref="Count"/> entries from <see cref="Begin"/> (EM: in <see cref="Bank"/>).</summary>
-public sealed class AreaReadCommand : CModeCommand
+internal sealed class AreaReadCommand : CModeCommand
 {
     /// <summary>Creates the command; the range is checked against the area's C-mode limits.</summary>
     /// <exception cref="ArgumentOutOfRangeException">The range is outside what C-mode reaches.</exception>
@@ -30,7 +30,7 @@ public sealed class AreaReadCommand : CModeCommand
     public override string Header => CModeAreaInfo.ReadHeader(Area);
 
     /// <inheritdoc/>
-    public override int TextLength => Area == CModeArea.Em ? 10 : 8;
+    public override int TextLength => GetTextLength(Area);
 
     /// <inheritdoc/>
     public override int ResponseAtomLength => CModeAreaInfo.CharactersPerEntry(Area);
@@ -42,7 +42,10 @@ public sealed class AreaReadCommand : CModeCommand
     public override void WriteText(Span<byte> destination) => Write(Area, Begin, Count, Bank, destination);
 
     /// <summary>The length of the unframed message (<c>@</c>, unit, header, text) of a read of <paramref name="area"/>.</summary>
-    public static int GetMessageLength(CModeArea area) => PrefixLength + (area == CModeArea.Em ? 10 : 8);
+    public static int GetMessageLength(CModeArea area) => PrefixLength + GetTextLength(area);
+
+    /// <summary>The length of the text of a read of <paramref name="area"/>: bank (EM only), begin word and count, 4 digits each.</summary>
+    public static int GetTextLength(CModeArea area) => CModeAreaInfo.BankLength(area) + 8;
 
     /// <summary>The length of the framed command (message, FCS, <c>*</c>, CR) of a read of <paramref name="area"/>; a read command is always one frame.</summary>
     public static int GetFrameLength(CModeArea area) => GetMessageLength(area) + FrameWriter.FinalOverhead;
@@ -64,11 +67,7 @@ public sealed class AreaReadCommand : CModeCommand
             throw new ArgumentException($"The destination holds {destination.Length} characters; the message needs {length}.", nameof(destination));
         }
 
-        string header = CModeAreaInfo.ReadHeader(area);
-        destination[0] = (byte)'@';
-        HexAscii.WriteDecimal(unit, destination.Slice(1, 2));
-        destination[3] = (byte)header[0];
-        destination[4] = (byte)header[1];
+        MessagePrefix.Write(destination, unit, CModeAreaInfo.ReadHeader(area));
         return PrefixLength + Write(area, begin, count, bank, destination.Slice(PrefixLength));
     }
 
@@ -94,13 +93,7 @@ public sealed class AreaReadCommand : CModeCommand
     /// <returns>The number of characters written.</returns>
     public static int Write(CModeArea area, int begin, int count, int bank, Span<byte> destination)
     {
-        int i = 0;
-        if (area == CModeArea.Em)
-        {
-            HexAscii.WriteByte((byte)bank, destination);
-            i = 2;
-        }
-
+        int i = CModeAreaInfo.WriteBank(area, bank, destination);
         HexAscii.WriteDecimal(begin, destination.Slice(i, 4));
         HexAscii.WriteDecimal(count, destination.Slice(i + 4, 4));
         return i + 8;

@@ -4,7 +4,7 @@ namespace OmronHostLink.Protocol.CMode;
 /// WR, WL, WH, WC, WD, WJ, WE: write words from <see cref="Begin"/>. Long writes span several frames; the address and
 /// the first word stay in the first frame and no word is split between frames.
 /// </summary>
-public sealed class AreaWriteCommand : CModeCommand
+internal sealed class AreaWriteCommand : CModeCommand
 {
     private readonly ushort[] _words;
 
@@ -35,7 +35,7 @@ public sealed class AreaWriteCommand : CModeCommand
     public override string Header => CModeAreaInfo.WriteHeader(Area);
 
     /// <inheritdoc/>
-    public override int FixedTextLength => Area == CModeArea.Em ? 6 : 4;
+    public override int FixedTextLength => GetFixedTextLength(Area);
 
     /// <inheritdoc/>
     public override int TextLength => FixedTextLength + (_words.Length * 4);
@@ -49,17 +49,14 @@ public sealed class AreaWriteCommand : CModeCommand
     /// <inheritdoc/>
     public override void WriteText(Span<byte> destination) => Write(Area, Begin, Bank, _words, destination);
 
+    /// <summary>The characters of a write's text that must stay in the first frame: bank (EM only) and begin word.</summary>
+    public static int GetFixedTextLength(CModeArea area) => CModeAreaInfo.BankLength(area) + 4;
+
     /// <summary>Writes the text of a write command without creating a command object.</summary>
     /// <returns>The number of characters written.</returns>
     public static int Write(CModeArea area, int begin, int bank, ReadOnlySpan<ushort> words, Span<byte> destination)
     {
-        int i = 0;
-        if (area == CModeArea.Em)
-        {
-            HexAscii.WriteByte((byte)bank, destination);
-            i = 2;
-        }
-
+        int i = CModeAreaInfo.WriteBank(area, bank, destination);
         HexAscii.WriteDecimal(begin, destination.Slice(i, 4));
         HexAscii.WriteWords(words, destination.Slice(i + 4, words.Length * 4));
         return i + 4 + (words.Length * 4);

@@ -1,7 +1,7 @@
 namespace OmronHostLink.Protocol.CMode;
 
 /// <summary>The memory areas C-mode read and write commands reach, each with its own header pair.</summary>
-public enum CModeArea
+internal enum CModeArea
 {
     /// <summary>CIO (IR/SR) area: RR / WR, words 0000-6143.</summary>
     Cio,

@@ -1,10 +1,19 @@
 namespace OmronHostLink.Protocol.CMode;
 
 /// <summary>Headers and address limits of each <see cref="CModeArea"/> on CS/CJ CPU Units (W342 4-3; PROTOCOL.md §3).</summary>
-public static class CModeAreaInfo
+internal static class CModeAreaInfo
 {
     /// <summary>The highest EM bank C-mode reaches (bank C).</summary>
-    public const int MaxEmBank = 0x0C;
+    public const int MaxEmBank = PlcAreaInfo.EmBankCount - 1;
+
+    /// <summary>
+    /// Where counters start among the timer/counter entries of RC, WC and RG: timer <c>n</c> is entry <c>n</c>, counter
+    /// <c>n</c> is entry 2048 + <c>n</c>; so C-mode reaches timers and counters 0–2047 (W342 p128).
+    /// </summary>
+    public const int CounterOffset = 2048;
+
+    /// <summary>The CIO word the LR area starts at on CS/CJ: LR <c>n</c> (RL, WL) is CIO 1000 + <c>n</c>.</summary>
+    public const int LrCioStart = 1000;
 
     /// <summary>The read header (RR, RL, RH, RC, RG, RD, RJ, RE).</summary>
     public static string ReadHeader(CModeArea area) => area switch
@@ -65,15 +74,31 @@ public static class CModeAreaInfo
         CModeArea.Cio => 6144,
         CModeArea.Lr => 200,
         CModeArea.Holding => 512,
-        CModeArea.TimerCounterPv or CModeArea.TimerCounterStatus => 4096,
+        CModeArea.TimerCounterPv or CModeArea.TimerCounterStatus => 2 * CounterOffset,
         CModeArea.Dm => 10000,
         CModeArea.Auxiliary => 960,
         CModeArea.Em => 10000,
         _ => throw new ArgumentOutOfRangeException(nameof(area), area, "Unknown C-mode area."),
     };
 
+    /// <summary>Characters of the bank number that EM commands (RE, WE) carry before the begin word; 0 for other areas.</summary>
+    public static int BankLength(CModeArea area) => area == CModeArea.Em ? 2 : 0;
+
+    /// <summary>Writes the bank number of an EM command (two hex digits); writes nothing for another area.</summary>
+    /// <returns>The number of characters written (<see cref="BankLength"/>).</returns>
+    public static int WriteBank(CModeArea area, int bank, Span<byte> destination)
+    {
+        if (area != CModeArea.Em)
+        {
+            return 0;
+        }
+
+        HexAscii.WriteByte((byte)bank, destination);
+        return BankLength(area);
+    }
+
     /// <summary>The lowest word a write may start at (AR words below A448 are read-only).</summary>
-    public static int FirstWritable(CModeArea area) => area == CModeArea.Auxiliary ? 448 : 0;
+    public static int FirstWritable(CModeArea area) => area == CModeArea.Auxiliary ? PlcAreaInfo.FirstWritableAuxiliaryWord : 0;
 
     /// <summary>Characters a read response spends on one entry: 4 hex digits a word, 1 character a completion flag.</summary>
     public static int CharactersPerEntry(CModeArea area) => area == CModeArea.TimerCounterStatus ? 1 : 4;

@@ -4,10 +4,10 @@ namespace OmronHostLink.Protocol.CMode;
 /// A C-mode command: a two-character header and its text. The message on the wire is <c>@</c> + unit + header + text,
 /// framed by <see cref="FrameWriter"/>.
 /// </summary>
-public abstract class CModeCommand
+internal abstract class CModeCommand
 {
     /// <summary>Characters before the text: <c>@</c>, two unit digits, two header characters.</summary>
-    public const int PrefixLength = 5;
+    public const int PrefixLength = MessagePrefix.Length;
 
     /// <summary>The two-character header, for example <c>RD</c>.</summary>
     public abstract string Header { get; }
@@ -40,11 +40,7 @@ public abstract class CModeCommand
     /// <returns>The number of characters written.</returns>
     public int WriteMessage(int unit, Span<byte> destination)
     {
-        Guard.Unit(unit);
-        destination[0] = (byte)'@';
-        HexAscii.WriteDecimal(unit, destination.Slice(1, 2));
-        destination[3] = (byte)Header[0];
-        destination[4] = (byte)Header[1];
+        MessagePrefix.Write(destination, unit, Header);
         WriteText(destination.Slice(PrefixLength, TextLength));
         return MessageLength;
     }

@@ -35,27 +35,23 @@ internal static class CModeCommandParser
         string h = Encoding.ASCII.GetString(header.ToArray());
         switch (h)
         {
-            case "MS":
-                ExpectLength(text, 0, h);
-                return StatusReadCommand.Instance;
-            case "MM":
-                ExpectLength(text, 0, h);
-                return ModelReadCommand.Instance;
-            case "KC":
-                ExpectLength(text, 0, h);
-                return ForcedCancelCommand.Instance;
-            case "XZ":
-                ExpectLength(text, 0, h);
-                return AbortCommand.Instance;
-            case "SC":
+            case CModeHeaders.StatusRead:
+                return WithoutText(text, StatusReadCommand.Instance);
+            case CModeHeaders.ModelRead:
+                return WithoutText(text, ModelReadCommand.Instance);
+            case CModeHeaders.ForcedSetResetCancel:
+                return WithoutText(text, ForcedCancelCommand.Instance);
+            case CModeHeaders.Abort:
+                return WithoutText(text, AbortCommand.Instance);
+            case CModeHeaders.StatusChange:
                 ExpectLength(text, 2, h);
-                if (!HexAscii.TryParseByte(text, out byte mode) || mode is not (0x00 or 0x02 or 0x03))
+                if (!HexAscii.TryParseByte(text, out byte code) || !StatusChangeCommand.TryGetMode(code, out PlcMode mode))
                 {
                     throw Reject(EndCode.EntryNumberDataError, "SC mode must be 00, 02 or 03.");
                 }
 
-                return new StatusChangeCommand(mode switch { 0x00 => PlcMode.Program, 0x02 => PlcMode.Monitor, _ => PlcMode.Run });
-            case "MF":
+                return new StatusChangeCommand(mode);
+            case CModeHeaders.ErrorRead:
                 ExpectLength(text, 2, h);
                 if (!HexAscii.TryParseDecimal(text, out int clear) || clear > 1)
                 {
@@ -63,17 +59,17 @@ internal static class CModeCommandParser
                 }
 
                 return new ErrorReadCommand(clear == 1);
-            case "TS":
+            case CModeHeaders.Test:
                 if (text.Length > TestCommand.MaxTextLength)
                 {
                     throw Reject(EndCode.FrameLengthError, "TS text is too long.");
                 }
 
                 return new TestCommand(Encoding.ASCII.GetString(text.ToArray()));
-            case "KS":
-            case "KR":
-                return ParseForce(h == "KS", text);
-            case "FK":
+            case CModeHeaders.ForcedSet:
+            case CModeHeaders.ForcedReset:
+                return ParseForce(h == CModeHeaders.ForcedSet, text);
+            case CModeHeaders.MultipleForcedSetReset:
                 return ParseMultipleForce(text);
             default:
                 throw Reject(EndCode.UndefinedHeader, $"Unknown header {FrameText.Printable(header)}.");
@@ -82,8 +78,8 @@ internal static class CModeCommandParser
 
     private static AreaReadCommand ParseRead(CModeArea area, ReadOnlySpan<byte> text)
     {
-        int bankLength = area == CModeArea.Em ? 2 : 0;
-        ExpectLength(text, bankLength + 8, CModeAreaInfo.ReadHeader(area));
+        int bankLength = CModeAreaInfo.BankLength(area);
+        ExpectLength(text, AreaReadCommand.GetTextLength(area), CModeAreaInfo.ReadHeader(area));
         int bank = ParseBank(area, text);
         if (!HexAscii.TryParseDecimal(text.Slice(bankLength, 4), out int begin) || !HexAscii.TryParseDecimal(text.Slice(bankLength + 4, 4), out int count))
         {
@@ -95,7 +91,7 @@ internal static class CModeCommandParser
 
     private static AreaWriteCommand ParseWrite(CModeArea area, ReadOnlySpan<byte> text)
     {
-        int fixedLength = area == CModeArea.Em ? 6 : 4;
+        int fixedLength = AreaWriteCommand.GetFixedTextLength(area);
         if (text.Length < fixedLength + 4 || (text.Length - fixedLength) % 4 != 0)
         {
             throw Reject(EndCode.FormatError, "Write data must be whole 4-digit words after the begin word.");
@@ -133,7 +129,7 @@ internal static class CModeCommandParser
 
     private static ForceBitCommand ParseForce(bool set, ReadOnlySpan<byte> text)
     {
-        ExpectLength(text, 10, set ? "KS" : "KR");
+        ExpectLength(text, 10, set ? CModeHeaders.ForcedSet : CModeHeaders.ForcedReset);
         if (!ForceAreaInfo.TryParse(text.Slice(0, 4), out ForceArea area)
             || !HexAscii.TryParseDecimal(text.Slice(4, 4), out int word)
             || !HexAscii.TryParseDecimal(text.Slice(8, 2), out int bit))
@@ -146,7 +142,7 @@ internal static class CModeCommandParser
 
     private static MultipleForceCommand ParseMultipleForce(ReadOnlySpan<byte> text)
     {
-        ExpectLength(text, 24, "FK");
+        ExpectLength(text, 24, CModeHeaders.MultipleForcedSetReset);
         if (!ForceAreaInfo.TryParse(text.Slice(0, 4), out ForceArea area) || !HexAscii.TryParseDecimal(text.Slice(4, 4), out int word))
         {
             throw Reject(EndCode.EntryNumberDataError, "Area name or word is not valid.");
@@ -165,6 +161,12 @@ internal static class CModeCommandParser
         }
 
         return Checked(() => new MultipleForceCommand(area, word, actions));
+    }
+
+    private static CModeCommand WithoutText(ReadOnlySpan<byte> text, CModeCommand command)
+    {
+        ExpectLength(text, 0, command.Header);
+        return command;
     }
 
     private static void ExpectLength(ReadOnlySpan<byte> text, int length, string header)

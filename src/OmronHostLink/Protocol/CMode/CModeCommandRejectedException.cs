@@ -1,7 +1,7 @@
 namespace OmronHostLink.Protocol.CMode;
 
 /// <summary>A received C-mode command that a PLC refuses; <see cref="EndCode"/> is what it answers.</summary>
-public sealed class CModeCommandRejectedException : HostLinkException
+internal sealed class CModeCommandRejectedException : HostLinkException
 {
     /// <summary>Creates the exception.</summary>
     public CModeCommandRejectedException(EndCode endCode, string message)

@@ -6,10 +6,10 @@ namespace OmronHostLink.Protocol.CMode;
 /// Decoding of C-mode response text (the text of every frame joined: end code, then data) and encoding of responses
 /// from the PLC side. Anything that does not have the exact expected shape is a <see cref="HostLinkFrameException"/>.
 /// </summary>
-public static class CModeResponse
+internal static class CModeResponse
 {
     /// <summary>Characters before the end code in a first response frame: <c>@</c>, unit, header.</summary>
-    public const int PrefixLength = 5;
+    public const int PrefixLength = MessagePrefix.Length;
 
     /// <summary>Length of the end code.</summary>
     public const int EndCodeLength = 2;
@@ -142,7 +142,7 @@ public static class CModeResponse
 
         if (text.Length == EndCodeLength && HexAscii.TryParseByte(text, out byte code) && code != 0)
         {
-            throw new HostLinkEndCodeException((EndCode)code, "TS", unit);
+            throw new HostLinkEndCodeException((EndCode)code, CModeHeaders.Test, unit);
         }
 
         throw new HostLinkFrameException(FrameError.Malformed, $"The TS echo '{FrameText.Printable(text)}' differs from the text sent '{FrameText.Printable(sent)}'.");
@@ -152,27 +152,19 @@ public static class CModeResponse
     /// <returns>The number of characters written.</returns>
     public static int WriteMessage(Span<byte> destination, int unit, string header, EndCode code, ReadOnlySpan<byte> data)
     {
-        Guard.Unit(unit);
-        destination[0] = (byte)'@';
-        HexAscii.WriteDecimal(unit, destination.Slice(1, 2));
-        destination[3] = (byte)header[0];
-        destination[4] = (byte)header[1];
-        HexAscii.WriteByte((byte)code, destination.Slice(5, 2));
-        data.CopyTo(destination.Slice(7));
-        return 7 + data.Length;
+        MessagePrefix.Write(destination, unit, header);
+        HexAscii.WriteByte((byte)code, destination.Slice(PrefixLength, EndCodeLength));
+        data.CopyTo(destination.Slice(PrefixLength + EndCodeLength));
+        return PrefixLength + EndCodeLength + data.Length;
     }
 
     /// <summary>Writes a response message with no end code (TS echo, IC), PLC side.</summary>
     /// <returns>The number of characters written.</returns>
     public static int WriteMessageWithoutEndCode(Span<byte> destination, int unit, string header, ReadOnlySpan<byte> text)
     {
-        Guard.Unit(unit);
-        destination[0] = (byte)'@';
-        HexAscii.WriteDecimal(unit, destination.Slice(1, 2));
-        destination[3] = (byte)header[0];
-        destination[4] = (byte)header[1];
-        text.CopyTo(destination.Slice(5));
-        return 5 + text.Length;
+        MessagePrefix.Write(destination, unit, header);
+        text.CopyTo(destination.Slice(PrefixLength));
+        return PrefixLength + text.Length;
     }
 
     private static HostLinkFrameException WrongLength(int found, int expected, string what)

@@ -1,7 +1,7 @@
 namespace OmronHostLink.Protocol.CMode;
 
 /// <summary>The areas KS, KR and FK force bits in, with the four-character names the commands carry.</summary>
-public enum ForceArea
+internal enum ForceArea
 {
     /// <summary><c>CIO </c>.</summary>
     Cio,
@@ -23,7 +23,7 @@ public enum ForceArea
 }
 
 /// <summary>Names and limits of <see cref="ForceArea"/>.</summary>
-public static class ForceAreaInfo
+internal static class ForceAreaInfo
 {
     /// <summary>The four-character name, space padded.</summary>
     public static string Name(ForceArea area) => area switch
@@ -57,11 +57,11 @@ public static class ForceAreaInfo
     /// <summary>Number of words (or timers/counters) of the area.</summary>
     public static int Size(ForceArea area) => area switch
     {
-        ForceArea.Cio => 6144,
-        ForceArea.Lr => 200,
-        ForceArea.Holding => 512,
-        ForceArea.Auxiliary => 960,
-        _ => 2048,
+        ForceArea.Cio => CModeAreaInfo.Size(CModeArea.Cio),
+        ForceArea.Lr => CModeAreaInfo.Size(CModeArea.Lr),
+        ForceArea.Holding => CModeAreaInfo.Size(CModeArea.Holding),
+        ForceArea.Auxiliary => CModeAreaInfo.Size(CModeArea.Auxiliary),
+        _ => CModeAreaInfo.CounterOffset,
     };
 
     /// <summary>Checks a word and bit for a force command.</summary>

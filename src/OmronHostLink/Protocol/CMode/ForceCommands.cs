@@ -1,7 +1,7 @@
 namespace OmronHostLink.Protocol.CMode;
 
 /// <summary>KS (FORCED SET) or KR (FORCED RESET) of one bit.</summary>
-public sealed class ForceBitCommand : CModeCommand
+internal sealed class ForceBitCommand : CModeCommand
 {
     /// <summary>Creates the command.</summary>
     public ForceBitCommand(bool set, ForceArea area, int word, int bit)
@@ -26,7 +26,7 @@ public sealed class ForceBitCommand : CModeCommand
     public int Bit { get; }
 
     /// <inheritdoc/>
-    public override string Header => Set ? "KS" : "KR";
+    public override string Header => Set ? CModeHeaders.ForcedSet : CModeHeaders.ForcedReset;
 
     /// <inheritdoc/>
     public override int TextLength => 10;
@@ -46,7 +46,7 @@ public sealed class ForceBitCommand : CModeCommand
 }
 
 /// <summary>What FK does to one bit.</summary>
-public enum ForceAction
+internal enum ForceAction
 {
     /// <summary>0: leave the bit as it is.</summary>
     None = 0,
@@ -68,7 +68,7 @@ public enum ForceAction
 }
 
 /// <summary>FK: MULTIPLE FORCED SET/RESET of the 16 bits of one word (actions listed from bit 15 down to bit 0).</summary>
-public sealed class MultipleForceCommand : CModeCommand
+internal sealed class MultipleForceCommand : CModeCommand
 {
     private readonly ForceAction[] _actions;
 
@@ -111,7 +111,7 @@ public sealed class MultipleForceCommand : CModeCommand
     public IReadOnlyList<ForceAction> Actions => _actions;
 
     /// <inheritdoc/>
-    public override string Header => "FK";
+    public override string Header => CModeHeaders.MultipleForcedSetReset;
 
     /// <inheritdoc/>
     public override int TextLength => 24;

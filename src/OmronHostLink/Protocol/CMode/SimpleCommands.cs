@@ -1,13 +1,13 @@
 namespace OmronHostLink.Protocol.CMode;
 
 /// <summary>MS: STATUS READ. The answer holds the status word and, when one is active, the FAL/FALS message.</summary>
-public sealed class StatusReadCommand : CModeCommand
+internal sealed class StatusReadCommand : CModeCommand
 {
     /// <summary>The one instance (the command has no parameters).</summary>
     public static StatusReadCommand Instance { get; } = new();
 
     /// <inheritdoc/>
-    public override string Header => "MS";
+    public override string Header => CModeHeaders.StatusRead;
 
     /// <inheritdoc/>
     public override int TextLength => 0;
@@ -19,13 +19,13 @@ public sealed class StatusReadCommand : CModeCommand
 }
 
 /// <summary>MM: PLC MODEL READ.</summary>
-public sealed class ModelReadCommand : CModeCommand
+internal sealed class ModelReadCommand : CModeCommand
 {
     /// <summary>The one instance.</summary>
     public static ModelReadCommand Instance { get; } = new();
 
     /// <inheritdoc/>
-    public override string Header => "MM";
+    public override string Header => CModeHeaders.ModelRead;
 
     /// <inheritdoc/>
     public override int TextLength => 0;
@@ -37,13 +37,13 @@ public sealed class ModelReadCommand : CModeCommand
 }
 
 /// <summary>KC: FORCED SET/RESET CANCEL (cancels every forced bit).</summary>
-public sealed class ForcedCancelCommand : CModeCommand
+internal sealed class ForcedCancelCommand : CModeCommand
 {
     /// <summary>The one instance.</summary>
     public static ForcedCancelCommand Instance { get; } = new();
 
     /// <inheritdoc/>
-    public override string Header => "KC";
+    public override string Header => CModeHeaders.ForcedSetResetCancel;
 
     /// <inheritdoc/>
     public override int TextLength => 0;
@@ -55,13 +55,13 @@ public sealed class ForcedCancelCommand : CModeCommand
 }
 
 /// <summary>XZ: ABORT. Stops the Host Link exchange in progress; the PLC sends no answer.</summary>
-public sealed class AbortCommand : CModeCommand
+internal sealed class AbortCommand : CModeCommand
 {
     /// <summary>The one instance.</summary>
     public static AbortCommand Instance { get; } = new();
 
     /// <inheritdoc/>
-    public override string Header => "XZ";
+    public override string Header => CModeHeaders.Abort;
 
     /// <inheritdoc/>
     public override int TextLength => 0;
@@ -76,7 +76,7 @@ public sealed class AbortCommand : CModeCommand
 }
 
 /// <summary>SC: STATUS CHANGE to PROGRAM (00), MONITOR (02) or RUN (03).</summary>
-public sealed class StatusChangeCommand : CModeCommand
+internal sealed class StatusChangeCommand : CModeCommand
 {
     /// <summary>Creates the command.</summary>
     public StatusChangeCommand(PlcMode mode)
@@ -93,7 +93,7 @@ public sealed class StatusChangeCommand : CModeCommand
     public PlcMode Mode { get; }
 
     /// <inheritdoc/>
-    public override string Header => "SC";
+    public override string Header => CModeHeaders.StatusChange;
 
     /// <inheritdoc/>
     public override int TextLength => 2;
@@ -106,12 +106,28 @@ public sealed class StatusChangeCommand : CModeCommand
         _ => 0x03,
     };
 
+    /// <summary>The mode an SC mode code names; false for a code other than 00, 02 and 03.</summary>
+    public static bool TryGetMode(byte code, out PlcMode mode)
+    {
+        foreach (PlcMode candidate in new[] { PlcMode.Program, PlcMode.Monitor, PlcMode.Run })
+        {
+            if (ModeCode(candidate) == code)
+            {
+                mode = candidate;
+                return true;
+            }
+        }
+
+        mode = default;
+        return false;
+    }
+
     /// <inheritdoc/>
     public override void WriteText(Span<byte> destination) => HexAscii.WriteByte(ModeCode(Mode), destination);
 }
 
 /// <summary>MF: ERROR READ, optionally clearing the errors (01) or not (00).</summary>
-public sealed class ErrorReadCommand : CModeCommand
+internal sealed class ErrorReadCommand : CModeCommand
 {
     /// <summary>Creates the command.</summary>
     public ErrorReadCommand(bool clear) => Clear = clear;
@@ -120,7 +136,7 @@ public sealed class ErrorReadCommand : CModeCommand
     public bool Clear { get; }
 
     /// <inheritdoc/>
-    public override string Header => "MF";
+    public override string Header => CModeHeaders.ErrorRead;
 
     /// <inheritdoc/>
     public override int TextLength => 2;
@@ -130,7 +146,7 @@ public sealed class ErrorReadCommand : CModeCommand
 }
 
 /// <summary>TS: TEST. The PLC echoes the text back unchanged, with no end code.</summary>
-public sealed class TestCommand : CModeCommand
+internal sealed class TestCommand : CModeCommand
 {
     /// <summary>The longest text that fits a single frame both ways.</summary>
     public const int MaxTextLength = 122;
@@ -155,7 +171,7 @@ public sealed class TestCommand : CModeCommand
     public string Text { get; }
 
     /// <inheritdoc/>
-    public override string Header => "TS";
+    public override string Header => CModeHeaders.Test;
 
     /// <inheritdoc/>
     public override int TextLength => _text.Length;

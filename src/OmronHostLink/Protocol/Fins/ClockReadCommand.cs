@@ -1,7 +1,7 @@
 namespace OmronHostLink.Protocol.Fins;
 
 /// <summary>0701 CLOCK READ: the PLC's date and time (see <see cref="FinsClock"/>). No parameters.</summary>
-public sealed class ClockReadCommand : FinsCommand
+internal sealed class ClockReadCommand : FinsCommand
 {
     /// <summary>The command code, 0701.</summary>
     public const ushort Code = FinsCommandCodes.ClockRead;

@@ -5,7 +5,7 @@ namespace OmronHostLink.Protocol.Fins;
 /// second, then optionally day of week (00 = Sunday … 06 = Saturday; only after the second).
 /// </summary>
 /// <remarks>Two-digit years follow <see cref="FinsClock"/>: 70–99 are 1970–1999, 00–69 are 2000–2069.</remarks>
-public sealed class ClockWriteCommand : FinsCommand
+internal sealed class ClockWriteCommand : FinsCommand
 {
     /// <summary>The command code, 0702.</summary>
     public const ushort Code = FinsCommandCodes.ClockWrite;
@@ -84,13 +84,13 @@ public sealed class ClockWriteCommand : FinsCommand
         {
             if (!FinsBytes.TryFromBcd(parameters[i], out values[i]))
             {
-                throw new FinsFormatException(0x110C, $"CLOCK WRITE byte {i} ({parameters[i]:X2}) is not BCD.");
+                throw new FinsFormatException(FinsEndCodes.ParameterError, $"CLOCK WRITE byte {i} ({parameters[i]:X2}) is not BCD.");
             }
         }
 
         if (!FinsClock.TryCreate(values[0], values[1], values[2], values[3], values[4], values[5], out DateTime time))
         {
-            throw new FinsFormatException(0x110C, "CLOCK WRITE carries an impossible date or time.");
+            throw new FinsFormatException(FinsEndCodes.ParameterError, "CLOCK WRITE carries an impossible date or time.");
         }
 
         DayOfWeek? day = null;
@@ -98,7 +98,7 @@ public sealed class ClockWriteCommand : FinsCommand
         {
             if (values[6] > 6)
             {
-                throw new FinsFormatException(0x110C, $"CLOCK WRITE day of week {values[6]:D2} is not 00-06.");
+                throw new FinsFormatException(FinsEndCodes.ParameterError, $"CLOCK WRITE day of week {values[6]:D2} is not 00-06.");
             }
 
             day = (DayOfWeek)values[6];

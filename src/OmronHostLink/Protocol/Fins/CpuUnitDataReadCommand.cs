@@ -4,7 +4,7 @@ namespace OmronHostLink.Protocol.Fins;
 /// 0501 CPU UNIT DATA READ: model, version and configuration of the CPU Unit. Parameter (optional): one byte
 /// selecting the data (00 = all) [unverified: the meaning of other values].
 /// </summary>
-public sealed class CpuUnitDataReadCommand : FinsCommand
+internal sealed class CpuUnitDataReadCommand : FinsCommand
 {
     /// <summary>The command code, 0501.</summary>
     public const ushort Code = FinsCommandCodes.CpuUnitDataRead;

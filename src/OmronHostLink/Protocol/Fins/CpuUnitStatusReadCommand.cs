@@ -1,7 +1,7 @@
 namespace OmronHostLink.Protocol.Fins;
 
 /// <summary>0601 CPU UNIT STATUS READ: operating status, mode and errors (see <see cref="FinsCpuStatus"/>). No parameters.</summary>
-public sealed class CpuUnitStatusReadCommand : FinsCommand
+internal sealed class CpuUnitStatusReadCommand : FinsCommand
 {
     /// <summary>The command code, 0601.</summary>
     public const ushort Code = FinsCommandCodes.CpuUnitStatusRead;

@@ -4,7 +4,7 @@ namespace OmronHostLink.Protocol.Fins;
 /// 0620 CYCLE TIME READ. Parameter: one byte, 00 = initialise (reset the measurements; no data in the response),
 /// 01 = read (average, maximum and minimum cycle time; see <see cref="FinsCycleTime"/>).
 /// </summary>
-public sealed class CycleTimeReadCommand : FinsCommand
+internal sealed class CycleTimeReadCommand : FinsCommand
 {
     /// <summary>The command code, 0620.</summary>
     public const ushort Code = FinsCommandCodes.CycleTimeRead;
@@ -36,7 +36,7 @@ public sealed class CycleTimeReadCommand : FinsCommand
         {
             0x00 => new CycleTimeReadCommand(initialize: true),
             0x01 => new CycleTimeReadCommand(initialize: false),
-            _ => throw new FinsFormatException(0x110C, $"CYCLE TIME READ parameter {parameters[0]:X2} is neither 00 (initialise) nor 01 (read)."),
+            _ => throw new FinsFormatException(FinsEndCodes.ParameterError, $"CYCLE TIME READ parameter {parameters[0]:X2} is neither 00 (initialise) nor 01 (read)."),
         };
     }
 }

@@ -4,7 +4,7 @@ namespace OmronHostLink.Protocol.Fins;
 /// 2101 ERROR CLEAR: clears one error, or all of them. Parameter: error code(2); <see cref="AllErrors"/> (FFFF)
 /// clears every error that can be cleared [unverified: the meaning of FFFE].
 /// </summary>
-public sealed class ErrorClearCommand : FinsCommand
+internal sealed class ErrorClearCommand : FinsCommand
 {
     /// <summary>The command code, 2101.</summary>
     public const ushort Code = FinsCommandCodes.ErrorClear;

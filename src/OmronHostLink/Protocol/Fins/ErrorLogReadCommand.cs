@@ -5,7 +5,7 @@ namespace OmronHostLink.Protocol.Fins;
 /// Parameters: first record(2), count(2). The response is described by <see cref="FinsErrorLog"/>.
 /// </summary>
 /// <remarks>Through a Host Link (FA) frame at most <see cref="MaxRecords"/> = 53 records fit in one response (SCU manual).</remarks>
-public sealed class ErrorLogReadCommand : FinsCommand
+internal sealed class ErrorLogReadCommand : FinsCommand
 {
     /// <summary>The command code, 2102.</summary>
     public const ushort Code = FinsCommandCodes.ErrorLogRead;
@@ -51,12 +51,12 @@ public sealed class ErrorLogReadCommand : FinsCommand
         int count = FinsBytes.ReadUInt16(parameters, 2);
         if (count == 0)
         {
-            throw new FinsFormatException(0x110C, "ERROR LOG READ asks for 0 records.");
+            throw new FinsFormatException(FinsEndCodes.ParameterError, "ERROR LOG READ asks for 0 records.");
         }
 
         if (count > MaxRecords)
         {
-            throw new FinsFormatException(0x110B, $"ERROR LOG READ asks for {count} records; at most {MaxRecords} fit in a Host Link response.");
+            throw new FinsFormatException(FinsEndCodes.ResponseTooLong, $"ERROR LOG READ asks for {count} records; at most {MaxRecords} fit in a Host Link response.");
         }
 
         return new ErrorLogReadCommand(FinsBytes.ReadUInt16(parameters, 0), count);

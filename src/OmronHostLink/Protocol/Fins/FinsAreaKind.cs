@@ -1,7 +1,7 @@
 namespace OmronHostLink.Protocol.Fins;
 
 /// <summary>The CS/CJ memory areas <see cref="FinsMemoryArea"/> maps to FINS area codes.</summary>
-public enum FinsAreaKind
+internal enum FinsAreaKind
 {
     /// <summary>CIO area (word B0, bit 30).</summary>
     Cio,

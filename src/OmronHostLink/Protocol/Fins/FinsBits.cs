@@ -1,7 +1,7 @@
 namespace OmronHostLink.Protocol.Fins;
 
 /// <summary>Bit data of FINS read responses and write commands: one byte per bit, 00 (OFF) or 01 (ON).</summary>
-public static class FinsBits
+internal static class FinsBits
 {
     /// <summary>Decodes exactly <paramref name="count"/> bits.</summary>
     /// <exception cref="HostLinkFrameException">

@@ -7,7 +7,7 @@ namespace OmronHostLink.Protocol.Fins;
 public readonly struct FinsClock : IEquatable<FinsClock>
 {
     /// <summary>Bytes of the response data.</summary>
-    public const int Length = 7;
+    internal const int Length = 7;
 
     /// <summary>The first year a two-digit year can stand for.</summary>
     public const int MinYear = 1970;
@@ -49,7 +49,7 @@ public readonly struct FinsClock : IEquatable<FinsClock>
     /// <see cref="FrameError.WrongLength"/> when not 7 bytes; <see cref="FrameError.Malformed"/> when a byte is not
     /// BCD or the date is impossible.
     /// </exception>
-    public static FinsClock Read(ReadOnlySpan<byte> data)
+    internal static FinsClock Read(ReadOnlySpan<byte> data)
     {
         if (data.Length != Length)
         {
@@ -75,7 +75,7 @@ public readonly struct FinsClock : IEquatable<FinsClock>
 
     /// <summary>Encodes the 7 bytes of response data.</summary>
     /// <returns><see cref="Length"/>.</returns>
-    public int Write(Span<byte> destination)
+    internal int Write(Span<byte> destination)
     {
         if (destination.Length < Length)
         {
@@ -93,7 +93,7 @@ public readonly struct FinsClock : IEquatable<FinsClock>
     }
 
     /// <summary>The full year of a two-digit year: 70–99 → 1970–1999, 00–69 → 2000–2069.</summary>
-    public static int ExpandYear(int twoDigitYear)
+    internal static int ExpandYear(int twoDigitYear)
     {
         Guard.InRange(twoDigitYear, 0, 99);
         return twoDigitYear >= 70 ? 1900 + twoDigitYear : 2000 + twoDigitYear;

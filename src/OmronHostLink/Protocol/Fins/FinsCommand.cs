@@ -6,7 +6,7 @@ namespace OmronHostLink.Protocol.Fins;
 /// received bytes (codes it does not model become a <see cref="RawFinsCommand"/>).
 /// </summary>
 /// <remarks>Two commands are equal when they have the same type, code and parameter bytes.</remarks>
-public abstract class FinsCommand : IEquatable<FinsCommand>
+internal abstract class FinsCommand : IEquatable<FinsCommand>
 {
     /// <summary>
     /// The most parameter bytes a command may carry: what fits in a 1,115-character FA frame with a network header
@@ -51,7 +51,7 @@ public abstract class FinsCommand : IEquatable<FinsCommand>
     {
         if (parameters.Length > MaxParameterLength)
         {
-            throw new FinsFormatException(0x1001, $"FINS {commandCode:X4} carries {parameters.Length} parameter bytes; at most {MaxParameterLength} fit in a Host Link frame.");
+            throw new FinsFormatException(FinsEndCodes.CommandTooLong, $"FINS {commandCode:X4} carries {parameters.Length} parameter bytes; at most {MaxParameterLength} fit in a Host Link frame.");
         }
 
         return commandCode switch
@@ -120,12 +120,12 @@ public abstract class FinsCommand : IEquatable<FinsCommand>
     {
         if (parameters.Length < min)
         {
-            throw new FinsFormatException(0x1002, $"FINS {code:X4} needs at least {min} parameter bytes; it carries {parameters.Length}.");
+            throw new FinsFormatException(FinsEndCodes.CommandTooShort, $"FINS {code:X4} needs at least {min} parameter bytes; it carries {parameters.Length}.");
         }
 
         if (parameters.Length > max)
         {
-            throw new FinsFormatException(0x1001, $"FINS {code:X4} takes at most {max} parameter bytes; it carries {parameters.Length}.");
+            throw new FinsFormatException(FinsEndCodes.CommandTooLong, $"FINS {code:X4} takes at most {max} parameter bytes; it carries {parameters.Length}.");
         }
     }
 }

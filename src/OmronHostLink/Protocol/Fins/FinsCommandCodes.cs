@@ -1,7 +1,7 @@
 namespace OmronHostLink.Protocol.Fins;
 
 /// <summary>FINS command codes (MRC × 256 + SRC) this library models.</summary>
-public static class FinsCommandCodes
+internal static class FinsCommandCodes
 {
     /// <summary>0101 MEMORY AREA READ.</summary>
     public const ushort MemoryAreaRead = 0x0101;
@@ -51,8 +51,8 @@ public static class FinsCommandCodes
     /// <summary>2302 FORCED SET/RESET CANCEL.</summary>
     public const ushort ForcedSetResetCancel = 0x2302;
 
-    /// <summary>The manuals' name of a command code, or its hex digits for one this library does not model.</summary>
-    public static string Describe(ushort code) => code switch
+    /// <summary>The manuals' name of a command code, or null for a code this library does not model.</summary>
+    public static string? Name(ushort code) => code switch
     {
         MemoryAreaRead => "MEMORY AREA READ",
         MemoryAreaWrite => "MEMORY AREA WRITE",
@@ -70,6 +70,9 @@ public static class FinsCommandCodes
         ErrorLogRead => "ERROR LOG READ",
         ForcedSetReset => "FORCED SET/RESET",
         ForcedSetResetCancel => "FORCED SET/RESET CANCEL",
-        _ => $"command {code:X4}",
+        _ => null,
     };
+
+    /// <summary>The manuals' name of a command code, or its hex digits for one this library does not model.</summary>
+    public static string Describe(ushort code) => Name(code) ?? $"command {code:X4}";
 }

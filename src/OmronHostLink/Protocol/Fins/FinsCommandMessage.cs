@@ -5,7 +5,7 @@ namespace OmronHostLink.Protocol.Fins;
 /// time), the command code and the raw parameters. <see cref="ToCommand"/> rebuilds the typed command; a simulator
 /// keeps <see cref="Header"/> to answer even a command whose parameters are refused.
 /// </summary>
-public sealed class FinsCommandMessage
+internal sealed class FinsCommandMessage
 {
     private readonly byte[] _parameters;
 

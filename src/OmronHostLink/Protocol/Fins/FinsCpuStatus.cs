@@ -8,13 +8,13 @@ namespace OmronHostLink.Protocol.Fins;
 public sealed class FinsCpuStatus
 {
     /// <summary>Bytes of the full response data.</summary>
-    public const int Length = 26;
+    internal const int Length = 26;
 
     /// <summary>Bytes of the response data without the error message (accepted when decoding).</summary>
-    public const int LengthWithoutMessage = 10;
+    internal const int LengthWithoutMessage = 10;
 
     /// <summary>Characters of the error message field.</summary>
-    public const int MessageLength = 16;
+    internal const int MessageLength = 16;
 
     /// <summary>Creates the status.</summary>
     /// <param name="status">The status byte (bit 0: program running).</param>
@@ -63,7 +63,7 @@ public sealed class FinsCpuStatus
 
     /// <summary>Decodes the response data (26 bytes, or 10 without the message).</summary>
     /// <exception cref="HostLinkFrameException"><see cref="FrameError.WrongLength"/>: another length.</exception>
-    public static FinsCpuStatus Read(ReadOnlySpan<byte> data)
+    internal static FinsCpuStatus Read(ReadOnlySpan<byte> data)
     {
         if (data.Length != Length && data.Length != LengthWithoutMessage)
         {
@@ -82,7 +82,7 @@ public sealed class FinsCpuStatus
 
     /// <summary>Encodes the 26 bytes of response data (the message padded with spaces).</summary>
     /// <returns><see cref="Length"/>.</returns>
-    public int Write(Span<byte> destination)
+    internal int Write(Span<byte> destination)
     {
         if (destination.Length < Length)
         {

@@ -7,10 +7,10 @@ namespace OmronHostLink.Protocol.Fins;
 public sealed class FinsCpuUnitData
 {
     /// <summary>Bytes of the model field.</summary>
-    public const int ModelLength = 20;
+    internal const int ModelLength = 20;
 
     /// <summary>Bytes of the version field.</summary>
-    public const int VersionLength = 20;
+    internal const int VersionLength = 20;
 
     private readonly byte[] _remainder;
 
@@ -38,11 +38,11 @@ public sealed class FinsCpuUnitData
     public ReadOnlyMemory<byte> Remainder => _remainder;
 
     /// <summary>Bytes <see cref="Write"/> produces.</summary>
-    public int Length => ModelLength + VersionLength + _remainder.Length;
+    internal int Length => ModelLength + VersionLength + _remainder.Length;
 
     /// <summary>Decodes the response data.</summary>
     /// <exception cref="HostLinkFrameException"><see cref="FrameError.WrongLength"/>: fewer than 40 bytes.</exception>
-    public static FinsCpuUnitData Read(ReadOnlySpan<byte> data)
+    internal static FinsCpuUnitData Read(ReadOnlySpan<byte> data)
     {
         if (data.Length < ModelLength + VersionLength)
         {
@@ -57,7 +57,7 @@ public sealed class FinsCpuUnitData
 
     /// <summary>Encodes the data (texts padded with spaces) into <paramref name="destination"/>.</summary>
     /// <returns><see cref="Length"/>.</returns>
-    public int Write(Span<byte> destination)
+    internal int Write(Span<byte> destination)
     {
         if (destination.Length < Length)
         {

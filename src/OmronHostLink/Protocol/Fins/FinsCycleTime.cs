@@ -8,7 +8,7 @@ namespace OmronHostLink.Protocol.Fins;
 public sealed class FinsCycleTime
 {
     /// <summary>Bytes of the response data.</summary>
-    public const int Length = 12;
+    internal const int Length = 12;
 
     /// <summary>Creates the cycle times from their raw values (units of 0.1 ms).</summary>
     public FinsCycleTime(uint averageRaw, uint maximumRaw, uint minimumRaw)
@@ -38,7 +38,7 @@ public sealed class FinsCycleTime
 
     /// <summary>Decodes the 12 bytes of response data.</summary>
     /// <exception cref="HostLinkFrameException"><see cref="FrameError.WrongLength"/>: not 12 bytes.</exception>
-    public static FinsCycleTime Read(ReadOnlySpan<byte> data)
+    internal static FinsCycleTime Read(ReadOnlySpan<byte> data)
     {
         if (data.Length != Length)
         {
@@ -50,7 +50,7 @@ public sealed class FinsCycleTime
 
     /// <summary>Encodes the 12 bytes of response data.</summary>
     /// <returns><see cref="Length"/>.</returns>
-    public int Write(Span<byte> destination)
+    internal int Write(Span<byte> destination)
     {
         if (destination.Length < Length)
         {

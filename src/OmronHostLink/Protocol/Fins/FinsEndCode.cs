@@ -8,6 +8,15 @@ namespace OmronHostLink.Protocol.Fins;
 /// </summary>
 public readonly struct FinsEndCode : IEquatable<FinsEndCode>
 {
+    /// <summary>Bit 15 of a response code: an error occurred while relaying through a network.</summary>
+    public const ushort NetworkRelayErrorFlag = 0x8000;
+
+    /// <summary>Bit 7 of a response code: the CPU Unit has a fatal error.</summary>
+    public const ushort FatalCpuErrorFlag = 0x0080;
+
+    /// <summary>Bit 6 of a response code: the CPU Unit has a non-fatal error.</summary>
+    public const ushort NonFatalCpuErrorFlag = 0x0040;
+
     /// <summary>Creates the response code from its raw 16-bit value.</summary>
     public FinsEndCode(ushort raw) => Raw = raw;
 
@@ -15,25 +24,28 @@ public readonly struct FinsEndCode : IEquatable<FinsEndCode>
     public ushort Raw { get; }
 
     /// <summary>The response code without its flags.</summary>
-    public ushort Code => (ushort)(Raw & 0x7F3F);
+    public ushort Code => (ushort)(Raw & ~(NetworkRelayErrorFlag | FatalCpuErrorFlag | NonFatalCpuErrorFlag));
 
     /// <summary>The main response code (MRES without the relay flag).</summary>
-    public byte MainCode => (byte)((Raw >> 8) & 0x7F);
+    public byte MainCode => (byte)((Code >> 8) & 0x7F);
 
     /// <summary>The sub response code (SRES without the CPU flags).</summary>
-    public byte SubCode => (byte)(Raw & 0x3F);
+    public byte SubCode => (byte)(Code & 0x3F);
 
     /// <summary>Bit 15: an error occurred while relaying through a network.</summary>
-    public bool NetworkRelayError => (Raw & 0x8000) != 0;
+    public bool NetworkRelayError => (Raw & NetworkRelayErrorFlag) != 0;
 
     /// <summary>Bit 7: the CPU Unit has a fatal error.</summary>
-    public bool FatalCpuError => (Raw & 0x0080) != 0;
+    public bool FatalCpuError => (Raw & FatalCpuErrorFlag) != 0;
 
     /// <summary>Bit 6: the CPU Unit has a non-fatal error.</summary>
-    public bool NonFatalCpuError => (Raw & 0x0040) != 0;
+    public bool NonFatalCpuError => (Raw & NonFatalCpuErrorFlag) != 0;
 
     /// <summary>True when the command completed (the CPU flags may still be set).</summary>
-    public bool IsSuccess => Code == 0x0000;
+    public bool IsSuccess => Code == FinsEndCodes.NormalCompletion;
+
+    /// <summary>Whether the code reports a busy or timed-out network (<see cref="FinsEndCodes.IsTransient"/>).</summary>
+    public bool IsTransient => FinsEndCodes.IsTransient(Code);
 
     /// <summary>The meaning of <see cref="Code"/>, in the manuals' words.</summary>
     public string Meaning => FinsEndCodes.Describe(Code);

@@ -7,7 +7,7 @@ namespace OmronHostLink.Protocol.Fins;
 public sealed class FinsErrorLog
 {
     /// <summary>Bytes before the records.</summary>
-    public const int HeaderLength = 6;
+    internal const int HeaderLength = 6;
 
     private readonly FinsErrorLogRecord[] _records;
 
@@ -40,11 +40,11 @@ public sealed class FinsErrorLog
     public IReadOnlyList<FinsErrorLogRecord> Records => _records;
 
     /// <summary>Bytes <see cref="Write"/> produces.</summary>
-    public int Length => HeaderLength + (_records.Length * FinsErrorLogRecord.Length);
+    internal int Length => HeaderLength + (_records.Length * FinsErrorLogRecord.Length);
 
     /// <summary>Decodes the response data.</summary>
     /// <exception cref="HostLinkFrameException"><see cref="FrameError.WrongLength"/>: the records do not match their count.</exception>
-    public static FinsErrorLog Read(ReadOnlySpan<byte> data)
+    internal static FinsErrorLog Read(ReadOnlySpan<byte> data)
     {
         if (data.Length < HeaderLength)
         {
@@ -68,7 +68,7 @@ public sealed class FinsErrorLog
 
     /// <summary>Encodes the response data.</summary>
     /// <returns><see cref="Length"/>.</returns>
-    public int Write(Span<byte> destination)
+    internal int Write(Span<byte> destination)
     {
         if (destination.Length < Length)
         {

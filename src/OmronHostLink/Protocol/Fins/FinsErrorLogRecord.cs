@@ -8,13 +8,13 @@ namespace OmronHostLink.Protocol.Fins;
 public sealed class FinsErrorLogRecord
 {
     /// <summary>Bytes of one record.</summary>
-    public const int Length = 10;
+    internal const int Length = 10;
 
     private readonly byte[] _raw;
 
     /// <summary>Creates a record from its 10 raw bytes (copied).</summary>
     /// <exception cref="ArgumentException">Not 10 bytes.</exception>
-    public FinsErrorLogRecord(ReadOnlySpan<byte> raw)
+    internal FinsErrorLogRecord(ReadOnlySpan<byte> raw)
     {
         if (raw.Length != Length)
         {
@@ -53,7 +53,7 @@ public sealed class FinsErrorLogRecord
     public ReadOnlyMemory<byte> Raw => _raw;
 
     /// <summary>Writes the 10 bytes.</summary>
-    public void Write(Span<byte> destination) => _raw.CopyTo(destination);
+    internal void Write(Span<byte> destination) => _raw.CopyTo(destination);
 
     private static byte[] Encode(ushort errorCode, ushort errorInfo, DateTime time)
     {

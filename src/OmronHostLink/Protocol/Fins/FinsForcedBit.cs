@@ -1,7 +1,7 @@
 namespace OmronHostLink.Protocol.Fins;
 
 /// <summary>One item of 2301 FORCED SET/RESET: the action and the bit it applies to.</summary>
-public readonly struct FinsForcedBit : IEquatable<FinsForcedBit>
+internal readonly struct FinsForcedBit : IEquatable<FinsForcedBit>
 {
     /// <summary>Bytes one item takes: action(2) area(1) address(2) bit(1).</summary>
     public const int Length = 6;
@@ -47,13 +47,13 @@ public readonly struct FinsForcedBit : IEquatable<FinsForcedBit>
         var action = (FinsForceAction)FinsBytes.ReadUInt16(source, 0);
         if (!IsDefined(action))
         {
-            throw new FinsFormatException(0x110C, $"FORCED SET/RESET designation {(ushort)action:X4} is not 0000, 0001, 8000, 8001 or FFFF.");
+            throw new FinsFormatException(FinsEndCodes.ParameterError, $"FORCED SET/RESET designation {(ushort)action:X4} is not 0000, 0001, 8000, 8001 or FFFF.");
         }
 
         FinsMemoryAddress address = FinsMemoryAddress.Read(source.Slice(2));
         if (!address.IsBit)
         {
-            throw new FinsFormatException(0x1101, $"FORCED SET/RESET applies to bits; area {address.AreaCode:X2} is not bit-addressed.");
+            throw new FinsFormatException(FinsEndCodes.AreaClassificationMissing, $"FORCED SET/RESET applies to bits; area {address.AreaCode:X2} is not bit-addressed.");
         }
 
         return new FinsForcedBit(action, address);

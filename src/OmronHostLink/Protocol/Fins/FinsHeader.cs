@@ -12,7 +12,7 @@ namespace OmronHostLink.Protocol.Fins;
 /// </para>
 /// <para>Bit 7 of ICF (gateway used) selects the long form; bit 6 marks a response.</para>
 /// </remarks>
-public readonly struct FinsHeader : IEquatable<FinsHeader>
+internal readonly struct FinsHeader : IEquatable<FinsHeader>
 {
     /// <summary>ICF of a command to the directly connected CPU Unit.</summary>
     public const byte DirectCommandIcf = 0x00;

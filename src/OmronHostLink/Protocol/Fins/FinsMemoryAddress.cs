@@ -4,7 +4,7 @@ namespace OmronHostLink.Protocol.Fins;
 /// A FINS memory address: area code (1 byte), word address (2 bytes) and bit (1 byte), as commands 0101–0105 and
 /// 2301 carry it.
 /// </summary>
-public readonly struct FinsMemoryAddress : IEquatable<FinsMemoryAddress>
+internal readonly struct FinsMemoryAddress : IEquatable<FinsMemoryAddress>
 {
     /// <summary>Bytes the address takes in a command: area, word, bit.</summary>
     public const int Length = 4;
@@ -83,12 +83,12 @@ public readonly struct FinsMemoryAddress : IEquatable<FinsMemoryAddress>
         byte bit = source[3];
         if (!FinsMemoryArea.IsDefined(area))
         {
-            throw new FinsFormatException(0x1101, $"Area code {area:X2} is not a CS/CJ memory area.");
+            throw new FinsFormatException(FinsEndCodes.AreaClassificationMissing, $"Area code {area:X2} is not a CS/CJ memory area.");
         }
 
         if (bit > 15)
         {
-            throw new FinsFormatException(0x1103, $"Bit {bit:X2} is out of range (00-0F) for area {area:X2} ({FinsMemoryArea.Describe(area)}).");
+            throw new FinsFormatException(FinsEndCodes.AddressRangeError, $"Bit {bit:X2} is out of range (00-0F) for area {area:X2} ({FinsMemoryArea.Describe(area)}).");
         }
 
         return new FinsMemoryAddress(area, (ushort)word, bit, unchecked_: true);

@@ -9,7 +9,7 @@ namespace OmronHostLink.Protocol.Fins;
 /// per bit and accepts bits 00–15. Timer and counter numbers share one address space: timer <c>n</c> is address
 /// <c>n</c>, counter <c>n</c> is <c>0x8000 + n</c> [unverified for CS/CJ].
 /// </remarks>
-public static class FinsMemoryArea
+internal static class FinsMemoryArea
 {
     /// <summary>CIO area, bit access.</summary>
     public const byte CioBit = 0x30;
@@ -99,7 +99,7 @@ public static class FinsMemoryArea
     public const byte ConditionFlags = 0x07;
 
     /// <summary>The highest EM bank number <see cref="WordCode"/> and <see cref="BitCode"/> map (bank C; CS/CJ1).</summary>
-    public const int MaxEmBank = 0x0C;
+    public const int MaxEmBank = PlcAreaInfo.EmBankCount - 1;
 
     /// <summary>The highest timer or counter number (CS/CJ: T/C 0000–4095).</summary>
     public const int MaxTimerCounterNumber = 4095;

@@ -9,7 +9,7 @@ namespace OmronHostLink.Protocol.Fins;
 /// <para>Command: <c>@</c> unit(2) <c>FA</c> wait(1 hex char) then hex bytes: FINS header, MRC SRC, parameters.</para>
 /// <para>Response: <c>@</c> unit(2) <c>FA</c> Host Link end code(2) then hex bytes: FINS header, MRC SRC, MRES SRES, data.</para>
 /// </remarks>
-public static class FinsMessage
+internal static class FinsMessage
 {
     /// <summary>The longest FA frame, FCS and <c>*</c>CR included (W342 p69, stated for responses; applied to commands too).</summary>
     public const int MaxFrameLength = 1115;
@@ -21,7 +21,7 @@ public static class FinsMessage
     public const int HostLinkErrorLength = 7;
 
     /// <summary>Characters of <c>@</c> + unit + <c>FA</c>.</summary>
-    private const int Prefix = 5;
+    private const int Prefix = MessagePrefix.Length;
 
     /// <summary>Characters of the unframed command message for <paramref name="header"/> and <paramref name="command"/>.</summary>
     public static int GetCommandLength(FinsHeader header, FinsCommand command)
@@ -209,11 +209,5 @@ public static class FinsMessage
         return frame;
     }
 
-    private static void WritePrefix(Span<byte> destination, int unit)
-    {
-        destination[0] = (byte)'@';
-        HexAscii.WriteDecimal(unit, destination.Slice(1, 2));
-        destination[3] = (byte)'F';
-        destination[4] = (byte)'A';
-    }
+    private static void WritePrefix(Span<byte> destination, int unit) => MessagePrefix.Write(destination, unit, CMode.CModeHeaders.Fins);
 }

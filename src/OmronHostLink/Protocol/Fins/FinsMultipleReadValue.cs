@@ -4,7 +4,7 @@ namespace OmronHostLink.Protocol.Fins;
 /// One item of a 0104 MULTIPLE MEMORY AREA READ response: the area code echoed and the element's value
 /// (1 byte for a bit, 2 for a word, 4 for a word with forced status or an index register).
 /// </summary>
-public readonly struct FinsMultipleReadValue : IEquatable<FinsMultipleReadValue>
+internal readonly struct FinsMultipleReadValue : IEquatable<FinsMultipleReadValue>
 {
     /// <summary>Creates an item.</summary>
     /// <param name="areaCode">The area code (decides the element size).</param>

@@ -11,7 +11,7 @@ namespace OmronHostLink.Protocol.Fins;
 /// error present) is a success: <see cref="ThrowIfError"/> accepts it and <see cref="FinsEndCode.NonFatalCpuError"/>
 /// shows the flag.
 /// </remarks>
-public sealed class FinsResponse
+internal sealed class FinsResponse
 {
     private readonly byte[] _data;
 
@@ -122,7 +122,7 @@ public sealed class FinsResponse
 
         if (hostLinkEnd != OmronHostLink.EndCode.NormalCompletion)
         {
-            throw new HostLinkEndCodeException(hostLinkEnd, "FA", unit);
+            throw new HostLinkEndCodeException(hostLinkEnd, CMode.CModeHeaders.Fins, unit);
         }
 
         ReadOnlySpan<byte> hex = text.Slice(2);

@@ -1,7 +1,7 @@
 namespace OmronHostLink.Protocol.Fins;
 
 /// <summary>Word data of FINS read responses and write commands: 2 bytes per word, most significant byte first.</summary>
-public static class FinsWords
+internal static class FinsWords
 {
     /// <summary>Decodes exactly <paramref name="count"/> words.</summary>
     /// <exception cref="HostLinkFrameException"><see cref="FrameError.WrongLength"/>: the data is not exactly <paramref name="count"/> × 2 bytes.</exception>

@@ -1,7 +1,7 @@
 namespace OmronHostLink.Protocol.Fins;
 
 /// <summary>2302 FORCED SET/RESET CANCEL: releases every forced bit. No parameters.</summary>
-public sealed class ForcedSetResetCancelCommand : FinsCommand
+internal sealed class ForcedSetResetCancelCommand : FinsCommand
 {
     /// <summary>The command code, 2302.</summary>
     public const ushort Code = FinsCommandCodes.ForcedSetResetCancel;

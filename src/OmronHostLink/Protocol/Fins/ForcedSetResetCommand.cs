@@ -4,7 +4,7 @@ namespace OmronHostLink.Protocol.Fins;
 /// 2301 FORCED SET/RESET: forces bits ON or OFF (or releases them).
 /// Parameters: count(2) then [designation(2) area(1) address(2) bit(1)] per bit.
 /// </summary>
-public sealed class ForcedSetResetCommand : FinsCommand
+internal sealed class ForcedSetResetCommand : FinsCommand
 {
     /// <summary>The command code, 2301.</summary>
     public const ushort Code = FinsCommandCodes.ForcedSetReset;
@@ -67,12 +67,12 @@ public sealed class ForcedSetResetCommand : FinsCommand
         ReadOnlySpan<byte> rest = parameters.Slice(2);
         if (rest.Length % FinsForcedBit.Length != 0)
         {
-            throw new FinsFormatException(0x1002, $"FORCED SET/RESET items take {FinsForcedBit.Length} bytes each; the last of {rest.Length} bytes is cut short.");
+            throw new FinsFormatException(FinsEndCodes.CommandTooShort, $"FORCED SET/RESET items take {FinsForcedBit.Length} bytes each; the last of {rest.Length} bytes is cut short.");
         }
 
         if (count != rest.Length / FinsForcedBit.Length)
         {
-            throw new FinsFormatException(0x1003, $"FORCED SET/RESET announces {count} bits but carries {rest.Length / FinsForcedBit.Length}.");
+            throw new FinsFormatException(FinsEndCodes.ElementsDataMismatch, $"FORCED SET/RESET announces {count} bits but carries {rest.Length / FinsForcedBit.Length}.");
         }
 
         var items = new FinsForcedBit[count];

@@ -4,7 +4,7 @@ namespace OmronHostLink.Protocol.Fins;
 /// 0103 MEMORY AREA FILL: writes one word value to <see cref="Count"/> consecutive words.
 /// Parameters: area(1) address(2) bit(1) count(2) value(2). Word areas only.
 /// </summary>
-public sealed class MemoryAreaFillCommand : FinsCommand
+internal sealed class MemoryAreaFillCommand : FinsCommand
 {
     /// <summary>The command code, 0103.</summary>
     public const ushort Code = FinsCommandCodes.MemoryAreaFill;
@@ -58,7 +58,7 @@ public sealed class MemoryAreaFillCommand : FinsCommand
         FinsMemoryAddress address = FinsMemoryAddress.Read(parameters);
         if (address.ElementSize != 2)
         {
-            throw new FinsFormatException(0x1101, $"MEMORY AREA FILL cannot fill area {address.AreaCode:X2} ({FinsMemoryArea.Describe(address.AreaCode)}).");
+            throw new FinsFormatException(FinsEndCodes.AreaClassificationMissing, $"MEMORY AREA FILL cannot fill area {address.AreaCode:X2} ({FinsMemoryArea.Describe(address.AreaCode)}).");
         }
 
         return new MemoryAreaFillCommand(address, FinsBytes.ReadUInt16(parameters, 4), FinsBytes.ReadUInt16(parameters, 6));

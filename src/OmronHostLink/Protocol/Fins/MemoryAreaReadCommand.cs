@@ -9,7 +9,7 @@ namespace OmronHostLink.Protocol.Fins;
 /// bytes (W342 p69): at most <see cref="MaxWords"/> = 269 words or 538 bits in one command; a longer read must be
 /// split into several commands. A count of 0 is legal and returns no data (W342 p194).
 /// </remarks>
-public sealed class MemoryAreaReadCommand : FinsCommand
+internal sealed class MemoryAreaReadCommand : FinsCommand
 {
     /// <summary>The command code, 0101.</summary>
     public const ushort Code = FinsCommandCodes.MemoryAreaRead;
@@ -81,7 +81,7 @@ public sealed class MemoryAreaReadCommand : FinsCommand
         int count = FinsBytes.ReadUInt16(parameters, 4);
         if (count > MaxCount(address.AreaCode))
         {
-            throw new FinsFormatException(0x110B, $"Reading {count} elements of {FinsMemoryArea.Describe(address.AreaCode)} needs a response longer than a Host Link frame holds.");
+            throw new FinsFormatException(FinsEndCodes.ResponseTooLong, $"Reading {count} elements of {FinsMemoryArea.Describe(address.AreaCode)} needs a response longer than a Host Link frame holds.");
         }
 
         return new MemoryAreaReadCommand(address, count);

@@ -4,7 +4,7 @@ namespace OmronHostLink.Protocol.Fins;
 /// 0105 MEMORY AREA TRANSFER: copies <see cref="Count"/> words inside the PLC.
 /// Parameters: source area(1) address(2) bit(1), destination area(1) address(2) bit(1), count(2). Word areas only.
 /// </summary>
-public sealed class MemoryAreaTransferCommand : FinsCommand
+internal sealed class MemoryAreaTransferCommand : FinsCommand
 {
     /// <summary>The command code, 0105.</summary>
     public const ushort Code = FinsCommandCodes.MemoryAreaTransfer;
@@ -64,7 +64,7 @@ public sealed class MemoryAreaTransferCommand : FinsCommand
         FinsMemoryAddress destination = FinsMemoryAddress.Read(parameters.Slice(4));
         if (source.ElementSize != 2 || destination.ElementSize != 2)
         {
-            throw new FinsFormatException(0x1101, "MEMORY AREA TRANSFER copies 2-byte words only.");
+            throw new FinsFormatException(FinsEndCodes.AreaClassificationMissing, "MEMORY AREA TRANSFER copies 2-byte words only.");
         }
 
         return new MemoryAreaTransferCommand(source, destination, FinsBytes.ReadUInt16(parameters, 8));

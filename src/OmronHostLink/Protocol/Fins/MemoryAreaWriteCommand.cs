@@ -9,7 +9,7 @@ namespace OmronHostLink.Protocol.Fins;
 /// frame stays within 1,115 characters even with a network header [unverified: the manuals state 1,115 for
 /// responses]. Longer writes must be split into several commands.
 /// </remarks>
-public sealed class MemoryAreaWriteCommand : FinsCommand
+internal sealed class MemoryAreaWriteCommand : FinsCommand
 {
     /// <summary>The command code, 0102.</summary>
     public const ushort Code = FinsCommandCodes.MemoryAreaWrite;
@@ -129,7 +129,7 @@ public sealed class MemoryAreaWriteCommand : FinsCommand
         ReadOnlySpan<byte> data = parameters.Slice(6);
         if (data.Length != count * address.ElementSize)
         {
-            throw new FinsFormatException(0x1003, $"MEMORY AREA WRITE announces {count} elements of {address.ElementSize} bytes but carries {data.Length} data bytes.");
+            throw new FinsFormatException(FinsEndCodes.ElementsDataMismatch, $"MEMORY AREA WRITE announces {count} elements of {address.ElementSize} bytes but carries {data.Length} data bytes.");
         }
 
         if (address.IsBit && address.ElementSize == 1)
@@ -138,7 +138,7 @@ public sealed class MemoryAreaWriteCommand : FinsCommand
             {
                 if (b > 1)
                 {
-                    throw new FinsFormatException(0x110C, $"Bit data must be 00 or 01; {b:X2} was sent.");
+                    throw new FinsFormatException(FinsEndCodes.ParameterError, $"Bit data must be 00 or 01; {b:X2} was sent.");
                 }
             }
         }

@@ -4,7 +4,7 @@ namespace OmronHostLink.Protocol.Fins;
 /// 0104 MULTIPLE MEMORY AREA READ: reads one element at each of several addresses.
 /// Parameters: [area(1) address(2) bit(1)] repeated. The response repeats [area(1) data(element size)].
 /// </summary>
-public sealed class MultipleMemoryAreaReadCommand : FinsCommand
+internal sealed class MultipleMemoryAreaReadCommand : FinsCommand
 {
     /// <summary>The command code, 0104.</summary>
     public const ushort Code = FinsCommandCodes.MultipleMemoryAreaRead;
@@ -71,7 +71,7 @@ public sealed class MultipleMemoryAreaReadCommand : FinsCommand
         CheckLength(Code, parameters, FinsMemoryAddress.Length, MaxItems * FinsMemoryAddress.Length);
         if (parameters.Length % FinsMemoryAddress.Length != 0)
         {
-            throw new FinsFormatException(0x1002, $"MULTIPLE MEMORY AREA READ items take 4 bytes each; the last of {parameters.Length} bytes is cut short.");
+            throw new FinsFormatException(FinsEndCodes.CommandTooShort, $"MULTIPLE MEMORY AREA READ items take 4 bytes each; the last of {parameters.Length} bytes is cut short.");
         }
 
         var items = new FinsMemoryAddress[parameters.Length / FinsMemoryAddress.Length];
@@ -84,7 +84,7 @@ public sealed class MultipleMemoryAreaReadCommand : FinsCommand
 
         if (response > MemoryAreaReadCommand.MaxResponseDataBytes)
         {
-            throw new FinsFormatException(0x110B, $"The response to {items.Length} items would need {response} bytes, more than a Host Link frame holds.");
+            throw new FinsFormatException(FinsEndCodes.ResponseTooLong, $"The response to {items.Length} items would need {response} bytes, more than a Host Link frame holds.");
         }
 
         return new MultipleMemoryAreaReadCommand(items);

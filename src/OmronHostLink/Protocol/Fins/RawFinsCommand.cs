@@ -1,7 +1,7 @@
 namespace OmronHostLink.Protocol.Fins;
 
 /// <summary>A FINS command this library does not model: its code and parameter bytes as they are.</summary>
-public sealed class RawFinsCommand : FinsCommand
+internal sealed class RawFinsCommand : FinsCommand
 {
     private readonly byte[] _parameters;
 

@@ -4,7 +4,7 @@ namespace OmronHostLink.Protocol.Fins;
 /// 0401 RUN: puts the CPU Unit into MONITOR or RUN mode. Parameters (all optional): program number(2, <c>FFFF</c>)
 /// then mode(1: 02 MONITOR, 04 RUN). The mode can only be sent after a program number.
 /// </summary>
-public sealed class RunCommand : FinsCommand
+internal sealed class RunCommand : FinsCommand
 {
     /// <summary>The command code, 0401.</summary>
     public const ushort Code = FinsCommandCodes.Run;
@@ -72,7 +72,7 @@ public sealed class RunCommand : FinsCommand
         CheckLength(Code, parameters, 0, 3);
         if (parameters.Length == 1)
         {
-            throw new FinsFormatException(0x1002, "RUN's program number takes 2 bytes; 1 was sent.");
+            throw new FinsFormatException(FinsEndCodes.CommandTooShort, "RUN's program number takes 2 bytes; 1 was sent.");
         }
 
         ushort? program = parameters.Length >= 2 ? FinsBytes.ReadUInt16(parameters, 0) : null;
@@ -82,7 +82,7 @@ public sealed class RunCommand : FinsCommand
             mode = (FinsCpuMode)parameters[2];
             if (mode is not FinsCpuMode.Monitor and not FinsCpuMode.Run)
             {
-                throw new FinsFormatException(0x110C, $"RUN mode {parameters[2]:X2} is neither 02 (MONITOR) nor 04 (RUN).");
+                throw new FinsFormatException(FinsEndCodes.ParameterError, $"RUN mode {parameters[2]:X2} is neither 02 (MONITOR) nor 04 (RUN).");
             }
         }
 

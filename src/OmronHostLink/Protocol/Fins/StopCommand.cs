@@ -1,7 +1,7 @@
 namespace OmronHostLink.Protocol.Fins;
 
 /// <summary>0402 STOP: puts the CPU Unit into PROGRAM mode. Parameter (optional): program number(2, <c>FFFF</c>).</summary>
-public sealed class StopCommand : FinsCommand
+internal sealed class StopCommand : FinsCommand
 {
     /// <summary>The command code, 0402.</summary>
     public const ushort Code = FinsCommandCodes.Stop;
@@ -39,7 +39,7 @@ public sealed class StopCommand : FinsCommand
         CheckLength(Code, parameters, 0, 2);
         if (parameters.Length == 1)
         {
-            throw new FinsFormatException(0x1002, "STOP's program number takes 2 bytes; 1 was sent.");
+            throw new FinsFormatException(FinsEndCodes.CommandTooShort, "STOP's program number takes 2 bytes; 1 was sent.");
         }
 
         return new StopCommand(parameters.Length == 2 ? FinsBytes.ReadUInt16(parameters, 0) : null);

@@ -5,13 +5,13 @@ using OmronHostLink.Simulator.Hosting;
 
 namespace OmronHostLink.Tests.Planning;
 
-/// <summary>ReadManyAsync against the simulator over an in-memory link, both protocols, two units.</summary>
-public sealed class ReadManyTests
+/// <summary>ReadTagsAsync against the simulator over an in-memory link, both protocols, two units.</summary>
+public sealed class ReadTagsTests
 {
     [Theory]
-    [InlineData(HostLinkProtocol.CMode)]
-    [InlineData(HostLinkProtocol.Fins)]
-    public async Task ReadMany_returns_every_tag_from_the_right_unit(HostLinkProtocol protocol)
+    [InlineData(HostLinkCommandSet.CMode)]
+    [InlineData(HostLinkCommandSet.Fins)]
+    public async Task ReadMany_returns_every_tag_from_the_right_unit(HostLinkCommandSet protocol)
     {
         var plc = new VirtualPlc(new VirtualPlcOptions { Units = new[] { 0, 5 } });
         for (int i = 0; i < 2000; i++)
@@ -29,14 +29,14 @@ public sealed class ReadManyTests
         (Stream host, Stream plcEnd) = InMemoryLink.CreatePair();
         using var stop = new CancellationTokenSource();
         Task session = plc.RunAsync(plcEnd, stop.Token);
-        await using HostLinkClient client = HostLinkClient.ForStream(host, new HostLinkClientOptions { Protocol = protocol, LineTiming = new LineTiming(115200, 11) });
+        await using HostLinkClient client = HostLinkClient.ForStream(host, new HostLinkClientOptions { CommandSet = protocol, LineTiming = new LineTiming(115200, 11) });
 
         var tags = new[]
         {
             new PlcTag("D5"), new PlcTag("D9"), new PlcTag("D1500", PlcValueType.Int16), new PlcTag("H10.03", PlcValueType.Bit),
             new PlcTag("E1_50", PlcValueType.Float), new PlcTag("C12"), new PlcTag("D7", unit: 5), new PlcTag("D3000"),
         };
-        PlcTagValue[] values = await client.ReadManyAsync(tags);
+        PlcTagValue[] values = await client.ReadTagsAsync(tags);
         values.Select(v => v.Value).Should().Equal((ushort)35, (ushort)63, unchecked((short)10500), true, 2.25f, (ushort)0x42, (ushort)49, (ushort)0x4142);
         values.Select(v => v.Tag).Should().Equal(tags);
 
@@ -56,7 +56,7 @@ public sealed class ReadManyTests
         for (ushort i = 0; i < 3; i++)
         {
             plc.WriteWord(PlcArea.Dm, 2, i);
-            (await client.ReadManyAsync(plan))[1].Value.Should().Be(i);
+            (await client.ReadTagsAsync(plan))[1].Value.Should().Be(i);
         }
 
         stop.Cancel();
@@ -70,7 +70,7 @@ public sealed class ReadManyTests
         (Stream host, _) = InMemoryLink.CreatePair();
         await using HostLinkClient client = HostLinkClient.ForStream(host);
         client.FrameObserver = (_, _) => frames++;
-        await FluentActions.Awaiting(async () => await client.ReadManyAsync(new[] { new PlcTag("W0") })).Should().ThrowAsync<ArgumentException>();
+        await FluentActions.Awaiting(async () => await client.ReadTagsAsync(new[] { new PlcTag("W0") })).Should().ThrowAsync<ArgumentException>();
         frames.Should().Be(0);
     }
 }

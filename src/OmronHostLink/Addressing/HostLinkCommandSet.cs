@@ -1,7 +1,7 @@
 namespace OmronHostLink;
 
 /// <summary>The command set used to reach the PLC over a Host Link line.</summary>
-public enum HostLinkProtocol
+public enum HostLinkCommandSet
 {
     /// <summary>C-mode commands (RD, WD, RR, …): simple, but with narrower address ranges than FINS.</summary>
     CMode,

@@ -1,0 +1,58 @@
+using System.Text.Json.Serialization;
+
+namespace OmronHostLink.Cli;
+
+/// <summary>
+/// A decoded frame: what <c>explain</c> prints, and, property for property in this order, its JSON document (written by
+/// <see cref="ExplainJsonContext"/>).
+/// </summary>
+internal sealed class FrameExplanation
+{
+    public bool Valid => Problems.Count == 0;
+
+    public required string Frame { get; init; }
+
+    public string Direction => IsResponse ? "response" : "command";
+
+    public int? Unit { get; set; }
+
+    public string? Header { get; set; }
+
+    public string? Name { get; set; }
+
+    public string? EndCode { get; set; }
+
+    public string? EndCodeMeaning { get; set; }
+
+    /// <summary>The FCS found and expected; null when the frame has no room for one.</summary>
+    public FcsExplanation? Fcs => FcsFound is null ? null : new(FcsExpected!, FcsFound, string.Equals(FcsFound, FcsExpected, StringComparison.Ordinal));
+
+    /// <summary>True for a frame that ends with <c>*</c>CR (or is read as one); false for a non-final frame.</summary>
+    public bool Final { get; set; } = true;
+
+    public string? Text { get; set; }
+
+    /// <summary>The data after the end code of an answer (written for answers only).</summary>
+    public string? Data { get; set; }
+
+    /// <summary>Decoded fields in order; values are string, long, bool, string[], long[], bool[] or null.</summary>
+    public OrderedDictionary<string, object?> Fields { get; } = [];
+
+    public List<string> Notes { get; } = [];
+
+    public List<string> Problems { get; } = [];
+
+    [JsonIgnore]
+    public bool IsResponse { get; init; }
+
+    [JsonIgnore]
+    public string? FcsExpected { get; set; }
+
+    [JsonIgnore]
+    public string? FcsFound { get; set; }
+
+    public void Field(string name, object? value) => Fields.Add(name, value);
+}
+
+/// <summary>The FCS of an explained frame.</summary>
+internal sealed record FcsExplanation(string Expected, string Found, bool Ok);
