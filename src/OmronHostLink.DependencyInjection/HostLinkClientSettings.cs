@@ -26,8 +26,8 @@ public sealed class HostLinkClientSettings
     /// <summary>The unit number the client addresses, 0-31. Default 0.</summary>
     public int? UnitNumber { get; set; }
 
-    /// <summary>The command set reads and writes use: <see cref="HostLinkProtocol.CMode"/> (default) or <see cref="HostLinkProtocol.Fins"/>.</summary>
-    public HostLinkProtocol? Protocol { get; set; }
+    /// <summary>The command set reads and writes use: <see cref="HostLinkCommandSet.CMode"/> (default) or <see cref="HostLinkCommandSet.Fins"/>.</summary>
+    public HostLinkCommandSet? Protocol { get; set; }
 
     /// <summary>
     /// How long the PLC (and a gateway between) may take to start answering a frame, on top of the frame's wire time.

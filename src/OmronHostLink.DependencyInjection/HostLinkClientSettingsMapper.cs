@@ -60,7 +60,7 @@ internal static class HostLinkClientSettingsMapper
     {
         var options = new HostLinkClientOptions();
         options.UnitNumber = s.UnitNumber ?? options.UnitNumber;
-        options.Protocol = s.Protocol ?? options.Protocol;
+        options.CommandSet = s.Protocol ?? options.CommandSet;
         options.TurnaroundAllowance = s.TurnaroundAllowance ?? options.TurnaroundAllowance;
         options.ReadRetries = s.ReadRetries ?? options.ReadRetries;
         options.WriteRetries = s.WriteRetries ?? options.WriteRetries;

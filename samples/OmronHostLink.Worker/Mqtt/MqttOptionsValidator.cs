@@ -214,7 +214,7 @@ public sealed class MqttOptionsValidator : IValidateOptions<MqttOptions>
         }
     }
 
-    private static void ValidateWritable(string path, PollGroupOptions group, HostLinkProtocol protocol, List<string> failures)
+    private static void ValidateWritable(string path, PollGroupOptions group, HostLinkCommandSet protocol, List<string> failures)
     {
         // The HostLink validator reports bad addresses and types; only what writing adds is checked here.
         if (!PlcAddress.TryParse(group.Address, out PlcAddress address) || !PlcValueTypes.TryParse(group.Type, out PlcValueType type) || group.Count < 1)
@@ -246,7 +246,7 @@ public sealed class MqttOptionsValidator : IValidateOptions<MqttOptions>
                 _ => type.WordsPerValue() * group.Count,
             };
             // A bit is written with FINS MEMORY AREA WRITE whatever the link's protocol.
-            address.AsWord().EnsureRange(words, type == PlcValueType.Bit ? HostLinkProtocol.Fins : protocol, forWrite: true);
+            address.AsWord().EnsureRange(words, type == PlcValueType.Bit ? HostLinkCommandSet.Fins : protocol, forWrite: true);
         }
         catch (ArgumentException e)
         {

@@ -39,7 +39,7 @@ internal static class HostLinkSettingsReader
         { "Serial", (v, s) => v.Section(SerialKeys, s.Serial) },
         { "Tcp", (v, s) => ReadTcp(v, s.Tcp) },
         { "UnitNumber", (v, s) => s.UnitNumber = v.Integer() ?? s.UnitNumber },
-        { "Protocol", (v, s) => s.Protocol = v.Choice<HostLinkProtocol>() ?? s.Protocol },
+        { "Protocol", (v, s) => s.Protocol = v.Choice<HostLinkCommandSet>() ?? s.Protocol },
         { "TurnaroundAllowance", (v, s) => s.TurnaroundAllowance = v.Duration() ?? s.TurnaroundAllowance },
         { "ReadRetries", (v, s) => s.ReadRetries = v.Integer() ?? s.ReadRetries },
         { "WriteRetries", (v, s) => s.WriteRetries = v.Integer() ?? s.WriteRetries },

@@ -169,7 +169,7 @@ internal sealed class HostLinkClientSettingsValidator : IValidateOptions<HostLin
             problems.Add(new SettingsProblem("UnitNumber", $"{unit} is not a unit number (0-31)"));
         }
 
-        if (s.Protocol is { } protocol && protocol is not (HostLinkProtocol.CMode or HostLinkProtocol.Fins))
+        if (s.Protocol is { } protocol && protocol is not (HostLinkCommandSet.CMode or HostLinkCommandSet.Fins))
         {
             problems.Add(new SettingsProblem("Protocol", $"{(int)protocol} is not CMode or Fins"));
         }

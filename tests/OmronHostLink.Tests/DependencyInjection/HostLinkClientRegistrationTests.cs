@@ -65,7 +65,7 @@ public sealed class HostLinkClientRegistrationTests
         (await oven.ReadWordsAsync("D20000", 2)).Should().Equal(0x0001, 0x0002);
         (await oven.ReadInt32Async("D20000")).Should().Be(0x0001_0002, "the file sets HighWordFirst");
         oven.UnitNumber.Should().Be(3);
-        oven.Protocol.Should().Be(HostLinkProtocol.Fins);
+        oven.CommandSet.Should().Be(HostLinkCommandSet.Fins);
         oven.Description.Should().StartWith(pty.PathA + " 115200 7E2");
     }
 
@@ -113,14 +113,14 @@ public sealed class HostLinkClientRegistrationTests
             {
                 o.Tcp.Host = "127.0.0.1";
                 o.Tcp.Port = sim.Port;
-                o.Protocol = HostLinkProtocol.Fins;
+                o.Protocol = HostLinkCommandSet.Fins;
             });
         });
         await host.Host.StartAsync();
 
         (await host.Services.GetRequiredKeyedService<HostLinkClient>("line1").ReadWordAsync("D0")).Should().Be(Simulated.D0);
         HostLinkClient line2 = host.Services.GetRequiredKeyedService<HostLinkClient>("line2");
-        line2.Protocol.Should().Be(HostLinkProtocol.Fins);
+        line2.CommandSet.Should().Be(HostLinkCommandSet.Fins);
         (await line2.ReadWordAsync("D0")).Should().Be(Simulated.D0);
     }
 

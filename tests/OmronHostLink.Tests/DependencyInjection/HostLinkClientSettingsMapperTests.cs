@@ -23,7 +23,7 @@ public sealed class HostLinkClientSettingsMapperTests
                 RtsEnable = true,
             },
             UnitNumber = 7,
-            Protocol = HostLinkProtocol.Fins,
+            Protocol = HostLinkCommandSet.Fins,
             TurnaroundAllowance = TimeSpan.FromMilliseconds(750),
             ReadRetries = 5,
             WriteRetries = 1,
@@ -35,7 +35,7 @@ public sealed class HostLinkClientSettingsMapperTests
 
         HostLinkClientOptions options = HostLinkClientSettingsMapper.ToClientOptions(settings);
         options.UnitNumber.Should().Be(7);
-        options.Protocol.Should().Be(HostLinkProtocol.Fins);
+        options.CommandSet.Should().Be(HostLinkCommandSet.Fins);
         options.TurnaroundAllowance.Should().Be(TimeSpan.FromMilliseconds(750));
         options.ReadRetries.Should().Be(5);
         options.WriteRetries.Should().Be(1);

@@ -252,7 +252,7 @@ public sealed class HostLinkConfigurationValidationTests
         s.Serial.DataBits.Should().Be(8);
         s.Serial.Handshake.Should().Be(SerialHandshake.XOnXOff);
         s.Serial.DtrEnable.Should().BeTrue();
-        s.Protocol.Should().Be(HostLinkProtocol.Fins);
+        s.Protocol.Should().Be(HostLinkCommandSet.Fins);
         s.WordOrder.Should().Be(WordOrder.HighWordFirst);
         s.AllowReadModifyWriteBits.Should().BeTrue();
         s.WriteRetries.Should().Be(1);
