@@ -96,7 +96,7 @@ public readonly struct PlcTagValue
 
     /// <summary>
     /// The value in the tag's type, as <see cref="PlcValue.ToObject"/> gives it: <see cref="ushort"/> (Word, UInt16),
-    /// <see cref="short"/> (Int16), <see cref="int"/> (Int32, Bcd), <see cref="uint"/> (UInt32), <see cref="float"/>
+    /// <see cref="short"/> (Int16), <see cref="int"/> (Int32, Bcd, Bcd32), <see cref="uint"/> (UInt32), <see cref="float"/>
     /// (Float), <see cref="double"/> (Double) or <see cref="bool"/> (Bit).
     /// </summary>
     public object Value { get; }
