@@ -26,6 +26,7 @@ internal sealed class InProcessLine : IAsyncDisposable
             if (sent)
             {
                 Interlocked.Increment(ref _sent);
+                OnSend?.Invoke();
             }
         };
     }
@@ -33,6 +34,9 @@ internal sealed class InProcessLine : IAsyncDisposable
     public VirtualPlc Plc { get; }
 
     public HostLinkClient Client { get; }
+
+    /// <summary>Called on the client's side as each frame is sent (for example to move a fake clock mid-exchange).</summary>
+    public Action? OnSend { get; set; }
 
     /// <summary>Frames the client has sent.</summary>
     public int FramesSent => Volatile.Read(ref _sent);
