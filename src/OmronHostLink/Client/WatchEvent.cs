@@ -5,8 +5,8 @@ namespace OmronHostLink;
 
 /// <summary>
 /// One event of a watch (<see cref="HostLinkUnit.WatchAsync(IReadOnlyList{PlcTag}, WatchOptions, CancellationToken)"/>):
-/// a changed value, the start or end of an outage, or an overrun cycle. Immutable; the factories let a test double
-/// produce the same events as a real watch.
+/// a changed value, the start or end of an outage, or an overrun cycle. Immutable; the factories let a test double of
+/// <see cref="IHostLinkUnit"/> produce the same events as a real watch.
 /// </summary>
 public sealed class WatchEvent
 {
