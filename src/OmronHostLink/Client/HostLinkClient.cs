@@ -16,7 +16,7 @@ namespace OmronHostLink;
 /// PlcStatus status = await plc.ReadStatusAsync();
 /// </code>
 /// </example>
-public sealed class HostLinkClient : HostLinkUnit, IAsyncDisposable
+public sealed class HostLinkClient : HostLinkUnit, IHostLinkClient
 {
     private HostLinkClient(HostLinkConnection connection, HostLinkClientOptions options)
         : base(connection, options, options.UnitNumber)

@@ -156,14 +156,26 @@ public partial class HostLinkUnit
         await FinsAsync(command, 0, retryable: Options.WriteRetries > 0, ExpectNoData, "0102", cancellationToken).ConfigureAwait(false);
     }
 
-    private ValueTask<bool> FinsReadCompletionFlagAsync(PlcAddress address, CancellationToken cancellationToken)
-        => FinsAsync(
-            new MemoryAreaReadCommand(FinsAddressing.Item(address), 1),
-            1,
-            retryable: true,
-            static (data, _) => FinsBits.Read(data, 1)[0],
-            0,
-            cancellationToken);
+    private async ValueTask<bool[]> FinsReadCompletionFlagsAsync(PlcAddress address, int count, CancellationToken cancellationToken)
+    {
+        // Beyond one answer frame's bits the read is split into the fewest commands, as word reads are.
+        var flags = new bool[count];
+        for (int done = 0; done < count;)
+        {
+            int n = Math.Min(MemoryAreaReadCommand.MaxBits, count - done);
+            bool[] part = await FinsAsync(
+                new MemoryAreaReadCommand(FinsAddressing.Item(address.Offset(done)), n),
+                n,
+                retryable: true,
+                static (data, c) => FinsBits.Read(data, c),
+                n,
+                cancellationToken).ConfigureAwait(false);
+            part.CopyTo(flags, done);
+            done += n;
+        }
+
+        return flags;
+    }
 
     private async ValueTask<PlcStatus> FinsReadStatusAsync(CancellationToken cancellationToken)
     {

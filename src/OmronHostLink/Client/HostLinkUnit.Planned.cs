@@ -18,9 +18,27 @@ public partial class HostLinkUnit
     /// <returns>One value per tag, in the order of <paramref name="tags"/>.</returns>
     /// <exception cref="ArgumentException">A tag cannot be read with this view's command set (nothing is sent).</exception>
     public ValueTask<PlcTagValue[]> ReadTagsAsync(IReadOnlyList<PlcTag> tags, CancellationToken cancellationToken = default)
+        => ReadTagsAsync(Plan(tags), cancellationToken);
+
+    /// <summary>
+    /// Reads tags given as text (<c>"D100"</c>, <c>"D102:float"</c>, <c>"CIO10.03"</c>; see <see cref="PlcTag.Parse"/>)
+    /// from this unit, planned into the fewest transactions as <see cref="ReadTagsAsync(IReadOnlyList{PlcTag}, CancellationToken)"/> does.
+    /// </summary>
+    /// <param name="tags">The tag texts.</param>
+    /// <param name="cancellationToken">Cancels the reads.</param>
+    /// <returns>One value per tag, in the order of <paramref name="tags"/>.</returns>
+    /// <exception cref="FormatException">A text is not a tag (nothing is sent).</exception>
+    /// <exception cref="ArgumentException">A tag cannot be read with this view's command set (nothing is sent).</exception>
+    public ValueTask<PlcTagValue[]> ReadTagsAsync(IReadOnlyList<string> tags, CancellationToken cancellationToken = default)
     {
-        var planner = new ReadPlanner(Options.CommandSet, LineTiming);
-        return ReadTagsAsync(planner.Plan(tags, UnitNumber), cancellationToken);
+        Guard.NotNull(tags);
+        var parsed = new PlcTag[tags.Count];
+        for (int i = 0; i < parsed.Length; i++)
+        {
+            parsed[i] = PlcTag.Parse(tags[i] ?? throw new ArgumentException($"Tag {i} is null.", nameof(tags)));
+        }
+
+        return ReadTagsAsync(parsed, cancellationToken);
     }
 
     /// <summary>
@@ -43,6 +61,9 @@ public partial class HostLinkUnit
 
         return plan.Resolve(results, Options.WordOrder);
     }
+
+    /// <summary>The plan this view's reads of <paramref name="tags"/> use: its command set and line, tags without a unit from this unit.</summary>
+    private ReadPlan Plan(IReadOnlyList<PlcTag> tags) => new ReadPlanner(Options.CommandSet, LineTiming).Plan(tags, UnitNumber);
 
     private ValueTask<ushort[]> ExecuteAsync(PlannedRead read, CancellationToken cancellationToken)
     {

@@ -1,32 +1,32 @@
 namespace OmronHostLink;
 
-/// <summary>Typed reads and writes: integers, REAL, BCD, text and bits, built on the word reads and writes.</summary>
+/// <summary>Typed reads and writes by name (shortcuts for the generic members), text and bits.</summary>
 public partial class HostLinkUnit
 {
-    /// <summary>Reads a signed 16-bit value.</summary>
-    public async ValueTask<short> ReadInt16Async(string address, CancellationToken cancellationToken = default)
-        => unchecked((short)await ReadWordAsync(address, cancellationToken).ConfigureAwait(false));
+    /// <summary>Reads a signed 16-bit value (INT); the same as <c>ReadAsync&lt;short&gt;</c>.</summary>
+    public ValueTask<short> ReadInt16Async(string address, CancellationToken cancellationToken = default)
+        => ReadAsync<short>(address, cancellationToken);
 
-    /// <summary>Reads an unsigned 16-bit value.</summary>
+    /// <summary>Reads an unsigned 16-bit value (UINT); the same as <c>ReadAsync&lt;ushort&gt;</c>.</summary>
     public ValueTask<ushort> ReadUInt16Async(string address, CancellationToken cancellationToken = default)
-        => ReadWordAsync(address, cancellationToken);
+        => ReadAsync<ushort>(address, cancellationToken);
 
-    /// <summary>Reads a signed 32-bit value from two words (word order from the options; Omron: low word first).</summary>
-    public async ValueTask<int> ReadInt32Async(string address, CancellationToken cancellationToken = default)
-        => PlcWords.ReadInt32(await ReadWordsAsync(address, 2, cancellationToken).ConfigureAwait(false), Options.WordOrder);
+    /// <summary>Reads a signed 32-bit value (DINT) from two words in <see cref="WordOrder"/>; the same as <c>ReadAsync&lt;int&gt;</c>.</summary>
+    public ValueTask<int> ReadInt32Async(string address, CancellationToken cancellationToken = default)
+        => ReadAsync<int>(address, cancellationToken);
 
-    /// <summary>Reads an unsigned 32-bit value from two words.</summary>
-    public async ValueTask<uint> ReadUInt32Async(string address, CancellationToken cancellationToken = default)
-        => PlcWords.ReadUInt32(await ReadWordsAsync(address, 2, cancellationToken).ConfigureAwait(false), Options.WordOrder);
+    /// <summary>Reads an unsigned 32-bit value (UDINT) from two words; the same as <c>ReadAsync&lt;uint&gt;</c>.</summary>
+    public ValueTask<uint> ReadUInt32Async(string address, CancellationToken cancellationToken = default)
+        => ReadAsync<uint>(address, cancellationToken);
 
-    /// <summary>Reads an IEEE 754 single (REAL) from two words.</summary>
-    public async ValueTask<float> ReadSingleAsync(string address, CancellationToken cancellationToken = default)
-        => PlcWords.ReadSingle(await ReadWordsAsync(address, 2, cancellationToken).ConfigureAwait(false), Options.WordOrder);
+    /// <summary>Reads an IEEE 754 single (REAL) from two words; the same as <c>ReadAsync&lt;float&gt;</c>.</summary>
+    public ValueTask<float> ReadSingleAsync(string address, CancellationToken cancellationToken = default)
+        => ReadAsync<float>(address, cancellationToken);
 
-    /// <summary>Reads a 4-digit BCD word (0-9999).</summary>
+    /// <summary>Reads a 4-digit BCD word (0-9999); the same as <c>ReadAsync&lt;Bcd16&gt;</c>.</summary>
     /// <exception cref="FormatException">The word holds a nibble above 9: it is not BCD.</exception>
     public async ValueTask<int> ReadBcdAsync(string address, CancellationToken cancellationToken = default)
-        => PlcWords.FromBcd(await ReadWordAsync(address, cancellationToken).ConfigureAwait(false));
+        => (await ReadAsync<Bcd16>(address, cancellationToken).ConfigureAwait(false)).Value;
 
     /// <summary>Reads ASCII text stored two characters a word, high byte first, up to <paramref name="length"/> characters or the first NUL.</summary>
     public async ValueTask<string> ReadStringAsync(string address, int length, CancellationToken cancellationToken = default)
@@ -35,42 +35,30 @@ public partial class HostLinkUnit
         return PlcWords.ReadString(await ReadWordsAsync(address, PlcWords.WordsForString(length), cancellationToken).ConfigureAwait(false));
     }
 
-    /// <summary>Writes a signed 16-bit value.</summary>
+    /// <summary>Writes a signed 16-bit value (INT).</summary>
     public ValueTask WriteInt16Async(string address, short value, CancellationToken cancellationToken = default)
-        => WriteWordAsync(address, unchecked((ushort)value), cancellationToken);
+        => WriteAsync(address, value, cancellationToken);
 
-    /// <summary>Writes an unsigned 16-bit value.</summary>
+    /// <summary>Writes an unsigned 16-bit value (UINT).</summary>
     public ValueTask WriteUInt16Async(string address, ushort value, CancellationToken cancellationToken = default)
-        => WriteWordAsync(address, value, cancellationToken);
+        => WriteAsync(address, value, cancellationToken);
 
-    /// <summary>Writes a signed 32-bit value to two words.</summary>
+    /// <summary>Writes a signed 32-bit value (DINT) to two words in <see cref="WordOrder"/>.</summary>
     public ValueTask WriteInt32Async(string address, int value, CancellationToken cancellationToken = default)
-    {
-        var words = new ushort[2];
-        PlcWords.WriteInt32(value, words, Options.WordOrder);
-        return WriteWordsAsync(address, words, cancellationToken);
-    }
+        => WriteAsync(address, value, cancellationToken);
 
-    /// <summary>Writes an unsigned 32-bit value to two words.</summary>
+    /// <summary>Writes an unsigned 32-bit value (UDINT) to two words.</summary>
     public ValueTask WriteUInt32Async(string address, uint value, CancellationToken cancellationToken = default)
-    {
-        var words = new ushort[2];
-        PlcWords.WriteUInt32(value, words, Options.WordOrder);
-        return WriteWordsAsync(address, words, cancellationToken);
-    }
+        => WriteAsync(address, value, cancellationToken);
 
     /// <summary>Writes an IEEE 754 single (REAL) to two words.</summary>
     public ValueTask WriteSingleAsync(string address, float value, CancellationToken cancellationToken = default)
-    {
-        var words = new ushort[2];
-        PlcWords.WriteSingle(value, words, Options.WordOrder);
-        return WriteWordsAsync(address, words, cancellationToken);
-    }
+        => WriteAsync(address, value, cancellationToken);
 
-    /// <summary>Writes a value 0-9999 as a 4-digit BCD word.</summary>
+    /// <summary>Writes a value 0-9999 as a 4-digit BCD word; the same as <c>WriteAsync(address, new Bcd16(value))</c>.</summary>
     /// <exception cref="ArgumentOutOfRangeException">The value is outside 0-9999 (nothing is sent).</exception>
     public ValueTask WriteBcdAsync(string address, int value, CancellationToken cancellationToken = default)
-        => WriteWordAsync(address, PlcWords.ToBcd(value), cancellationToken);
+        => WriteAsync(address, new Bcd16(value), cancellationToken);
 
     /// <summary>Writes ASCII text two characters a word, high byte first (an odd length is padded with NUL).</summary>
     /// <exception cref="ArgumentException">The text holds a character outside ASCII (nothing is sent).</exception>
@@ -89,7 +77,7 @@ public partial class HostLinkUnit
     {
         if (address.Area is PlcArea.Timer or PlcArea.Counter)
         {
-            return await ReadCompletionFlagAsync(address, cancellationToken).ConfigureAwait(false);
+            return (await ReadCompletionFlagsAsync(address, 1, cancellationToken).ConfigureAwait(false))[0];
         }
 
         if (!address.IsBit)

@@ -224,27 +224,27 @@ public partial class HostLinkUnit
         await CModeAsync(command, 2, retryable: Options.WriteRetries > 0, static (data, h) => ExpectEmpty(data, h), command.Header, cancellationToken).ConfigureAwait(false);
     }
 
-    private async ValueTask<bool> ReadCompletionFlagAsync(PlcAddress address, CancellationToken cancellationToken)
+    private async ValueTask<bool[]> ReadCompletionFlagsAsync(PlcAddress address, int count, CancellationToken cancellationToken)
     {
-        address.EnsureRange(1, Options.CommandSet, forWrite: false);
+        address.EnsureRange(count, Options.CommandSet, forWrite: false);
         if (Options.CommandSet == HostLinkCommandSet.Fins)
         {
-            return await FinsReadCompletionFlagAsync(address, cancellationToken).ConfigureAwait(false);
+            return await FinsReadCompletionFlagsAsync(address, count, cancellationToken).ConfigureAwait(false);
         }
 
         (_, int begin) = CModeAddressing.Map(address);
-        var command = new AreaReadCommand(CModeArea.TimerCounterStatus, begin, 1);
+        var command = new AreaReadCommand(CModeArea.TimerCounterStatus, begin, count);
         return await CModeAsync(
             command,
-            2 + 1,
+            2 + count,
             retryable: true,
-            static (data, _) =>
+            static (data, n) =>
             {
-                Span<bool> flag = stackalloc bool[1];
-                CModeResponse.ReadFlags(data, flag);
-                return flag[0];
+                var flags = new bool[n];
+                CModeResponse.ReadFlags(data, flags);
+                return flags;
             },
-            0,
+            count,
             cancellationToken).ConfigureAwait(false);
     }
 

@@ -50,6 +50,18 @@ public readonly struct PlcValue : IEquatable<PlcValue>
         return new(PlcValueType.Bcd, value);
     }
 
+    /// <summary>A number 0–99999999 stored as 8 BCD digits in two words.</summary>
+    /// <exception cref="ArgumentOutOfRangeException"><paramref name="value"/> is negative or above 99999999.</exception>
+    public static PlcValue FromBcd32(int value)
+    {
+        if (value < 0 || value > PlcWords.MaxBcd32)
+        {
+            throw new ArgumentOutOfRangeException(nameof(value), value, $"two BCD words can hold 0–{PlcWords.MaxBcd32}; {value} does not fit.");
+        }
+
+        return new(PlcValueType.Bcd32, value);
+    }
+
     /// <summary>An IEEE 754 single-precision value (REAL).</summary>
     public static PlcValue FromSingle(float value) => new(PlcValueType.Float, SingleBits.ToInt32(value));
 
@@ -84,9 +96,9 @@ public readonly struct PlcValue : IEquatable<PlcValue>
     /// <exception cref="InvalidCastException">The value has another type.</exception>
     public short ToInt16() => Type == PlcValueType.Int16 ? (short)_number : throw Mismatch("int16");
 
-    /// <summary>The value of an <see cref="PlcValueType.Int32"/> or a <see cref="PlcValueType.Bcd"/> word.</summary>
+    /// <summary>The value of an <see cref="PlcValueType.Int32"/>, a <see cref="PlcValueType.Bcd"/> word or a <see cref="PlcValueType.Bcd32"/> pair.</summary>
     /// <exception cref="InvalidCastException">The value has another type.</exception>
-    public int ToInt32() => Type is PlcValueType.Int32 or PlcValueType.Bcd ? (int)_number : throw Mismatch("int32 or bcd");
+    public int ToInt32() => Type is PlcValueType.Int32 or PlcValueType.Bcd or PlcValueType.Bcd32 ? (int)_number : throw Mismatch("int32, bcd or bcd32");
 
     /// <summary>The value of a <see cref="PlcValueType.UInt32"/>.</summary>
     /// <exception cref="InvalidCastException">The value has another type.</exception>
@@ -106,14 +118,14 @@ public readonly struct PlcValue : IEquatable<PlcValue>
 
     /// <summary>
     /// The value in its .NET type, boxed: <see cref="ushort"/> (Word, UInt16), <see cref="short"/> (Int16),
-    /// <see cref="int"/> (Int32, Bcd), <see cref="uint"/> (UInt32), <see cref="float"/> (Float), <see cref="double"/>
+    /// <see cref="int"/> (Int32, Bcd, Bcd32), <see cref="uint"/> (UInt32), <see cref="float"/> (Float), <see cref="double"/>
     /// (Double), <see cref="string"/> (String) or <see cref="bool"/> (Bit).
     /// </summary>
     public object ToObject() => Type switch
     {
         PlcValueType.Word or PlcValueType.UInt16 => ToUInt16(),
         PlcValueType.Int16 => ToInt16(),
-        PlcValueType.Int32 or PlcValueType.Bcd => ToInt32(),
+        PlcValueType.Int32 or PlcValueType.Bcd or PlcValueType.Bcd32 => ToInt32(),
         PlcValueType.UInt32 => ToUInt32(),
         PlcValueType.Float => ToSingle(),
         PlcValueType.Double => ToDouble(),

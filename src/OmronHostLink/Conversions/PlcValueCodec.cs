@@ -6,7 +6,7 @@ namespace OmronHostLink;
 /// console and the worker all convert through it.
 /// </summary>
 /// <remarks>
-/// Layouts: a word, BCD, INT and UINT take one word; DINT, UDINT and REAL two; LREAL four (Omron stores the low word
+/// Layouts: a word, BCD, INT and UINT take one word; DINT, UDINT, REAL and 8-digit BCD two; LREAL four (Omron stores the low word
 /// first, see <see cref="WordOrder"/>); text two ASCII characters a word, high byte first, ending at the first NUL; a
 /// bit is bit <c>n</c> of a word, bit 0 the least significant.
 /// </remarks>
@@ -115,6 +115,9 @@ public static class PlcValueCodec
             case PlcValueType.Bcd:
                 destination[0] = PlcWords.ToBcd(value.ToInt32());
                 break;
+            case PlcValueType.Bcd32:
+                PlcWords.WriteBcd32(value.ToInt32(), destination, order);
+                break;
             case PlcValueType.Int32:
                 PlcWords.WriteInt32(value.ToInt32(), destination, order);
                 break;
@@ -212,6 +215,16 @@ public static class PlcValueCodec
                 bool bcd = PlcWords.TryFromBcd(words[0], out int number);
                 value = bcd ? PlcValue.FromBcd(number) : default;
                 return bcd;
+            case PlcValueType.Bcd32:
+                if (strict)
+                {
+                    value = PlcValue.FromBcd32(PlcWords.ReadBcd32(words, order));
+                    return true;
+                }
+
+                bool bcd32 = PlcWords.TryFromBcd32(PlcWords.ReadUInt32(words, order), out int number32);
+                value = bcd32 ? PlcValue.FromBcd32(number32) : default;
+                return bcd32;
             default:
                 if (strict)
                 {
@@ -226,7 +239,7 @@ public static class PlcValueCodec
     }
 
     private static PlcValueType CheckType(PlcValueType type)
-        => type is >= PlcValueType.Word and <= PlcValueType.Double
+        => type is >= PlcValueType.Word and <= PlcValueType.Bcd32
             ? type
             : throw new ArgumentOutOfRangeException(nameof(type), type, $"{type} is not a PLC value type.");
 }

@@ -35,12 +35,15 @@ public enum PlcValueType
 
     /// <summary>Four words, IEEE 754 double precision (LREAL), in the configured word order.</summary>
     Double,
+
+    /// <summary>Two words of 8 BCD digits (0-99999999), in the configured word order (Omron: the low four digits first).</summary>
+    Bcd32,
 }
 
 /// <summary>Names and sizes of <see cref="PlcValueType"/>.</summary>
 public static class PlcValueTypes
 {
-    private static readonly string[] NameList = ["word", "bcd", "int16", "uint16", "int32", "uint32", "float", "string", "bit", "double"];
+    private static readonly string[] NameList = ["word", "bcd", "int16", "uint16", "int32", "uint32", "float", "string", "bit", "double", "bcd32"];
 
     /// <summary>The names, lower case, in enum order, as users type them.</summary>
     public static IReadOnlyList<string> Names => NameList;
@@ -56,11 +59,11 @@ public static class PlcValueTypes
     /// <summary>The lower-case name.</summary>
     public static string Name(this PlcValueType type) => NameList[(int)type];
 
-    /// <summary>Words one value occupies: 4 for Double, 2 for Int32, UInt32 and Float, otherwise 1 (text and bits are not counted per value).</summary>
+    /// <summary>Words one value occupies: 4 for Double, 2 for Int32, UInt32, Float and Bcd32, otherwise 1 (text and bits are not counted per value).</summary>
     public static int WordsPerValue(this PlcValueType type) => type switch
     {
         PlcValueType.Double => 4,
-        PlcValueType.Int32 or PlcValueType.UInt32 or PlcValueType.Float => 2,
+        PlcValueType.Int32 or PlcValueType.UInt32 or PlcValueType.Float or PlcValueType.Bcd32 => 2,
         _ => 1,
     };
 }

@@ -47,6 +47,10 @@ public static partial class PlcWords
     /// <exception cref="FormatException">A digit is A–F, so the value is not BCD.</exception>
     public static int FromBcd32(uint value) => DecodeBcd(value, 8);
 
+    /// <summary>Decodes 8 BCD digits as <see cref="FromBcd32"/> does, without throwing.</summary>
+    /// <returns>False when a digit is A–F.</returns>
+    internal static bool TryFromBcd32(uint value, out int result) => TryDecodeBcd(value, 8, out result);
+
     /// <summary>Writes 0–99999999 as two BCD words: 12345678 → [0x5678, 0x1234] low word first.</summary>
     /// <param name="value">0–99999999.</param>
     /// <param name="dest">At least two words.</param>

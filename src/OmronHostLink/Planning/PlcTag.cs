@@ -61,6 +61,72 @@ public sealed class PlcTag
         Unit = unit;
     }
 
+    /// <summary>
+    /// Parses tag text: an address, optionally followed by a colon and a type name — <c>D100</c> (a word),
+    /// <c>D100:float</c>, <c>E1_200:int32</c>, <c>CIO10.03</c> (a bit address is a bit), <c>D20:bcd32</c>. Type names
+    /// are <see cref="PlcValueTypes.Names"/> but <c>string</c>, in any case; spaces around the parts are ignored.
+    /// </summary>
+    /// <remarks>
+    /// A tag is one value, so the text has no count (<c>D100:float[4]</c> is refused): read a run of values with
+    /// <c>ReadAsync&lt;T&gt;(address, count)</c>, or list one tag a value. The unit is not part of the text: pass it, or read
+    /// from the unit's view.
+    /// </remarks>
+    /// <param name="text">The tag text.</param>
+    /// <param name="unit">The unit number 0-31, or null for the unit of the client (or view) that reads it.</param>
+    /// <returns>The tag.</returns>
+    /// <exception cref="ArgumentNullException"><paramref name="text"/> is null.</exception>
+    /// <exception cref="FormatException">The text is not a tag; the message says why and shows the form.</exception>
+    /// <exception cref="ArgumentOutOfRangeException">The unit is not 0-31.</exception>
+    public static PlcTag Parse(string text, int? unit = null)
+    {
+        Guard.NotNull(text);
+        int colon = text.IndexOf(':');
+        string addressText = (colon < 0 ? text : text.Substring(0, colon)).Trim();
+        string? typeText = colon < 0 ? null : text.Substring(colon + 1).Trim();
+        if (addressText.Length == 0)
+        {
+            throw new FormatException($"'{text}' is not a tag: it has no address. A tag is an address with an optional type, as in D100 or D100:float.");
+        }
+
+        PlcAddress address;
+        try
+        {
+            address = PlcAddress.Parse(addressText);
+        }
+        catch (FormatException e)
+        {
+            throw new FormatException($"'{text}' is not a tag: {e.Message}", e);
+        }
+
+        PlcValueType type = address.IsBit ? PlcValueType.Bit : PlcValueType.Word;
+        if (typeText is not null)
+        {
+            if (typeText.IndexOf('[') >= 0)
+            {
+                throw new FormatException($"'{text}' is not a tag: a tag is one value and takes no count; read several with ReadAsync<T>(address, count) or list one tag a value.");
+            }
+
+            if (!PlcValueTypes.TryParse(typeText, out type) || type == PlcValueType.String)
+            {
+                throw new FormatException($"'{text}' is not a tag: '{typeText}' is not a tag type; use one of {string.Join(", ", PlcValueTypes.Names.Where(n => n != PlcValueType.String.Name()))}, as in D100:float.");
+            }
+        }
+
+        if (type == PlcValueType.Bit != address.IsBit)
+        {
+            throw new FormatException(type == PlcValueType.Bit
+                ? $"'{text}' is not a tag: a bit tag needs a bit address such as {address}.00."
+                : $"'{text}' is not a tag: {address} names a bit, and a {type.Name()} tag needs a word address such as {address.AsWord()}.");
+        }
+
+        if ((long)address.Word + PlcValueCodec.WordCount(type) > PlcAddress.AreaSize(address.Area))
+        {
+            throw new FormatException($"'{text}' is not a tag: a {type.Name()} at {address} runs past the end of the area.");
+        }
+
+        return new PlcTag(address, type, unit);
+    }
+
     /// <summary>The address (for <see cref="PlcValueType.Bit"/>, a bit address).</summary>
     public PlcAddress Address { get; }
 
@@ -96,7 +162,7 @@ public readonly struct PlcTagValue
 
     /// <summary>
     /// The value in the tag's type, as <see cref="PlcValue.ToObject"/> gives it: <see cref="ushort"/> (Word, UInt16),
-    /// <see cref="short"/> (Int16), <see cref="int"/> (Int32, Bcd), <see cref="uint"/> (UInt32), <see cref="float"/>
+    /// <see cref="short"/> (Int16), <see cref="int"/> (Int32, Bcd, Bcd32), <see cref="uint"/> (UInt32), <see cref="float"/>
     /// (Float), <see cref="double"/> (Double) or <see cref="bool"/> (Bit).
     /// </summary>
     public object Value { get; }

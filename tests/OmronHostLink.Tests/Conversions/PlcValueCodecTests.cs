@@ -9,6 +9,8 @@ public sealed class PlcValueCodecTests
         { PlcValueType.UInt16, [0xFFFE], WordOrder.LowWordFirst, (ushort)65534 },
         { PlcValueType.Int16, [0xFFFE], WordOrder.LowWordFirst, (short)-2 },
         { PlcValueType.Bcd, [0x1234], WordOrder.LowWordFirst, 1234 },
+        { PlcValueType.Bcd32, [0x5678, 0x1234], WordOrder.LowWordFirst, 12345678 },
+        { PlcValueType.Bcd32, [0x1234, 0x5678], WordOrder.HighWordFirst, 12345678 },
         { PlcValueType.Int32, [0xFFFE, 0xFFFF], WordOrder.LowWordFirst, -2 },
         { PlcValueType.Int32, [0xFFFF, 0xFFFE], WordOrder.HighWordFirst, -2 },
         { PlcValueType.UInt32, [0x0000, 0x0001], WordOrder.LowWordFirst, 65536u },
@@ -43,6 +45,7 @@ public sealed class PlcValueCodecTests
         PlcValueCodec.WordCount(PlcValueType.Word, 3).Should().Be(3);
         PlcValueCodec.WordCount(PlcValueType.Int32, 3).Should().Be(6);
         PlcValueCodec.WordCount(PlcValueType.Double, 2).Should().Be(8);
+        PlcValueCodec.WordCount(PlcValueType.Bcd32, 2).Should().Be(4);
         PlcValueCodec.WordCount(PlcValueType.String, 5).Should().Be(3);
         PlcValueCodec.WordCount(PlcValueType.Bit, 4, firstBit: 14).Should().Be(2);
         PlcValueCodec.WordCount(PlcValueType.Bit, 16, firstBit: 0).Should().Be(1);
@@ -83,6 +86,9 @@ public sealed class PlcValueCodecTests
         PlcValueCodec.TryDecode(PlcValueType.String, new ushort[] { 0x41FF }, WordOrder.LowWordFirst, 0, out _).Should().BeFalse();
         PlcValueCodec.TryDecode(PlcValueType.Bcd, new ushort[] { 0x0042 }, WordOrder.LowWordFirst, 0, out PlcValue bcd).Should().BeTrue();
         bcd.ToInt32().Should().Be(42);
+        FluentActions.Invoking(() => PlcValueCodec.Decode(PlcValueType.Bcd32, new ushort[] { 0x0000, 0x1B00 })).Should().Throw<FormatException>().WithMessage("0x1B000000 is not BCD*");
+        PlcValueCodec.TryDecode(PlcValueType.Bcd32, new ushort[] { 0x0000, 0x1B00 }, WordOrder.LowWordFirst, 0, out _).Should().BeFalse();
+        FluentActions.Invoking(() => PlcValue.FromBcd32(100_000_000)).Should().Throw<ArgumentOutOfRangeException>();
     }
 
     [Fact]

@@ -15,7 +15,7 @@ public sealed class PlcValueTypeTests
 
         PlcValueTypes.TryParse("3", out _).Should().BeFalse();
         PlcValueTypes.TryParse(null, out _).Should().BeFalse();
-        PlcValueTypes.Names.Should().Equal("word", "bcd", "int16", "uint16", "int32", "uint32", "float", "string", "bit", "double");
+        PlcValueTypes.Names.Should().Equal("word", "bcd", "int16", "uint16", "int32", "uint32", "float", "string", "bit", "double", "bcd32");
     }
 
     [Fact]

@@ -1,0 +1,55 @@
+using OmronHostLink.Planning;
+
+namespace OmronHostLink;
+
+/// <summary>Change subscriptions: the tags polled with one planned read a cycle, changes and outages as events.</summary>
+public partial class HostLinkUnit
+{
+    /// <inheritdoc cref="WatchAsync(IReadOnlyList{PlcTag}, WatchOptions, CancellationToken)"/>
+    /// <param name="tags">The tags; tags without a unit are read from this unit.</param>
+    /// <param name="interval">The time from the start of one cycle to the start of the next; zero polls back to back.</param>
+    /// <param name="cancellationToken">Ends the watch.</param>
+    /// <exception cref="ArgumentOutOfRangeException"><paramref name="interval"/> is negative or over 1 day.</exception>
+    public IAsyncEnumerable<WatchEvent> WatchAsync(IReadOnlyList<PlcTag> tags, TimeSpan interval, CancellationToken cancellationToken = default)
+    {
+        WatchOptions.CheckInterval(interval, nameof(interval));
+        return WatchAsync(tags, new WatchOptions { Interval = interval }, cancellationToken);
+    }
+
+    /// <summary>
+    /// Watches <paramref name="tags"/> for changes: each cycle reads them all with one execution of a plan made once by
+    /// <see cref="ReadPlanner"/> (the fewest transactions, as <see cref="ReadTagsAsync(ReadPlan, CancellationToken)"/>), and
+    /// reports each tag whose value differs from the one reported before. The first successful cycle reports every tag
+    /// (with no old value). A failed cycle is reported once as <see cref="WatchEventKind.Outage"/> and the watch keeps
+    /// trying every <see cref="WatchOptions.RetryInterval"/>; the first cycle that succeeds again is reported as
+    /// <see cref="WatchEventKind.Resumed"/>, followed by the changes since. A cycle longer than the interval is reported
+    /// as <see cref="WatchEventKind.Overrun"/>, and the next starts at once.
+    /// </summary>
+    /// <remarks>
+    /// The watch runs while it is enumerated (<c>await foreach</c>): cycles are not read ahead, so a slow subscriber
+    /// slows the polling (and sees overruns) rather than a queue growing. Each enumeration is its own watch. Only the
+    /// subscriber ends it: by leaving the loop, or by cancelling <paramref name="cancellationToken"/> (or the token given
+    /// to <c>WithCancellation</c>), which ends the loop with <see cref="OperationCanceledException"/> as every cancelled
+    /// operation of the library does; link failures never end it. A client disposed under a running watch ends it with
+    /// <see cref="ObjectDisposedException"/>.
+    /// </remarks>
+    /// <param name="tags">The tags, at least one; tags without a unit are read from this unit.</param>
+    /// <param name="options">The interval, the retry interval and the clock.</param>
+    /// <param name="cancellationToken">Ends the watch.</param>
+    /// <returns>The events, as they happen.</returns>
+    /// <exception cref="ArgumentException">No tags, or a tag cannot be read with this view's command set (thrown by this call, before any read).</exception>
+    /// <exception cref="ArgumentOutOfRangeException">An option is out of range.</exception>
+    public IAsyncEnumerable<WatchEvent> WatchAsync(IReadOnlyList<PlcTag> tags, WatchOptions options, CancellationToken cancellationToken = default)
+    {
+        Guard.NotNull(tags);
+        Guard.NotNull(options);
+        options.Validate();
+        if (tags.Count == 0)
+        {
+            throw new ArgumentException("Give at least one tag to watch.", nameof(tags));
+        }
+
+        ReadPlan plan = Plan(tags.ToArray());
+        return TagWatch.RunAsync(this, plan, options.Interval, options.EffectiveRetryInterval, options.TimeProvider, cancellationToken);
+    }
+}

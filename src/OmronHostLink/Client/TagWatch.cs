@@ -1,0 +1,129 @@
+using System.Runtime.CompilerServices;
+using OmronHostLink.Planning;
+
+namespace OmronHostLink;
+
+/// <summary>
+/// The polling engine behind <c>WatchAsync</c>: one execution of a read plan per cycle, changes against the values
+/// reported before, outages and overruns as events.
+/// </summary>
+/// <remarks>
+/// Cycles are scheduled from their start: the next is due one interval after this one began. When the subscriber
+/// asks for more events later than that (the read was slow, or handling the events was), an overrun is reported and
+/// the next cycle starts at once; the schedule then continues from that cycle, so no backlog of cycles piles up.
+/// </remarks>
+internal static class TagWatch
+{
+    public static async IAsyncEnumerable<WatchEvent> RunAsync(
+        HostLinkUnit unit,
+        ReadPlan plan,
+        TimeSpan interval,
+        TimeSpan retryInterval,
+        TimeProvider time,
+        [EnumeratorCancellation] CancellationToken cancellationToken)
+    {
+        IReadOnlyList<PlcTag> tags = plan.Tags;
+        var reported = new PlcValue?[tags.Count];
+        long origin = time.GetTimestamp();
+        TimeSpan cycleStart = TimeSpan.Zero;
+        TimeSpan due = TimeSpan.Zero;
+        bool succeeded = false;
+        TimeSpan? outageStart = null;
+
+        while (true)
+        {
+            cancellationToken.ThrowIfCancellationRequested();
+            TimeSpan now = time.GetElapsedTime(origin);
+            if (now < due)
+            {
+                await Delay(due - now, time, cancellationToken).ConfigureAwait(false);
+            }
+            else if (succeeded && interval > TimeSpan.Zero && now > due)
+            {
+                yield return WatchEvent.Overrun(now - cycleStart, time.GetUtcNow());
+            }
+
+            cycleStart = time.GetElapsedTime(origin);
+            PlcTagValue[]? values = null;
+            Exception? failure = null;
+            try
+            {
+                values = await unit.ReadTagsAsync(plan, cancellationToken).ConfigureAwait(false);
+            }
+            catch (Exception e) when (IsCycleFailure(e, cancellationToken))
+            {
+                failure = e;
+            }
+
+            DateTimeOffset readTime = time.GetUtcNow();
+            TimeSpan end = time.GetElapsedTime(origin);
+            if (failure is not null)
+            {
+                succeeded = false;
+                due = end + retryInterval;
+                if (outageStart is null)
+                {
+                    outageStart = end;
+                    yield return WatchEvent.Outage(failure, readTime);
+                }
+
+                continue;
+            }
+
+            succeeded = true;
+            due = cycleStart + interval;
+            if (outageStart is { } since)
+            {
+                outageStart = null;
+                yield return WatchEvent.Resumed(end - since, readTime);
+            }
+
+            for (int i = 0; i < values!.Length; i++)
+            {
+                PlcValue value = Decode(values[i], unit.WordOrder);
+                if (reported[i] is { } old && old == value)
+                {
+                    continue;
+                }
+
+                PlcValue? previous = reported[i];
+                reported[i] = value;
+                yield return WatchEvent.Changed(i, tags[i], previous, value, readTime);
+            }
+        }
+    }
+
+    /// <summary>
+    /// Whether a failed read is an outage to report and outlive: the library's own failures, the stream's, a value that
+    /// does not decode, and a cancellation that is not the subscriber's (a connect timeout). The subscriber's
+    /// cancellation and programming errors (a disposed client) end the watch instead.
+    /// </summary>
+    private static bool IsCycleFailure(Exception e, CancellationToken cancellationToken) => e switch
+    {
+        OperationCanceledException => !cancellationToken.IsCancellationRequested,
+        ObjectDisposedException => false,
+        HostLinkException or IOException or FormatException or TimeoutException => true,
+        _ => false,
+    };
+
+    // The value in the tag's type, decoded from the words read, compared bit for bit (a REAL NaN equals itself).
+    private static PlcValue Decode(PlcTagValue value, WordOrder order)
+    {
+        IReadOnlyList<ushort> words = value.Words;
+        Span<ushort> raw = stackalloc ushort[words.Count];
+        for (int i = 0; i < raw.Length; i++)
+        {
+            raw[i] = words[i];
+        }
+
+        PlcTag tag = value.Tag;
+        return PlcValueCodec.Decode(tag.Type, raw, order, tag.Address.IsBit ? tag.Address.Bit : 0);
+    }
+
+    private static Task Delay(TimeSpan delay, TimeProvider time, CancellationToken cancellationToken)
+#if NET
+        => Task.Delay(delay, time, cancellationToken);
+#else
+        => time.Delay(delay, cancellationToken);
+#endif
+}

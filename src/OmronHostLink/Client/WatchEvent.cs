@@ -1,0 +1,103 @@
+using System.Globalization;
+using OmronHostLink.Planning;
+
+namespace OmronHostLink;
+
+/// <summary>
+/// One event of a watch (<see cref="HostLinkUnit.WatchAsync(IReadOnlyList{PlcTag}, WatchOptions, CancellationToken)"/>):
+/// a changed value, the start or end of an outage, or an overrun cycle. Immutable; the factories let a test double of
+/// <see cref="IHostLinkUnit"/> produce the same events as a real watch.
+/// </summary>
+public sealed class WatchEvent
+{
+    private WatchEvent(WatchEventKind kind, DateTimeOffset timestamp, int tagIndex = -1, PlcTag? tag = null, PlcValue? oldValue = null, PlcValue newValue = default, Exception? exception = null, TimeSpan duration = default)
+    {
+        Kind = kind;
+        Timestamp = timestamp;
+        TagIndex = tagIndex;
+        Tag = tag;
+        OldValue = oldValue;
+        NewValue = newValue;
+        Exception = exception;
+        Duration = duration;
+    }
+
+    /// <summary>What the event reports.</summary>
+    public WatchEventKind Kind { get; }
+
+    /// <summary>
+    /// When: for <see cref="WatchEventKind.Changed"/> the time the cycle's read completed (the value was read by then);
+    /// for the others the time the watch noticed. From the watch's <see cref="WatchOptions.TimeProvider"/>.
+    /// </summary>
+    public DateTimeOffset Timestamp { get; }
+
+    /// <summary>The changed tag's position in the watched list; -1 for events that are not about a tag.</summary>
+    public int TagIndex { get; }
+
+    /// <summary>The changed tag; null for events that are not about a tag.</summary>
+    public PlcTag? Tag { get; }
+
+    /// <summary>The value reported before for the tag; null on the first report of the tag (<see cref="IsInitial"/>) and for other kinds.</summary>
+    public PlcValue? OldValue { get; }
+
+    /// <summary>The tag's new value, decoded as its <see cref="PlcTag.Type"/>; <c>default</c> for events that are not about a tag.</summary>
+    public PlcValue NewValue { get; }
+
+    /// <summary>For <see cref="WatchEventKind.Outage"/>: why the cycle failed (see <see cref="HostLinkException.IsTransient"/>). Null otherwise.</summary>
+    public Exception? Exception { get; }
+
+    /// <summary>
+    /// For <see cref="WatchEventKind.Overrun"/>: how long the cycle took; for <see cref="WatchEventKind.Resumed"/>: how
+    /// long the outage lasted. Zero otherwise.
+    /// </summary>
+    public TimeSpan Duration { get; }
+
+    /// <summary>Whether this is the first report of a tag's value (a change with no old value).</summary>
+    public bool IsInitial => Kind == WatchEventKind.Changed && OldValue is null;
+
+    /// <summary>A change of a tag's value (or its first report, with <paramref name="oldValue"/> null).</summary>
+    /// <param name="tagIndex">The tag's position in the watched list.</param>
+    /// <param name="tag">The tag.</param>
+    /// <param name="oldValue">The value reported before, or null for the first report.</param>
+    /// <param name="newValue">The value read.</param>
+    /// <param name="timestamp">When the read completed.</param>
+    /// <returns>The event.</returns>
+    /// <exception cref="ArgumentNullException"><paramref name="tag"/> is null.</exception>
+    /// <exception cref="ArgumentOutOfRangeException"><paramref name="tagIndex"/> is negative.</exception>
+    public static WatchEvent Changed(int tagIndex, PlcTag tag, PlcValue? oldValue, PlcValue newValue, DateTimeOffset timestamp)
+    {
+        Guard.NotNull(tag);
+        if (tagIndex < 0)
+        {
+            throw new ArgumentOutOfRangeException(nameof(tagIndex), tagIndex, "A tag index cannot be negative.");
+        }
+
+        return new(WatchEventKind.Changed, timestamp, tagIndex, tag, oldValue, newValue);
+    }
+
+    /// <summary>The start of an outage: a cycle failed with <paramref name="exception"/>.</summary>
+    /// <exception cref="ArgumentNullException"><paramref name="exception"/> is null.</exception>
+    public static WatchEvent Outage(Exception exception, DateTimeOffset timestamp)
+        => new(WatchEventKind.Outage, timestamp, exception: Guard.NotNull(exception));
+
+    /// <summary>The end of an outage that lasted <paramref name="outage"/>.</summary>
+    public static WatchEvent Resumed(TimeSpan outage, DateTimeOffset timestamp)
+        => new(WatchEventKind.Resumed, timestamp, duration: outage);
+
+    /// <summary>A cycle that took <paramref name="cycleTime"/>, longer than the interval.</summary>
+    public static WatchEvent Overrun(TimeSpan cycleTime, DateTimeOffset timestamp)
+        => new(WatchEventKind.Overrun, timestamp, duration: cycleTime);
+
+    /// <summary>One line for logs: <c>D100 (Float): 1.5 → 2.5</c>, <c>outage: …</c>, <c>resumed after 3 s</c>, <c>overrun: cycle took 1.2 s</c>.</summary>
+    public override string ToString()
+    {
+        string at = Timestamp.ToString("O", CultureInfo.InvariantCulture);
+        return Kind switch
+        {
+            WatchEventKind.Changed => OldValue is { } old ? $"{at} {Tag}: {old} → {NewValue}" : $"{at} {Tag}: {NewValue}",
+            WatchEventKind.Outage => $"{at} outage: {Exception!.Message}",
+            WatchEventKind.Resumed => $"{at} resumed after {Duration.TotalSeconds.ToString("0.###", CultureInfo.InvariantCulture)} s",
+            _ => $"{at} overrun: cycle took {Duration.TotalSeconds.ToString("0.###", CultureInfo.InvariantCulture)} s",
+        };
+    }
+}

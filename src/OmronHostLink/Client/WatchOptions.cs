@@ -1,0 +1,51 @@
+namespace OmronHostLink;
+
+/// <summary>How <see cref="HostLinkUnit.WatchAsync(IReadOnlyList{Planning.PlcTag}, WatchOptions, CancellationToken)"/> polls.</summary>
+public sealed class WatchOptions
+{
+    private static readonly TimeSpan MaxInterval = TimeSpan.FromDays(1);
+
+    /// <summary>
+    /// The time from the start of one cycle to the start of the next. <see cref="TimeSpan.Zero"/> polls back to back
+    /// (and never reports an overrun). Default 1 s; at most 1 day.
+    /// </summary>
+    public TimeSpan Interval { get; set; } = TimeSpan.FromSeconds(1);
+
+    /// <summary>
+    /// How long after a failed cycle the next try starts. Null (the default) for <see cref="Interval"/>, but at least
+    /// 1 s, so an outage does not become a tight loop of failing exchanges.
+    /// </summary>
+    public TimeSpan? RetryInterval { get; set; }
+
+    /// <summary>The clock for intervals and event timestamps. Default <see cref="TimeProvider.System"/>; tests pass a fake one.</summary>
+    public TimeProvider TimeProvider { get; set; } = TimeProvider.System;
+
+    /// <summary>The retry interval in force: <see cref="RetryInterval"/>, or <see cref="Interval"/> but at least 1 s.</summary>
+    internal TimeSpan EffectiveRetryInterval
+        => RetryInterval ?? (Interval > TimeSpan.FromSeconds(1) ? Interval : TimeSpan.FromSeconds(1));
+
+    /// <summary>Checks the options and says which is wrong.</summary>
+    /// <exception cref="ArgumentOutOfRangeException"><see cref="Interval"/> or <see cref="RetryInterval"/> is out of range.</exception>
+    /// <exception cref="ArgumentNullException"><see cref="TimeProvider"/> is null.</exception>
+    public void Validate()
+    {
+        CheckInterval(Interval, nameof(Interval));
+        if (RetryInterval is { } retry && (retry <= TimeSpan.Zero || retry > MaxInterval))
+        {
+            throw new ArgumentOutOfRangeException(nameof(RetryInterval), retry, $"RetryInterval must be more than 0 and at most 1 day; it was {retry}.");
+        }
+
+        if (TimeProvider is null)
+        {
+            throw new ArgumentNullException(nameof(TimeProvider), "TimeProvider is required; use TimeProvider.System for the real clock.");
+        }
+    }
+
+    internal static void CheckInterval(TimeSpan interval, string name)
+    {
+        if (interval < TimeSpan.Zero || interval > MaxInterval)
+        {
+            throw new ArgumentOutOfRangeException(name, interval, $"{name} must be 0 (back to back) up to 1 day; it was {interval}.");
+        }
+    }
+}

@@ -1,0 +1,294 @@
+using System.Net;
+using OmronHostLink.Link;
+using OmronHostLink.Planning;
+using OmronHostLink.Simulator;
+using OmronHostLink.Simulator.Hosting;
+using OmronHostLink.Tests.Infrastructure;
+
+namespace OmronHostLink.Tests.Client;
+
+/// <summary>
+/// WatchAsync against the simulator on a fake clock that moves only when the watch waits on it, so every cycle is one
+/// deliberate step: changes once each, one planned read a cycle, outages and resumption, overruns, back-to-back polling.
+/// </summary>
+public sealed class WatchTests
+{
+    private static readonly TimeSpan Second = TimeSpan.FromSeconds(1);
+    private static readonly TimeSpan Patience = TimeSpan.FromSeconds(10);
+
+    private static PlcTag[] Tags() => new[] { PlcTag.Parse("D100"), PlcTag.Parse("D102:float"), PlcTag.Parse("D104.03") };
+
+    [Fact]
+    public async Task Every_tag_is_reported_first_then_each_change_exactly_once_with_one_planned_read_a_cycle()
+    {
+        await using InProcessLine line = InProcessLine.Start();
+        var clock = new SteppingClock();
+        PlcTag[] tags = Tags();
+        new ReadPlanner().Plan(tags).TransactionCount.Should().Be(1, "the tags lie within a few words of each other");
+        line.Plc.WriteWord(PlcArea.Dm, 100, 5);
+        using var stop = new CancellationTokenSource();
+        await using IAsyncEnumerator<WatchEvent> watch = line.Client
+            .WatchAsync(tags, new WatchOptions { Interval = Second, TimeProvider = clock }, stop.Token)
+            .GetAsyncEnumerator();
+
+        WatchEvent[] initial = { await Next(watch), await Next(watch), await Next(watch) };
+        initial.Should().OnlyContain(e => e.Kind == WatchEventKind.Changed && e.IsInitial && e.OldValue == null);
+        initial.Select(e => e.Tag).Should().Equal(tags);
+        initial.Select(e => e.TagIndex).Should().Equal(0, 1, 2);
+        initial.Select(e => e.NewValue).Should().Equal(PlcValue.FromWord(5), PlcValue.FromSingle(0f), PlcValue.FromBit(false));
+        initial[0].Timestamp.Should().Be(clock.GetUtcNow());
+        line.FramesSent.Should().Be(1);
+
+        // Cycle 2 sees D100 change; cycles 3-5 see nothing new; cycle 6 sees D102 change.
+        ValueTask<bool> pending = watch.MoveNextAsync();
+        await clock.NextTimerAsync();
+        line.Plc.WriteWord(PlcArea.Dm, 100, 6);
+        clock.Advance(Second);
+        WatchEvent change = await Completed(pending, watch);
+        change.Kind.Should().Be(WatchEventKind.Changed);
+        change.Tag.Should().BeSameAs(tags[0]);
+        change.OldValue.Should().Be(PlcValue.FromWord(5));
+        change.NewValue.Should().Be(PlcValue.FromWord(6));
+        change.Timestamp.Should().Be(clock.GetUtcNow());
+
+        pending = watch.MoveNextAsync();
+        for (int cycle = 3; cycle <= 5; cycle++)
+        {
+            await clock.StepAsync(Second);
+        }
+
+        await clock.NextTimerAsync();
+        pending.IsCompleted.Should().BeFalse("cycles 3-5 read the same values as cycle 2");
+        line.FramesSent.Should().Be(5, "each cycle is one planned read of one transaction");
+        line.Plc.WriteWords(PlcArea.Dm, 102, new ushort[] { 0x0000, 0x3FC0 }); // 1.5f, low word first
+        clock.Advance(Second);
+        change = await Completed(pending, watch);
+        change.Tag.Should().BeSameAs(tags[1]);
+        change.OldValue.Should().Be(PlcValue.FromSingle(0f));
+        change.NewValue.Should().Be(PlcValue.FromSingle(1.5f));
+
+        // A bit elsewhere in the watched word changes the word but not the tag; the tag's bit then changes once.
+        pending = watch.MoveNextAsync();
+        await clock.NextTimerAsync();
+        line.Plc.SetBit(PlcArea.Dm, 104, 7, true);
+        clock.Advance(Second);
+        await clock.NextTimerAsync();
+        pending.IsCompleted.Should().BeFalse("D104.07 is not watched");
+        line.Plc.SetBit(PlcArea.Dm, 104, 3, true);
+        clock.Advance(Second);
+        change = await Completed(pending, watch);
+        change.Tag.Should().BeSameAs(tags[2]);
+        change.NewValue.ToBoolean().Should().BeTrue();
+        line.FramesSent.Should().Be(8);
+    }
+
+    [Fact]
+    public async Task An_outage_is_reported_once_then_resumption_and_the_changes_it_hid_and_the_stream_goes_on()
+    {
+        var plc = new VirtualPlc();
+        plc.WriteWord(PlcArea.Dm, 100, 1);
+        var host = new TcpSimulatorHost(plc, new IPEndPoint(IPAddress.Loopback, 0));
+        await host.StartAsync();
+        int port = host.EndPoint.Port;
+        await using HostLinkClient client = HostLinkClient.ForTcp("127.0.0.1", port, new HostLinkClientOptions
+        {
+            LineTiming = new LineTiming(115200, 11),
+            TurnaroundAllowance = TimeSpan.FromMilliseconds(300),
+        }, connectTimeout: TimeSpan.FromSeconds(2));
+        var clock = new SteppingClock();
+        var retry = TimeSpan.FromSeconds(5);
+        using var stop = new CancellationTokenSource();
+        await using IAsyncEnumerator<WatchEvent> watch = client
+            .WatchAsync(new[] { PlcTag.Parse("D100") }, new WatchOptions { Interval = Second, RetryInterval = retry, TimeProvider = clock }, stop.Token)
+            .GetAsyncEnumerator();
+        try
+        {
+            (await Next(watch)).NewValue.Should().Be(PlcValue.FromWord(1));
+
+            ValueTask<bool> pending = watch.MoveNextAsync();
+            await clock.NextTimerAsync();
+            await host.StopAsync();
+            clock.Advance(Second);
+            WatchEvent outage = await Completed(pending, watch);
+            outage.Kind.Should().Be(WatchEventKind.Outage);
+            outage.Exception.Should().BeAssignableTo<HostLinkException>().Which.IsTransient.Should().BeTrue();
+            DateTimeOffset outageAt = outage.Timestamp;
+
+            // A second failed try is not reported again.
+            pending = watch.MoveNextAsync();
+            await clock.StepAsync(retry);
+            await clock.NextTimerAsync();
+            pending.IsCompleted.Should().BeFalse("the outage was reported when it began");
+
+            plc.WriteWord(PlcArea.Dm, 100, 2);
+            host = new TcpSimulatorHost(plc, new IPEndPoint(IPAddress.Loopback, port));
+            await host.StartAsync();
+            clock.Advance(retry);
+            WatchEvent resumed = await Completed(pending, watch);
+            resumed.Kind.Should().Be(WatchEventKind.Resumed);
+            resumed.Duration.Should().Be(retry + retry, "the outage began at the first failure and ended two retry intervals later");
+            resumed.Timestamp.Should().Be(outageAt + retry + retry);
+
+            WatchEvent hidden = await Next(watch);
+            hidden.Kind.Should().Be(WatchEventKind.Changed);
+            hidden.OldValue.Should().Be(PlcValue.FromWord(1), "the last value reported before the outage");
+            hidden.NewValue.Should().Be(PlcValue.FromWord(2));
+
+            pending = watch.MoveNextAsync();
+            await clock.NextTimerAsync();
+            plc.WriteWord(PlcArea.Dm, 100, 3);
+            clock.Advance(Second);
+            (await Completed(pending, watch)).NewValue.Should().Be(PlcValue.FromWord(3));
+        }
+        finally
+        {
+            await host.DisposeAsync();
+        }
+    }
+
+    [Fact]
+    public async Task A_value_that_does_not_decode_is_an_outage_not_an_end()
+    {
+        await using InProcessLine line = InProcessLine.Start();
+        line.Plc.WriteWord(PlcArea.Dm, 200, 0x00A1);
+        var clock = new SteppingClock();
+        await using IAsyncEnumerator<WatchEvent> watch = line.Client
+            .WatchAsync(new[] { PlcTag.Parse("D200:bcd") }, new WatchOptions { Interval = Second, RetryInterval = Second, TimeProvider = clock })
+            .GetAsyncEnumerator();
+
+        WatchEvent outage = await Next(watch);
+        outage.Kind.Should().Be(WatchEventKind.Outage);
+        outage.Exception.Should().BeOfType<FormatException>().Which.Message.Should().Contain("0x00A1 is not BCD");
+
+        ValueTask<bool> pending = watch.MoveNextAsync();
+        await clock.NextTimerAsync();
+        line.Plc.WriteWord(PlcArea.Dm, 200, 0x0421);
+        clock.Advance(Second);
+        (await Completed(pending, watch)).Kind.Should().Be(WatchEventKind.Resumed);
+        WatchEvent first = await Next(watch);
+        first.IsInitial.Should().BeTrue();
+        first.NewValue.Should().Be(PlcValue.FromBcd(421));
+    }
+
+    [Fact]
+    public async Task A_cycle_longer_than_the_interval_is_an_overrun_and_the_next_starts_at_once_without_a_backlog()
+    {
+        await using InProcessLine line = InProcessLine.Start();
+        var clock = new SteppingClock();
+        bool slow = false;
+        line.OnSend = () =>
+        {
+            if (slow)
+            {
+                slow = false;
+                clock.Advance(TimeSpan.FromSeconds(3.5));
+            }
+        };
+        await using IAsyncEnumerator<WatchEvent> watch = line.Client
+            .WatchAsync(new[] { PlcTag.Parse("D100") }, new WatchOptions { Interval = Second, TimeProvider = clock })
+            .GetAsyncEnumerator();
+        (await Next(watch)).IsInitial.Should().BeTrue();
+
+        ValueTask<bool> pending = watch.MoveNextAsync();
+        await clock.NextTimerAsync();
+        slow = true;
+        clock.Advance(Second);
+        WatchEvent overrun = await Completed(pending, watch);
+        overrun.Kind.Should().Be(WatchEventKind.Overrun);
+        overrun.Duration.Should().Be(TimeSpan.FromSeconds(3.5));
+        line.FramesSent.Should().Be(2);
+        int timers = clock.TimersCreated;
+
+        // The next cycle runs at once; after it the watch waits a whole interval: 3 missed cycles are not made up.
+        pending = watch.MoveNextAsync();
+        await clock.NextTimerAsync();
+        line.FramesSent.Should().Be(3);
+        clock.TimersCreated.Should().Be(timers + 1);
+        pending.IsCompleted.Should().BeFalse();
+        line.Plc.WriteWord(PlcArea.Dm, 100, 9);
+        clock.Advance(Second);
+        (await Completed(pending, watch)).NewValue.Should().Be(PlcValue.FromWord(9));
+        line.FramesSent.Should().Be(4);
+    }
+
+    [Fact]
+    public async Task Interval_zero_polls_back_to_back_without_waiting_on_the_clock()
+    {
+        await using InProcessLine line = InProcessLine.Start();
+        var clock = new SteppingClock();
+        await using IAsyncEnumerator<WatchEvent> watch = line.Client
+            .WatchAsync(new[] { PlcTag.Parse("D100") }, new WatchOptions { Interval = TimeSpan.Zero, TimeProvider = clock })
+            .GetAsyncEnumerator();
+        (await Next(watch)).IsInitial.Should().BeTrue();
+
+        ValueTask<bool> pending = watch.MoveNextAsync();
+        using var patience = new CancellationTokenSource(Patience);
+        while (line.FramesSent < 20)
+        {
+            await Task.Delay(10, patience.Token);
+        }
+
+        pending.IsCompleted.Should().BeFalse();
+        line.Plc.WriteWord(PlcArea.Dm, 100, 1);
+        WatchEvent change = await Completed(pending, watch);
+        change.NewValue.Should().Be(PlcValue.FromWord(1));
+        clock.TimersCreated.Should().Be(0);
+    }
+
+    [Fact]
+    public async Task Cancelling_ends_the_loop_with_OperationCanceledException_and_leaving_the_loop_ends_it_quietly()
+    {
+        await using InProcessLine line = InProcessLine.Start();
+        var clock = new SteppingClock();
+        var options = new WatchOptions { Interval = Second, TimeProvider = clock };
+        using var stop = new CancellationTokenSource();
+        var seen = new List<WatchEvent>();
+
+        Func<Task> watching = async () =>
+        {
+            await foreach (WatchEvent e in line.Client.WatchAsync(new[] { PlcTag.Parse("D100") }, options, stop.Token))
+            {
+                seen.Add(e);
+            }
+        };
+        Task run = watching();
+        await clock.NextTimerAsync();
+        stop.Cancel();
+        await run.Awaiting(t => t).Should().ThrowAsync<OperationCanceledException>();
+        seen.Should().ContainSingle().Which.IsInitial.Should().BeTrue();
+
+        int framesBefore = line.FramesSent;
+        await foreach (WatchEvent e in line.Client.WatchAsync(new[] { PlcTag.Parse("D100") }, options))
+        {
+            e.IsInitial.Should().BeTrue();
+            break;
+        }
+
+        line.FramesSent.Should().Be(framesBefore + 1);
+        (await line.Client.ReadAsync<ushort>("D100")).Should().Be(0, "the link is free after the watch ended");
+    }
+
+    [Fact]
+    public async Task Bad_arguments_are_refused_by_the_call_before_anything_is_sent()
+    {
+        await using InProcessLine line = InProcessLine.Start();
+        HostLinkUnit plc = line.Client;
+
+        FluentActions.Invoking(() => plc.WatchAsync(Array.Empty<PlcTag>(), Second)).Should().Throw<ArgumentException>().WithMessage("*at least one tag*");
+        FluentActions.Invoking(() => plc.WatchAsync(new[] { PlcTag.Parse("D0") }, TimeSpan.FromSeconds(-1))).Should().Throw<ArgumentOutOfRangeException>().WithParameterName("interval");
+        FluentActions.Invoking(() => plc.WatchAsync(new[] { PlcTag.Parse("D0") }, new WatchOptions { RetryInterval = TimeSpan.Zero })).Should().Throw<ArgumentOutOfRangeException>().WithParameterName("RetryInterval");
+        FluentActions.Invoking(() => plc.WatchAsync(new[] { PlcTag.Parse("W0") }, Second)).Should().Throw<ArgumentException>("C-mode cannot read the work area");
+
+        line.FramesSent.Should().Be(0);
+    }
+
+    private static async Task<WatchEvent> Next(IAsyncEnumerator<WatchEvent> watch)
+        => await Completed(watch.MoveNextAsync(), watch);
+
+    private static async Task<WatchEvent> Completed(ValueTask<bool> pending, IAsyncEnumerator<WatchEvent> watch)
+    {
+        bool more = await pending.AsTask().WaitAsync(Patience);
+        more.Should().BeTrue("a watch never ends by itself");
+        return watch.Current;
+    }
+}

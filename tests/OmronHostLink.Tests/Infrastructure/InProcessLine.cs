@@ -1,0 +1,54 @@
+using OmronHostLink.Link;
+using OmronHostLink.Simulator;
+using OmronHostLink.Simulator.Hosting;
+
+namespace OmronHostLink.Tests.Infrastructure;
+
+/// <summary>
+/// A simulated PLC and a client joined by an in-memory line. Counts the command frames the client sends, so a test
+/// can show that nothing was sent or how many transactions a call took.
+/// </summary>
+internal sealed class InProcessLine : IAsyncDisposable
+{
+    private readonly CancellationTokenSource _stop = new();
+    private readonly Task _session;
+    private int _sent;
+
+    private InProcessLine(VirtualPlc plc, HostLinkClientOptions options)
+    {
+        Plc = plc;
+        (Stream host, Stream plcEnd) = InMemoryLink.CreatePair();
+        _session = plc.RunAsync(plcEnd, _stop.Token);
+        options.LineTiming ??= new LineTiming(115200, 11);
+        Client = HostLinkClient.ForStream(host, options);
+        Client.FrameObserver = (sent, _) =>
+        {
+            if (sent)
+            {
+                Interlocked.Increment(ref _sent);
+                OnSend?.Invoke();
+            }
+        };
+    }
+
+    public VirtualPlc Plc { get; }
+
+    public HostLinkClient Client { get; }
+
+    /// <summary>Called on the client's side as each frame is sent (for example to move a fake clock mid-exchange).</summary>
+    public Action? OnSend { get; set; }
+
+    /// <summary>Frames the client has sent.</summary>
+    public int FramesSent => Volatile.Read(ref _sent);
+
+    public static InProcessLine Start(HostLinkClientOptions? options = null, VirtualPlcOptions? plcOptions = null)
+        => new(new VirtualPlc(plcOptions), options ?? new HostLinkClientOptions { LineTiming = new LineTiming(115200, 11) });
+
+    public async ValueTask DisposeAsync()
+    {
+        await Client.DisposeAsync();
+        _stop.Cancel();
+        await _session;
+        _stop.Dispose();
+    }
+}
