@@ -60,7 +60,7 @@ internal static class FrameExplainer
 
         x.FcsExpected = check.ExpectedFcs.ToString("X2", CultureInfo.InvariantCulture);
         x.FcsFound = Encoding.ASCII.GetString(frame, check.FcsAt, 2);
-        if (check.FcsFault(frame) is { } fcs)
+        if (FcsFault(check, frame, x.FcsFound) is { } fcs)
         {
             x.Problems.Add(fcs);
         }
@@ -106,6 +106,18 @@ internal static class FrameExplainer
         }
 
         return x;
+    }
+
+    /// <summary>
+    /// The FCS problem, if any. An FCS that is right but in lower case is named as such: Omron sends it in upper case
+    /// and the library's link compares it character for character, so it refuses one as it refuses any changed character.
+    /// </summary>
+    private static string? FcsFault(FrameCheck check, byte[] frame, string found)
+    {
+        string expected = check.ExpectedFcs.ToString("X2", CultureInfo.InvariantCulture);
+        return FrameExplanation.IsLowercaseOf(found, expected)
+            ? $"FCS '{found}' is a lowercase FCS: the right value, in lower case. Host Link sends the FCS in upper case ('{expected}'); this library's link refuses a lowercase FCS as it refuses any changed character."
+            : check.FcsFault(frame);
     }
 
     /// <summary>The frame with its ending: a frame typed without <c>*</c> or CR is read as a complete (final) frame.</summary>

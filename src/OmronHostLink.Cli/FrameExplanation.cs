@@ -25,7 +25,9 @@ internal sealed class FrameExplanation
     public string? EndCodeMeaning { get; set; }
 
     /// <summary>The FCS found and expected; null when the frame has no room for one.</summary>
-    public FcsExplanation? Fcs => FcsFound is null ? null : new(FcsExpected!, FcsFound, string.Equals(FcsFound, FcsExpected, StringComparison.Ordinal));
+    public FcsExplanation? Fcs => FcsFound is null
+        ? null
+        : new(FcsExpected!, FcsFound, string.Equals(FcsFound, FcsExpected, StringComparison.Ordinal), IsLowercaseOf(FcsFound, FcsExpected!));
 
     /// <summary>True for a frame that ends with <c>*</c>CR (or is read as one); false for a non-final frame.</summary>
     public bool Final { get; set; } = true;
@@ -52,7 +54,11 @@ internal sealed class FrameExplanation
     public string? FcsFound { get; set; }
 
     public void Field(string name, object? value) => Fields.Add(name, value);
+
+    /// <summary>Whether <paramref name="found"/> differs from <paramref name="expected"/> (upper case) only in letter case.</summary>
+    public static bool IsLowercaseOf(string found, string expected)
+        => !string.Equals(found, expected, StringComparison.Ordinal) && string.Equals(found, expected, StringComparison.OrdinalIgnoreCase);
 }
 
-/// <summary>The FCS of an explained frame.</summary>
-internal sealed record FcsExplanation(string Expected, string Found, bool Ok);
+/// <summary>The FCS of an explained frame; <see cref="Lowercase"/> when it is right but written in lower case.</summary>
+internal sealed record FcsExplanation(string Expected, string Found, bool Ok, bool Lowercase);

@@ -57,7 +57,7 @@ internal static class ExplainCommand
 
         if (x.Fcs is { } fcs)
         {
-            w.WriteLine($"FCS:        found {fcs.Found}, expected {fcs.Expected}: {(fcs.Ok ? "OK" : "MISMATCH")}");
+            w.WriteLine($"FCS:        found {fcs.Found}, expected {fcs.Expected}: {(fcs.Ok ? "OK" : fcs.Lowercase ? "lowercase FCS (Host Link sends it in upper case)" : "MISMATCH")}");
         }
 
         w.WriteLine($"Ending:     {(x.Final ? "*CR (final frame)" : "CR (more frames follow)")}");

@@ -149,4 +149,32 @@ public sealed class CliExplainTests
         j.GetProperty("fields").GetProperty("responseCode").GetString().Should().Be("1103");
         j.GetProperty("fields").GetProperty("command").GetString().Should().Be("0101");
     }
+
+    [Fact]
+    public async Task Explain_calls_an_fcs_that_differs_only_in_case_a_lowercase_fcs()
+    {
+        string frame = GoldenFrames.Frames("c_ic_resp")[0]; // @00IC4A*
+        string lower = frame.Replace("4A*", "4a*", StringComparison.Ordinal);
+
+        CliResult human = await Cli.RunAsync("explain", lower, "--response");
+        CliResult json = await Cli.RunAsync("explain", lower, "--response", "--json");
+
+        human.ExitCode.Should().Be(2, "the link refuses a lowercase FCS as it refuses any changed character: {0}", human);
+        human.Out.Should().Contain("lowercase FCS").And.NotContain("MISMATCH");
+        human.Err.Should().Contain("lowercase FCS").And.Contain("4a").And.NotContain("FCS error");
+        JsonElement fcs = json.Json().GetProperty("fcs");
+        fcs.GetProperty("ok").GetBoolean().Should().BeFalse();
+        fcs.GetProperty("lowercase").GetBoolean().Should().BeTrue();
+    }
+
+    [Fact]
+    public async Task Explain_still_calls_a_wrong_lowercase_fcs_wrong()
+    {
+        string frame = GoldenFrames.Frames("c_ic_resp")[0].Replace("4A*", "4b*", StringComparison.Ordinal);
+
+        CliResult r = await Cli.RunAsync("explain", frame, "--response");
+
+        r.ExitCode.Should().Be(2, r.ToString());
+        r.Out.Should().Contain("MISMATCH").And.NotContain("lowercase");
+    }
 }
