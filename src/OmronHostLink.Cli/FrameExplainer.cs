@@ -37,12 +37,25 @@ internal static class FrameExplainer
         return bytes;
     }
 
-    public static FrameExplanation Explain(string input, bool response)
+    /// <summary>Explains one frame.</summary>
+    /// <param name="input">The frame as the user typed it.</param>
+    /// <param name="response">True for an answer, false for a command, null to tell from the frame where it can.</param>
+    public static FrameExplanation Explain(string input, bool? response)
     {
         byte[] typed = Normalise(input);
-        var x = new FrameExplanation { Frame = FrameText.Printable(typed), IsResponse = response };
+        var x = new FrameExplanation
+        {
+            Frame = FrameText.Printable(typed),
+            IsResponse = response ?? false,
+            DirectionFrom = response is null ? FrameExplanation.FromDefault : FrameExplanation.FromOption,
+        };
         if (typed.AsSpan().SequenceEqual(CModeFrames.Initialize) || typed.AsSpan().SequenceEqual(CModeFrames.Initialize[..^1]))
         {
+            if (response is null)
+            {
+                x.DirectionFrom = FrameExplanation.FromShape;
+            }
+
             x.Header = CModeHeaders.Initialize;
             x.Name = CModeHeaders.Name(CModeHeaders.Initialize);
             x.Notes.Add("INITIALIZE carries no unit number and no FCS; no unit answers it.");
@@ -69,6 +82,12 @@ internal static class FrameExplainer
         {
             x.Text = Encoding.ASCII.GetString(frame, 0, check.FcsAt);
             x.Notes.Add("No '@': a continuation frame (its FCS covers this frame only); unit and header are in the first frame.");
+            if (response is null)
+            {
+                x.Notes.Add("A continuation frame does not show which way it goes: explained as a frame of a command; give --response for a frame of an answer.");
+            }
+
+            CheckLength(x, frame.Length, first: false, fins: false);
             return x;
         }
 
@@ -89,7 +108,13 @@ internal static class FrameExplainer
         x.Header = header;
         x.Name = CModeHeaders.Name(header);
         x.Text = Encoding.ASCII.GetString(text);
-        switch ((header == CModeHeaders.Fins, response))
+        if (response is null)
+        {
+            Recognise(x, header, text);
+        }
+
+        CheckLength(x, frame.Length, first: true, fins: header == CModeHeaders.Fins);
+        switch ((header == CModeHeaders.Fins, x.IsResponse))
         {
             case (true, true):
                 ExplainFinsResponse(x, text, check.Unit);
@@ -106,6 +131,198 @@ internal static class FrameExplainer
         }
 
         return x;
+    }
+
+    /// <summary>
+    /// Tells an answer from a command by its shape, for a first frame typed without <c>--response</c> or
+    /// <c>--command</c>. A frame that is a well-formed answer and not a well-formed command is an answer; one that is
+    /// both (<c>@00SC0050*</c>: SC to PROGRAM, and SC's normal completion; a TS echo) is ambiguous and explained as a
+    /// command; one that is neither is explained as a command.
+    /// </summary>
+    private static void Recognise(FrameExplanation x, string header, ReadOnlySpan<byte> text)
+    {
+        bool fins = header == CModeHeaders.Fins;
+        string? commandFault = fins ? FinsCommandFault(text) : CModeCommandFault(header, text, x.Final);
+        bool answer = fins ? IsFinsAnswer(text, x.Final) : IsCModeAnswer(header, text, x.Final);
+        if (answer && commandFault is not null)
+        {
+            x.IsResponse = true;
+            x.DirectionFrom = FrameExplanation.FromShape;
+            x.Notes.Add($"Recognised as an answer by its shape: as a command, {commandFault}. Give --command to explain it as a command.");
+        }
+        else if (answer)
+        {
+            x.DirectionFrom = FrameExplanation.FromAmbiguous;
+            string answerIs = header == CModeHeaders.Test ? "the PLC's echo of it" : $"an answer with end code {Encoding.ASCII.GetString(text[..CModeResponse.EndCodeLength])}";
+            x.Notes.Add($"This frame is ambiguous: the same characters are a well-formed {header} command and {answerIs}. Explained as a command; give --response to explain it as the answer.");
+        }
+        else if (commandFault is null)
+        {
+            x.DirectionFrom = FrameExplanation.FromShape;
+        }
+        else
+        {
+            x.Notes.Add("Neither a well-formed command nor a well-formed answer: explained as a command; give --response to explain it as an answer.");
+        }
+    }
+
+    /// <summary>Why the frame is not a command a PLC would take, or null when it is one (or may be the first frame of a divided write).</summary>
+    private static string? CModeCommandFault(string header, ReadOnlySpan<byte> text, bool final)
+    {
+        byte[] h = Encoding.ASCII.GetBytes(header);
+        if (!final)
+        {
+            // Only writes are divided into frames by the host.
+            return CModeAreaInfo.TryFromHeader(h, out _, out bool write) && write ? null : $"{header} is never divided into frames by the host";
+        }
+
+        try
+        {
+            CModeCommand.Parse(h, text);
+            return null;
+        }
+        catch (CModeCommandRejectedException e)
+        {
+            return $"a PLC would refuse it with end code {e.EndCode.ToCode()} ({e.Message.TrimEnd('.')})";
+        }
+    }
+
+    /// <summary>
+    /// Whether the frame is a well-formed C-mode answer: an end code the manuals define, no data after an error end
+    /// code, and data of the shape the header's answer has (checked with the same decoders as <c>--response</c>).
+    /// </summary>
+    private static bool IsCModeAnswer(string header, ReadOnlySpan<byte> text, bool final)
+    {
+        switch (header)
+        {
+            case CModeHeaders.Test:
+                return true;
+            case CModeHeaders.UndefinedCommand:
+                return final && text.IsEmpty;
+            case CModeHeaders.Txd:
+                return final;
+            case CModeHeaders.Abort:
+                return false;
+        }
+
+        if (!CModeHeaders.IsExecutable(Encoding.ASCII.GetBytes(header))
+            || text.Length < CModeResponse.EndCodeLength
+            || !EndCodes.TryParse(text[..CModeResponse.EndCodeLength], out EndCode code)
+            || code == EndCode.UndefinedHeader
+            || !EndCodes.IsDefined(code))
+        {
+            return false;
+        }
+
+        ReadOnlySpan<byte> data = text[CModeResponse.EndCodeLength..];
+        bool read = CModeAreaInfo.TryFromHeader(Encoding.ASCII.GetBytes(header), out _, out bool write) && !write;
+        if (code != EndCode.NormalCompletion || !(read || header is CModeHeaders.StatusRead or CModeHeaders.ErrorRead or CModeHeaders.ModelRead))
+        {
+            // Error answers, and the answers to writes, SC and the force commands, end with the end code.
+            return final && data.IsEmpty;
+        }
+
+        var scratch = new FrameExplanation { Frame = string.Empty, Final = final };
+        try
+        {
+            DecodeData(scratch, header, data);
+        }
+        catch (HostLinkFrameException)
+        {
+            return false;
+        }
+
+        return scratch.Problems.Count == 0;
+    }
+
+    /// <summary>Why the text is not an FA command, or null when it is one.</summary>
+    private static string? FinsCommandFault(ReadOnlySpan<byte> text)
+    {
+        try
+        {
+            FinsMessage.ParseCommand(text, 0);
+            return null;
+        }
+        catch (HostLinkFrameException e)
+        {
+            return $"it is malformed ({Sentence(e).TrimEnd('.')})";
+        }
+    }
+
+    /// <summary>Whether the text is an FA answer: a Host Link end code alone, or 00 and a FINS part whose ICF marks a response.</summary>
+    private static bool IsFinsAnswer(ReadOnlySpan<byte> text, bool final)
+    {
+        if (!final || text.Length < CModeResponse.EndCodeLength || !EndCodes.TryParse(text[..CModeResponse.EndCodeLength], out EndCode code) || !EndCodes.IsDefined(code))
+        {
+            return false;
+        }
+
+        if (code != EndCode.NormalCompletion)
+        {
+            return text.Length == CModeResponse.EndCodeLength;
+        }
+
+        try
+        {
+            FinsResponse.Parse(text, 0);
+            return true;
+        }
+        catch (HostLinkException)
+        {
+            return false;
+        }
+    }
+
+    /// <summary>
+    /// A frame longer than Host Link allows: a PLC answers end code 18 to a first or single C-mode frame over 131
+    /// characters and A8 to a later frame over 128 (the FCS, <c>*</c> and CR counted), and never sends one itself.
+    /// An FA frame is never divided and may hold up to 1,115 characters.
+    /// </summary>
+    private static void CheckLength(FrameExplanation x, int length, bool first, bool fins)
+    {
+        int limit = fins ? FinsMessage.MaxFrameLength : first ? FrameWriter.MaxFirstFrameLength : FrameWriter.MaxContinuationFrameLength;
+        if (length <= limit)
+        {
+            return;
+        }
+
+        string frame = fins ? "an FA frame" : first ? "a frame" : "a later frame of a divided message";
+        string characters = $"The frame is {length} characters long (FCS, '*' and CR counted)";
+        if (x.IsResponse)
+        {
+            x.Problems.Insert(0, $"{characters}; a PLC never sends {frame} over {limit} characters (it divides a longer answer into frames).");
+            return;
+        }
+
+        if (fins)
+        {
+            x.Problems.Insert(0, $"{characters}; {frame} holds at most {limit}.");
+            return;
+        }
+
+        EndCode code = first ? EndCode.FrameLengthError : EndCode.AbortedFrameLengthError;
+        string name = first ? "frame length error" : "aborted: frame length error in a later frame";
+        WouldAnswer(x, code);
+        x.Problems.Insert(0, $"{characters}: a PLC answers end code {code.ToCode()} ({name}) to {frame} over {limit} characters.");
+    }
+
+    /// <summary>The exception's sentence without the frame it quotes (the explanation shows the frame).</summary>
+    private static string Sentence(HostLinkFrameException e)
+        => e.Frame is { } frame && e.Message.EndsWith($" Frame: {frame}", StringComparison.Ordinal)
+            ? e.Message[..^($" Frame: {frame}".Length)]
+            : e.Message;
+
+    /// <summary>Records the end code a CS/CJ would answer; the first error a PLC detects is the one it answers.</summary>
+    private static bool WouldAnswer(FrameExplanation x, EndCode code)
+    {
+        if (x.Fields.ContainsKey("wouldAnswer"))
+        {
+            return false;
+        }
+
+        x.Field("wouldAnswer", code.ToCode());
+        x.Field("wouldAnswerMeaning", code.Meaning());
+        return true;
     }
 
     /// <summary>
@@ -163,9 +380,9 @@ internal static class FrameExplainer
         }
         catch (CModeCommandRejectedException e)
         {
-            x.Field("wouldAnswer", e.EndCode.ToCode());
-            x.Field("wouldAnswerMeaning", e.EndCode.Meaning());
-            x.Notes.Add($"A CS/CJ PLC would refuse this command with end code {e.EndCode.ToCode()}: {e.Message}");
+            x.Notes.Add(WouldAnswer(x, e.EndCode)
+                ? $"A CS/CJ PLC would refuse this command with end code {e.EndCode.ToCode()}: {e.Message}"
+                : $"Within the length a PLC takes, it would still refuse this command with end code {e.EndCode.ToCode()}: {e.Message}");
             return;
         }
 
@@ -260,7 +477,7 @@ internal static class FrameExplainer
         }
         catch (HostLinkFrameException e)
         {
-            x.Problems.Add(e.Message);
+            x.Problems.Add(Sentence(e));
         }
     }
 
@@ -331,7 +548,7 @@ internal static class FrameExplainer
         }
         catch (HostLinkFrameException e)
         {
-            x.Problems.Add(e.Message);
+            x.Problems.Add(Sentence(e));
             return;
         }
 
@@ -360,7 +577,7 @@ internal static class FrameExplainer
         }
         catch (HostLinkFrameException e)
         {
-            x.Problems.Add(e.Message);
+            x.Problems.Add(Sentence(e));
             return;
         }
 

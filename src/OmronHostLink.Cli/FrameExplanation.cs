@@ -8,11 +8,26 @@ namespace OmronHostLink.Cli;
 /// </summary>
 internal sealed class FrameExplanation
 {
+    /// <summary><see cref="DirectionFrom"/>: the user said which way the frame goes.</summary>
+    public const string FromOption = "option";
+
+    /// <summary><see cref="DirectionFrom"/>: the frame can only go one way.</summary>
+    public const string FromShape = "shape";
+
+    /// <summary><see cref="DirectionFrom"/>: the frame is well-formed both ways; explained as a command.</summary>
+    public const string FromAmbiguous = "ambiguous";
+
+    /// <summary><see cref="DirectionFrom"/>: nothing tells; explained as a command.</summary>
+    public const string FromDefault = "default";
+
     public bool Valid => Problems.Count == 0;
 
     public required string Frame { get; init; }
 
     public string Direction => IsResponse ? "response" : "command";
+
+    /// <summary>How the direction was decided: <see cref="FromOption"/>, <see cref="FromShape"/>, <see cref="FromAmbiguous"/> or <see cref="FromDefault"/>.</summary>
+    public string DirectionFrom { get; set; } = FromOption;
 
     public int? Unit { get; set; }
 
@@ -45,7 +60,7 @@ internal sealed class FrameExplanation
     public List<string> Problems { get; } = [];
 
     [JsonIgnore]
-    public bool IsResponse { get; init; }
+    public bool IsResponse { get; set; }
 
     [JsonIgnore]
     public string? FcsExpected { get; set; }

@@ -177,4 +177,68 @@ public sealed class CliExplainTests
         r.ExitCode.Should().Be(2, r.ToString());
         r.Out.Should().Contain("MISMATCH").And.NotContain("lowercase");
     }
+
+    [Fact]
+    public async Task Explain_reports_a_frame_over_131_characters_as_end_code_18()
+    {
+        // 30 words of WD: 9 + 120 + FCS + '*' + CR = 133 characters; a CS/CJ answers 18 (frame length error).
+        string frame = Framed("@00WD0000" + string.Concat(Enumerable.Repeat("1234", 30)));
+
+        CliResult r = await Cli.RunAsync("explain", frame, "--json");
+
+        r.ExitCode.Should().Be(2, r.ToString());
+        JsonElement j = r.Json();
+        j.GetProperty("fields").GetProperty("wouldAnswer").GetString().Should().Be("18");
+        string problem = j.GetProperty("problems")[0].GetString()!;
+        problem.Should().Contain("133").And.Contain("131").And.Contain("end code 18").And.Contain("frame length error");
+        r.Err.Should().Contain("end code 18");
+    }
+
+    [Fact]
+    public async Task Explain_takes_a_frame_of_exactly_131_characters()
+    {
+        // 29 words of WD: 9 + 116 + FCS + '*' + CR = 131 characters.
+        string frame = Framed("@00WD0000" + string.Concat(Enumerable.Repeat("1234", 29)));
+
+        CliResult r = await Cli.RunAsync("explain", frame, "--json");
+
+        r.ExitCode.Should().Be(0, r.ToString());
+        r.Json().GetProperty("problems").GetArrayLength().Should().Be(0);
+    }
+
+    [Fact]
+    public async Task Explain_reports_an_answer_over_131_characters_as_one_no_plc_sends()
+    {
+        // An RD answer of 31 words in one frame: 7 + 124 + FCS + '*' + CR = 135 characters.
+        string frame = Framed("@00RD00" + string.Concat(Enumerable.Repeat("ABCD", 31)));
+
+        JsonElement j = (await Cli.RunAsync("explain", frame, "--response", "--json")).Json();
+
+        j.GetProperty("valid").GetBoolean().Should().BeFalse();
+        j.GetProperty("problems")[0].GetString().Should().Contain("135").And.Contain("131");
+    }
+
+    [Fact]
+    public async Task Explain_reports_a_later_frame_over_128_characters_as_end_code_A8()
+    {
+        // A continuation frame of 32 words: 128 + FCS + '*' + CR = 132 characters; a later frame holds at most 128.
+        string frame = Framed(string.Concat(Enumerable.Repeat("0F0F", 32)));
+
+        JsonElement j = (await Cli.RunAsync("explain", frame, "--json")).Json();
+
+        j.GetProperty("fields").GetProperty("wouldAnswer").GetString().Should().Be("A8");
+        j.GetProperty("problems")[0].GetString().Should().Contain("128").And.Contain("A8");
+    }
+
+    /// <summary>The text with its FCS (XOR of every character, two upper-case hex digits) and <c>*</c>.</summary>
+    internal static string Framed(string text)
+    {
+        int fcs = 0;
+        foreach (char c in text)
+        {
+            fcs ^= c;
+        }
+
+        return $"{text}{fcs:X2}*";
+    }
 }
