@@ -555,6 +555,20 @@ internal static class FrameExplainer
         x.Field("responseWaitMs", (long)message.Header.ResponseWaitTime.TotalMilliseconds);
         FinsFields(x, message.Header, message.CommandCode);
         x.Field("parameters", Hex(message.Parameters.Span));
+        FinsCommand command;
+        try
+        {
+            command = message.ToCommand();
+        }
+        catch (FinsFormatException e)
+        {
+            x.Field("wouldAnswer", e.EndCode.ToString());
+            x.Field("wouldAnswerMeaning", e.EndCode.Meaning);
+            x.Notes.Add($"A CS/CJ PLC would answer this command with FINS response code {e.EndCode}: {e.Message}");
+            return;
+        }
+
+        FinsExplainFields.AddParameters(x, command);
     }
 
     private static void ExplainFinsResponse(FrameExplanation x, ReadOnlySpan<byte> text, int unit)
@@ -588,6 +602,17 @@ internal static class FrameExplainer
         x.Field("fatalCpuError", response.EndCode.FatalCpuError);
         x.Field("nonFatalCpuError", response.EndCode.NonFatalCpuError);
         x.Field("data", Hex(response.Data.Span));
+        if (response.EndCode.IsSuccess)
+        {
+            try
+            {
+                FinsExplainFields.AddAnswerData(x, response.CommandCode, response.Data.Span);
+            }
+            catch (HostLinkFrameException e)
+            {
+                x.Problems.Add(Sentence(e));
+            }
+        }
     }
 
     /// <summary>The Host Link end code at the start of an answer's text, recorded; false (with the problem) when there is none.</summary>

@@ -52,7 +52,7 @@ internal sealed class FrameExplanation
     /// <summary>The data after the end code of an answer (written for answers only).</summary>
     public string? Data { get; set; }
 
-    /// <summary>Decoded fields in order; values are string, long, bool, string[], long[], bool[] or null.</summary>
+    /// <summary>Decoded fields in order; values are string, long, bool, string[], long[], bool[], <see cref="FinsAddressField"/>, <see cref="FinsAddressField"/>[] or null.</summary>
     public OrderedDictionary<string, object?> Fields { get; } = [];
 
     public List<string> Notes { get; } = [];

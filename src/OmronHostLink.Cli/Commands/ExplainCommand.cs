@@ -102,6 +102,7 @@ internal static class ExplainCommand
         long[] ls => string.Join(" ", ls.Select(l => $"0x{l:X4}({l})")),
         bool[] bs => string.Join(" ", bs.Select(b => b ? "1" : "0")),
         string[] ss => string.Join(" ", ss),
+        FinsAddressField[] items => string.Join(", ", items.Select(i => i.ToString())),
         string s when s.Length == 0 => "(empty)",
         _ => Convert.ToString(value, CultureInfo.InvariantCulture) ?? string.Empty,
     };

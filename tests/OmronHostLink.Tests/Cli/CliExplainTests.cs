@@ -241,4 +241,16 @@ public sealed class CliExplainTests
 
         return $"{text}{fcs:X2}*";
     }
+
+    [Fact]
+    public async Task Explain_holds_fa_frames_to_their_own_limit_not_131()
+    {
+        // FINS 0102 writing 60 words to D0: an FA frame of 274 characters, within the 1,115 an FA frame may hold.
+        string frame = Framed("@00FA000000000010282000000003C" + string.Concat(Enumerable.Repeat("1234", 60)));
+
+        CliResult r = await Cli.RunAsync("explain", frame, "--json");
+
+        r.ExitCode.Should().Be(0, r.ToString());
+        r.Json().GetProperty("fields").GetProperty("count").GetInt32().Should().Be(60);
+    }
 }
