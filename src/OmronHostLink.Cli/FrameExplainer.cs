@@ -9,7 +9,8 @@ namespace OmronHostLink.Cli;
 /// <summary>
 /// Decodes captured frames without a PLC, with the library's own parsers: <see cref="FrameCheck"/> for shape, FCS and
 /// unit, <see cref="CModeHeaders"/> for header names, <see cref="CModeCommand.Parse"/> and <see cref="CModeResponse"/>
-/// for C-mode fields, <see cref="FinsMessage"/> and <see cref="FinsResponse"/> for FINS.
+/// for C-mode fields, <see cref="FinsMessage"/> and <see cref="FinsResponse"/> for FINS (parameters and answer data in
+/// <see cref="FinsExplainFields"/>). Without a direction from the user, <see cref="FrameDirection"/> tells it.
 /// </summary>
 internal static class FrameExplainer
 {
@@ -110,7 +111,7 @@ internal static class FrameExplainer
         x.Text = Encoding.ASCII.GetString(text);
         if (response is null)
         {
-            Recognise(x, header, text);
+            FrameDirection.Recognise(x, header, text);
         }
 
         CheckLength(x, frame.Length, first: true, fins: header == CModeHeaders.Fins);
@@ -131,146 +132,6 @@ internal static class FrameExplainer
         }
 
         return x;
-    }
-
-    /// <summary>
-    /// Tells an answer from a command by its shape, for a first frame typed without <c>--response</c> or
-    /// <c>--command</c>. A frame that is a well-formed answer and not a well-formed command is an answer; one that is
-    /// both (<c>@00SC0050*</c>: SC to PROGRAM, and SC's normal completion; a TS echo) is ambiguous and explained as a
-    /// command; one that is neither is explained as a command.
-    /// </summary>
-    private static void Recognise(FrameExplanation x, string header, ReadOnlySpan<byte> text)
-    {
-        bool fins = header == CModeHeaders.Fins;
-        string? commandFault = fins ? FinsCommandFault(text) : CModeCommandFault(header, text, x.Final);
-        bool answer = fins ? IsFinsAnswer(text, x.Final) : IsCModeAnswer(header, text, x.Final);
-        if (answer && commandFault is not null)
-        {
-            x.IsResponse = true;
-            x.DirectionFrom = FrameExplanation.FromShape;
-            x.Notes.Add($"Recognised as an answer by its shape: as a command, {commandFault}. Give --command to explain it as a command.");
-        }
-        else if (answer)
-        {
-            x.DirectionFrom = FrameExplanation.FromAmbiguous;
-            string answerIs = header == CModeHeaders.Test ? "the PLC's echo of it" : $"an answer with end code {Encoding.ASCII.GetString(text[..CModeResponse.EndCodeLength])}";
-            x.Notes.Add($"This frame is ambiguous: the same characters are a well-formed {header} command and {answerIs}. Explained as a command; give --response to explain it as the answer.");
-        }
-        else if (commandFault is null)
-        {
-            x.DirectionFrom = FrameExplanation.FromShape;
-        }
-        else
-        {
-            x.Notes.Add("Neither a well-formed command nor a well-formed answer: explained as a command; give --response to explain it as an answer.");
-        }
-    }
-
-    /// <summary>Why the frame is not a command a PLC would take, or null when it is one (or may be the first frame of a divided write).</summary>
-    private static string? CModeCommandFault(string header, ReadOnlySpan<byte> text, bool final)
-    {
-        byte[] h = Encoding.ASCII.GetBytes(header);
-        if (!final)
-        {
-            // Only writes are divided into frames by the host.
-            return CModeAreaInfo.TryFromHeader(h, out _, out bool write) && write ? null : $"{header} is never divided into frames by the host";
-        }
-
-        try
-        {
-            CModeCommand.Parse(h, text);
-            return null;
-        }
-        catch (CModeCommandRejectedException e)
-        {
-            return $"a PLC would refuse it with end code {e.EndCode.ToCode()} ({e.Message.TrimEnd('.')})";
-        }
-    }
-
-    /// <summary>
-    /// Whether the frame is a well-formed C-mode answer: an end code the manuals define, no data after an error end
-    /// code, and data of the shape the header's answer has (checked with the same decoders as <c>--response</c>).
-    /// </summary>
-    private static bool IsCModeAnswer(string header, ReadOnlySpan<byte> text, bool final)
-    {
-        switch (header)
-        {
-            case CModeHeaders.Test:
-                return true;
-            case CModeHeaders.UndefinedCommand:
-                return final && text.IsEmpty;
-            case CModeHeaders.Txd:
-                return final;
-            case CModeHeaders.Abort:
-                return false;
-        }
-
-        if (!CModeHeaders.IsExecutable(Encoding.ASCII.GetBytes(header))
-            || text.Length < CModeResponse.EndCodeLength
-            || !EndCodes.TryParse(text[..CModeResponse.EndCodeLength], out EndCode code)
-            || code == EndCode.UndefinedHeader
-            || !EndCodes.IsDefined(code))
-        {
-            return false;
-        }
-
-        ReadOnlySpan<byte> data = text[CModeResponse.EndCodeLength..];
-        bool read = CModeAreaInfo.TryFromHeader(Encoding.ASCII.GetBytes(header), out _, out bool write) && !write;
-        if (code != EndCode.NormalCompletion || !(read || header is CModeHeaders.StatusRead or CModeHeaders.ErrorRead or CModeHeaders.ModelRead))
-        {
-            // Error answers, and the answers to writes, SC and the force commands, end with the end code.
-            return final && data.IsEmpty;
-        }
-
-        var scratch = new FrameExplanation { Frame = string.Empty, Final = final };
-        try
-        {
-            DecodeData(scratch, header, data);
-        }
-        catch (HostLinkFrameException)
-        {
-            return false;
-        }
-
-        return scratch.Problems.Count == 0;
-    }
-
-    /// <summary>Why the text is not an FA command, or null when it is one.</summary>
-    private static string? FinsCommandFault(ReadOnlySpan<byte> text)
-    {
-        try
-        {
-            FinsMessage.ParseCommand(text, 0);
-            return null;
-        }
-        catch (HostLinkFrameException e)
-        {
-            return $"it is malformed ({Sentence(e).TrimEnd('.')})";
-        }
-    }
-
-    /// <summary>Whether the text is an FA answer: a Host Link end code alone, or 00 and a FINS part whose ICF marks a response.</summary>
-    private static bool IsFinsAnswer(ReadOnlySpan<byte> text, bool final)
-    {
-        if (!final || text.Length < CModeResponse.EndCodeLength || !EndCodes.TryParse(text[..CModeResponse.EndCodeLength], out EndCode code) || !EndCodes.IsDefined(code))
-        {
-            return false;
-        }
-
-        if (code != EndCode.NormalCompletion)
-        {
-            return text.Length == CModeResponse.EndCodeLength;
-        }
-
-        try
-        {
-            FinsResponse.Parse(text, 0);
-            return true;
-        }
-        catch (HostLinkException)
-        {
-            return false;
-        }
     }
 
     /// <summary>
@@ -307,7 +168,7 @@ internal static class FrameExplainer
     }
 
     /// <summary>The exception's sentence without the frame it quotes (the explanation shows the frame).</summary>
-    private static string Sentence(HostLinkFrameException e)
+    internal static string Sentence(HostLinkFrameException e)
         => e.Frame is { } frame && e.Message.EndsWith($" Frame: {frame}", StringComparison.Ordinal)
             ? e.Message[..^($" Frame: {frame}".Length)]
             : e.Message;
@@ -481,7 +342,9 @@ internal static class FrameExplainer
         }
     }
 
-    private static void DecodeData(FrameExplanation x, string header, ReadOnlySpan<byte> data)
+    /// <summary>Decodes the data of a normal-completion C-mode answer into fields.</summary>
+    /// <exception cref="HostLinkFrameException">The data does not have the shape of the header's answer.</exception>
+    internal static void DecodeData(FrameExplanation x, string header, ReadOnlySpan<byte> data)
     {
         if (CModeAreaInfo.TryFromHeader(Encoding.ASCII.GetBytes(header), out CModeArea area, out bool write) && !write)
         {

@@ -141,4 +141,17 @@ public sealed class CliExplainDirectionTests
         j.GetProperty("directionFrom").GetString().Should().Be("default");
         j.GetProperty("notes").EnumerateArray().Select(n => n.GetString()).Should().Contain(n => n!.Contains("--response"));
     }
+
+    [Fact]
+    public async Task A_ts_frame_ending_with_a_bare_cr_is_neither_a_command_nor_an_echo()
+    {
+        // TS is never divided, either way: a TS frame ending with CR and no '*' fits neither direction.
+        string frame = CliExplainTests.Framed("@00TSABC").TrimEnd('*') + "\\r";
+
+        JsonElement j = (await Cli.RunAsync("explain", frame, "--json")).Json();
+
+        j.GetProperty("final").GetBoolean().Should().BeFalse();
+        j.GetProperty("direction").GetString().Should().Be("command");
+        j.GetProperty("directionFrom").GetString().Should().Be("default");
+    }
 }
