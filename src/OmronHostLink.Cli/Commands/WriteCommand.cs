@@ -143,6 +143,9 @@ internal static class WriteCommand
         PlcValueType.Float => float.TryParse(v, NumberStyles.Float, CultureInfo.InvariantCulture, out float f) && float.IsFinite(f)
             ? PlcValue.FromSingle(f)
             : throw new UsageException($"The float value '{v}' is not a finite number such as 1.5 or -2e3."),
+        PlcValueType.Double => double.TryParse(v, NumberStyles.Float, CultureInfo.InvariantCulture, out double d) && double.IsFinite(d)
+            ? PlcValue.FromDouble(d)
+            : throw new UsageException($"The double value '{v}' is not a finite number such as 1.5 or -2e3."),
         _ => throw new UsageException($"--as {kind.Name()} values cannot be written as words."),
     };
 
