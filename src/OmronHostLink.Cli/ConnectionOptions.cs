@@ -21,7 +21,7 @@ internal sealed class ConnectionOptions
         StopBits.AcceptOnlyFromAmong("1", "2");
         Tcp = new Option<string?>("--tcp") { Description = "A serial device server or the simulator, as host:port.", HelpName = "host:port" };
         Unit = new Option<int>("--unit") { Description = "The PLC's unit number, 0-31.", DefaultValueFactory = _ => 0, HelpName = "0-31" };
-        Timeout = new Option<int?>("--timeout") { Description = "Milliseconds the PLC may take to start answering a frame (the wire time is added).", HelpName = "ms" };
+        Timeout = Durations.Option("--timeout", "Time the PLC may take to start answering a frame (the wire time is added); default " + Durations.Format(TimeSpan.FromMilliseconds(defaultTimeoutMs ?? 300)) + ".", null, TimeSpan.FromMilliseconds(1), TimeSpan.FromMinutes(1));
         Retries = new Option<int?>("--retries") { Description = "Times a read is repeated after a timeout or damaged frame (writes are never repeated).", HelpName = "n" };
         Fins = new Option<bool>("--fins") { Description = "Use FINS over Host Link (FA) where C-mode would otherwise be used: reads, writes, bit writes, status and mode." };
     }
@@ -46,7 +46,7 @@ internal sealed class ConnectionOptions
 
     public Option<int> Unit { get; }
 
-    public Option<int?> Timeout { get; }
+    public Option<TimeSpan?> Timeout { get; }
 
     public Option<int?> Retries { get; }
 
@@ -98,12 +98,7 @@ internal sealed class ConnectionOptions
         }
 
         int unit = unitOverride >= 0 ? unitOverride : IncludeUnit ? GetUnit(parse) : 0;
-        int timeout = parse.GetValue(Timeout) ?? DefaultTimeoutMs ?? 300;
-        if (timeout is < 1 or > 60000)
-        {
-            throw new UsageException($"--timeout must be 1-60000 ms; {timeout} is not.");
-        }
-
+        TimeSpan timeout = parse.GetValue(Timeout) ?? TimeSpan.FromMilliseconds(DefaultTimeoutMs ?? 300);
         int retries = parse.GetValue(Retries) ?? DefaultRetries ?? 2;
         if (retries is < 0 or > 10)
         {
@@ -113,7 +108,7 @@ internal sealed class ConnectionOptions
         var options = new HostLinkClientOptions
         {
             UnitNumber = unit,
-            TurnaroundAllowance = TimeSpan.FromMilliseconds(timeout),
+            TurnaroundAllowance = timeout,
             ReadRetries = retries,
             WriteRetries = 0,
             Protocol = parse.GetValue(Fins) ? HostLinkProtocol.Fins : HostLinkProtocol.CMode,

@@ -14,7 +14,7 @@ internal static class MonitorCommand
         var address = new Argument<string>("address") { Description = "D100, CIO100.05, W30, H10, A448, T5, C7, E1_100." };
         var count = new Argument<string?>("count") { Description = "Number of values (default 1).", Arity = ArgumentArity.ZeroOrOne };
         Option<string?> kind = ReadCommand.AsOption();
-        var interval = new Option<string>("--interval") { Description = "Time between polls: 500ms, 1s, 2m.", DefaultValueFactory = _ => "1s", HelpName = "time" };
+        Option<TimeSpan?> interval = Durations.Option("--interval", "Time between polls; 0 polls back to back.", TimeSpan.FromSeconds(1), TimeSpan.Zero, TimeSpan.FromDays(1));
         var polls = new Option<int?>("--count") { Description = "Stop after this many polls.", HelpName = "N" };
         Option<bool> json = CliContext.JsonOption("Print one JSON document per line for each poll that saw a change.");
         command.Add(address);
@@ -26,7 +26,7 @@ internal static class MonitorCommand
         context.SetAction(command, json, async (parse, output, ct) =>
         {
             ReadRequest request = ReadCommand.Request(parse, address, count, kind, connection);
-            TimeSpan every = Numbers.ParseDuration(parse.GetValue(interval)!, "--interval");
+            TimeSpan every = parse.GetValue(interval) ?? TimeSpan.FromSeconds(1);
             int? limit = parse.GetValue(polls);
             if (limit is < 1)
             {
@@ -40,7 +40,7 @@ internal static class MonitorCommand
             {
                 while (limit is null || done < limit)
                 {
-                    if (done > 0)
+                    if (done > 0 && every > TimeSpan.Zero)
                     {
                         await Task.Delay(every, ct).ConfigureAwait(false);
                     }

@@ -28,7 +28,7 @@ internal static class SimulateCommand
         parity.AcceptOnlyFromAmong("none", "even", "odd");
         var stopBits = new Option<int>("--stop-bits") { Description = "Serial stop bits.", DefaultValueFactory = _ => 2, HelpName = "1|2" };
         stopBits.AcceptOnlyFromAmong("1", "2");
-        var turnaround = new Option<int>("--turnaround") { Description = "Milliseconds between a command and its answer.", DefaultValueFactory = _ => 0, HelpName = "ms" };
+        Option<TimeSpan?> turnaround = Durations.Option("--turnaround", "Time between a command and its answer.", TimeSpan.Zero, TimeSpan.Zero, TimeSpan.FromMinutes(1));
         var model = new Option<string?>("--model") { Description = "Model code MM reports, two hex digits (default 30 = CS/CJ).", HelpName = "hex" };
         var drop = Probability("--fault-drop", "Probability of not answering at all.");
         var corrupt = Probability("--fault-corrupt", "Probability of corrupting a character (the FCS no longer matches).");
@@ -36,7 +36,7 @@ internal static class SimulateCommand
         var truncate = Probability("--fault-truncate", "Probability of cutting a frame short.");
         var late = Probability("--fault-late", "Probability of answering late (after the host's deadline).");
         var echo = Probability("--fault-echo", "Probability of echoing the command first, as a 2-wire RS-485 line does.");
-        var lateBy = new Option<int>("--fault-late-by") { Description = "How late a late answer comes, in ms.", DefaultValueFactory = _ => 1000, HelpName = "ms" };
+        Option<TimeSpan?> lateBy = Durations.Option("--fault-late-by", "How late a late answer comes.", TimeSpan.FromSeconds(1), TimeSpan.Zero, TimeSpan.FromMinutes(10));
         var seed = new Option<int>("--fault-seed") { Description = "Seed of the fault generator (same seed, same faults).", DefaultValueFactory = _ => 1, HelpName = "n" };
         foreach (Option o in new Option[] { tcp, port, units, mode, memory, baud, dataBits, parity, stopBits, turnaround, model, drop, corrupt, noise, truncate, late, lateBy, echo, seed })
         {
@@ -63,7 +63,7 @@ internal static class SimulateCommand
                     _ => PlcMode.Program,
                 },
                 BaudRate = baudRate ?? 0,
-                Turnaround = TimeSpan.FromMilliseconds(parse.GetValue(turnaround)),
+                Turnaround = parse.GetValue(turnaround) ?? TimeSpan.Zero,
                 Faults = new FaultOptions
                 {
                     Seed = parse.GetValue(seed),
@@ -72,7 +72,7 @@ internal static class SimulateCommand
                     Noise = parse.GetValue(noise),
                     Truncate = parse.GetValue(truncate),
                     Late = parse.GetValue(late),
-                    LateBy = TimeSpan.FromMilliseconds(parse.GetValue(lateBy)),
+                    LateBy = parse.GetValue(lateBy) ?? TimeSpan.FromSeconds(1),
                     Echo = parse.GetValue(echo),
                 },
             };
