@@ -1,4 +1,5 @@
 using System.CommandLine;
+using System.Text.Json;
 using OmronHostLink.Cli.Commands;
 
 namespace OmronHostLink.Cli;
@@ -21,12 +22,19 @@ internal static class CliApp
         bool helpOrVersion = parse.Action is { ClearsParseErrors: true };
         if (parse.Errors.Count > 0 && !helpOrVersion)
         {
+            string name = parse.CommandResult.Command is RootCommand ? "hostlink" : "hostlink " + parse.CommandResult.Command.Name;
+            if (args.Contains("--json", StringComparer.Ordinal))
+            {
+                // A script that asked for JSON gets its one document even when the command line itself is wrong.
+                string message = string.Join(" ", parse.Errors.Select(e => e.Message));
+                stdout.WriteLine(JsonSerializer.Serialize(new ErrorDocument(new ErrorInfo("usage", null, message)), CliJsonContext.Console.ErrorDocument));
+            }
+
             foreach (System.CommandLine.Parsing.ParseError error in parse.Errors)
             {
                 stderr.WriteLine(error.Message);
             }
 
-            string name = parse.CommandResult.Command is RootCommand ? "hostlink" : "hostlink " + parse.CommandResult.Command.Name;
             stderr.WriteLine($"Run '{name} --help' for usage.");
             return ExitCodes.InvalidInput;
         }

@@ -80,6 +80,7 @@ internal static class MonitorCommand
                         {
                             j.WriteStartObject();
                             j.WriteString("time", DateTimeOffset.Now.ToString("O", CultureInfo.InvariantCulture));
+                            j.WriteNumber("unit", client.UnitNumber);
                             current.WriteJsonFields(j, changed);
                             j.WriteEndObject();
                         });

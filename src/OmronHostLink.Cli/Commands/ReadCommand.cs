@@ -23,11 +23,14 @@ internal static class ReadCommand
             ReadRequest request = Request(parse, address, count, kind, connection);
             await using HostLinkClient client = connection.CreateClient(parse, output);
             Snapshot snapshot = await request.ReadAsync(client, ct).ConfigureAwait(false);
+            DateTimeOffset time = DateTimeOffset.Now;
             output.Result(
                 w => WriteHuman(w, snapshot, null),
                 j =>
                 {
                     j.WriteStartObject();
+                    j.WriteNumber("unit", client.UnitNumber);
+                    j.WriteString("time", time);
                     snapshot.WriteJsonFields(j);
                     j.WriteEndObject();
                 });

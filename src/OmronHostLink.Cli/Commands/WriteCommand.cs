@@ -1,5 +1,6 @@
 using System.CommandLine;
 using System.Globalization;
+using System.Text.Json.Nodes;
 
 namespace OmronHostLink.Cli.Commands;
 
@@ -71,7 +72,7 @@ internal static class WriteCommand
                 summary = bits.Length == 1
                     ? $"Wrote {(bits[0] ? 1 : 0)} to {addresses[0]}."
                     : $"Wrote {bits.Length} bits to {addresses[0]}-{addresses[^1]}.";
-                Report(output, target, k, v.Length, summary);
+                Report(output, client.UnitNumber, target, k, new JsonArray(bits.Select(b => (JsonNode?)JsonValue.Create(b)).ToArray()), null, summary);
                 return ExitCodes.Success;
             }
 
@@ -82,8 +83,10 @@ internal static class WriteCommand
 
             ushort[] words = Encode(k, v);
             Addresses.EnsureRange(target, words.Length, protocol, forWrite: true);
+            int unit;
             await using (HostLinkClient client = connection.CreateClient(parse, output))
             {
+                unit = client.UnitNumber;
                 await client.WriteWordsAsync(target, words, ct).ConfigureAwait(false);
             }
 
@@ -91,24 +94,64 @@ internal static class WriteCommand
             summary = words.Length == 1
                 ? $"Wrote {Numbers.Hex(words[0])} ({words[0]}) to {target}."
                 : $"Wrote {words.Length} words to {target}-{last}.";
-            Report(output, target, k, words.Length, summary);
+            Report(output, unit, target, k, ValuesOf(k, words), words, summary);
             return ExitCodes.Success;
         });
         return command;
     }
 
-    private static void Report(OutputWriter output, PlcAddress target, PlcValueType kind, int count, string summary)
-        => output.Result(
-            w => w.WriteLine(summary),
-            j =>
-            {
-                j.WriteStartObject();
-                j.WriteString("address", target.ToString());
-                j.WriteString("as", kind.Name());
-                j.WriteNumber(kind == PlcValueType.Bit ? "bits" : "words", count);
-                j.WriteBoolean("ok", true);
-                j.WriteEndObject();
-            });
+    private static void Report(OutputWriter output, int unit, PlcAddress target, PlcValueType kind, JsonArray values, ushort[]? words, string summary)
+    {
+        if (output.IsJson)
+        {
+            output.Document(new WriteDocument(unit, target.ToString(), kind.Name(), values, words, Ok: true), CliJsonContext.Console.WriteDocument);
+        }
+        else
+        {
+            output.Line(summary);
+        }
+    }
+
+    /// <summary>The values the words written hold, in their natural JSON type (what the PLC now has, decoded back).</summary>
+    public static JsonArray ValuesOf(PlcValueType kind, ushort[] words)
+    {
+        var values = new JsonArray();
+        switch (kind)
+        {
+            case PlcValueType.String:
+                values.Add(PlcWords.ReadString(words));
+                break;
+            case PlcValueType.Int32:
+            case PlcValueType.UInt32:
+            case PlcValueType.Float:
+                for (int i = 0; i + 1 < words.Length; i += 2)
+                {
+                    ReadOnlySpan<ushort> pair = words.AsSpan(i, 2);
+                    values.Add(kind switch
+                    {
+                        PlcValueType.Int32 => JsonValue.Create(PlcWords.ReadInt32(pair)),
+                        PlcValueType.UInt32 => JsonValue.Create(PlcWords.ReadUInt32(pair)),
+                        _ => JsonValue.Create(PlcWords.ReadSingle(pair)),
+                    });
+                }
+
+                break;
+            default:
+                foreach (ushort w in words)
+                {
+                    values.Add(kind switch
+                    {
+                        PlcValueType.Int16 => JsonValue.Create(PlcWords.ToInt16(w)),
+                        PlcValueType.Bcd => JsonValue.Create(PlcWords.FromBcd(w)),
+                        _ => JsonValue.Create(w),
+                    });
+                }
+
+                break;
+        }
+
+        return values;
+    }
 
     /// <summary>The words for the values, checked (nothing is sent when one is out of range).</summary>
     public static ushort[] Encode(PlcValueType kind, string[] values)
