@@ -7,6 +7,9 @@ namespace OmronHostLink.Cli;
 /// <summary>The <c>hostlink</c> command line: parses, runs one command, and returns its exit code.</summary>
 internal static class CliApp
 {
+    /// <summary>How long a command may take to stop after Ctrl+C or SIGTERM before the process is ended.</summary>
+    public static readonly TimeSpan StopGrace = TimeSpan.FromSeconds(5);
+
     /// <summary>Runs the command line <paramref name="args"/> with the given output streams.</summary>
     /// <param name="args">The arguments after the program name.</param>
     /// <param name="stdout">Results.</param>
