@@ -86,7 +86,7 @@ internal sealed class CliContext
         string message = e switch
         {
             UsageException => e.Message,
-            ArgumentException => Addresses.FirstSentence(e.Message),
+            ArgumentException => Addresses.InCliWords(Addresses.FirstSentence(e.Message)),
             HostLinkException => e.Message,
             _ => $"{e.GetType().Name}: {e.Message}",
         };

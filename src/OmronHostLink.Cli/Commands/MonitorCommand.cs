@@ -51,7 +51,7 @@ internal static class MonitorCommand
                     Snapshot current;
                     try
                     {
-                        current = await request.ReadAsync(client, ct).ConfigureAwait(false);
+                        current = await request.ReadSnapshotAsync(client, ct).ConfigureAwait(false);
                     }
                     catch (Exception e) when (e is HostLinkTimeoutException or HostLinkFrameException or HostLinkConnectionException && !ct.IsCancellationRequested)
                     {

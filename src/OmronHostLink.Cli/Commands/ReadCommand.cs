@@ -22,7 +22,7 @@ internal static class ReadCommand
         {
             ReadRequest request = Request(parse, address, count, kind, connection);
             await using HostLinkClient client = connection.CreateClient(parse, output);
-            Snapshot snapshot = await request.ReadAsync(client, ct).ConfigureAwait(false);
+            Snapshot snapshot = await request.ReadSnapshotAsync(client, ct).ConfigureAwait(false);
             DateTimeOffset time = DateTimeOffset.Now;
             output.Result(
                 w => WriteHuman(w, snapshot, null),

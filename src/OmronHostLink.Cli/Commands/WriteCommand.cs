@@ -15,7 +15,7 @@ internal static class WriteCommand
         var address = new Argument<string>("address") { Description = "D100, CIO100.05, W30, H10, A448, T5, C7, E1_100." };
         var values = new Argument<string[]>("value") { Description = "Values: decimal or 0x-hex; float as 1.5; string as text; bit as 1/0, on/off, true/false.", Arity = ArgumentArity.OneOrMore };
         Option<string?> kind = ReadCommand.AsOption();
-        var rmw = new Option<bool>("--read-modify-write") { Description = "Without --fins, write bits by reading the word, changing the bit and writing the word back (anything the PLC program writes in between is lost). With --fins bits are written directly." };
+        var rmw = new Option<bool>("--read-modify-write") { Description = "Write bits with C-mode by reading the words they cover, changing the bits and writing the words back (one read, one write; anything the PLC program writes in between is lost). Without it, C-mode refuses bit writes: use --fins to write bits directly." };
         Option<bool> json = CliContext.JsonOption();
         command.Add(address);
         command.Add(values);
@@ -61,13 +61,18 @@ internal static class WriteCommand
                     addresses[i] = target.AsWord().Offset(n / 16).WithBit(n % 16);
                 }
 
-                Addresses.EnsureRange(target.AsWord(), ((target.Bit + bits.Length - 1) / 16) + 1, protocol, forWrite: true);
-                await using HostLinkClient client = connection.CreateClient(parse, output, configure: o => o.AllowReadModifyWriteBits = useRmw);
-
-                for (int i = 0; i < bits.Length; i++)
+                int wordsCovered = ((target.Bit + bits.Length - 1) / 16) + 1;
+                Addresses.EnsureRange(target.AsWord(), wordsCovered, protocol, forWrite: true);
+                if (protocol == HostLinkProtocol.CMode && !useRmw)
                 {
-                    await client.WriteBitAsync(addresses[i], bits[i], ct).ConfigureAwait(false);
+                    // The library would fall back to FINS; the user chose C-mode, so say so rather than switch silently.
+                    PlcAddress word = target.AsWord();
+                    throw new UsageException(
+                        $"C-mode has no bit write. Add --fins to write {Range(addresses)} with FINS (0102, one command), or --read-modify-write to read {Range(word, wordsCovered)}, change the bits and write the word{(wordsCovered == 1 ? "" : "s")} back (anything the PLC program writes there in between is lost).");
                 }
+
+                await using HostLinkClient client = connection.CreateClient(parse, output, configure: o => o.AllowReadModifyWriteBits = useRmw);
+                await client.WriteBitsAsync(target, bits, ct).ConfigureAwait(false);
 
                 summary = bits.Length == 1
                     ? $"Wrote {(bits[0] ? 1 : 0)} to {addresses[0]}."
@@ -111,6 +116,10 @@ internal static class WriteCommand
             output.Line(summary);
         }
     }
+
+    private static string Range(PlcAddress[] bits) => bits.Length == 1 ? bits[0].ToString() : $"{bits[0]}-{bits[^1]}";
+
+    private static string Range(PlcAddress word, int words) => words == 1 ? word.ToString() : $"{word}-{word.Offset(words - 1)}";
 
     /// <summary>The values the words written hold, in their natural JSON type (what the PLC now has, decoded back).</summary>
     public static JsonArray ValuesOf(PlcValueType kind, ushort[] words)
