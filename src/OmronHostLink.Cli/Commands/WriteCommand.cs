@@ -16,11 +16,15 @@ internal static class WriteCommand
         var values = new Argument<string[]>("value") { Description = "Values: decimal or 0x-hex; float as 1.5; string as text; bit as 1/0, on/off, true/false.", Arity = ArgumentArity.OneOrMore };
         Option<string?> kind = ReadCommand.AsOption();
         var rmw = new Option<bool>("--read-modify-write") { Description = "Write bits with C-mode by reading the words they cover, changing the bits and writing the words back (one read, one write; anything the PLC program writes in between is lost). Without it, C-mode refuses bit writes: use --fins to write bits directly." };
+        var length = new Option<int?>("--length") { Description = "For --as string: the field's width in characters; the text is padded to fill it (default: the text and a NUL after it).", HelpName = "n" };
+        var pad = new Option<string?>("--pad") { Description = "For --as string with --length: pad with nul (default) or space.", HelpName = "nul|space" };
         Option<bool> json = CliContext.JsonOption();
         command.Add(address);
         command.Add(values);
         command.Add(kind);
         command.Add(rmw);
+        command.Add(length);
+        command.Add(pad);
         command.Add(json);
         context.SetAction(command, json, async (parse, output, ct) =>
         {
@@ -86,7 +90,26 @@ internal static class WriteCommand
                 throw new UsageException($"{target} names a bit; write it with --as bit, or give the word address {target.AsWord()}.");
             }
 
-            ushort[] words = Encode(k, v);
+            int? fieldLength = parse.GetValue(length);
+            string? padding = parse.GetValue(pad);
+            if (k != PlcValueType.String && (fieldLength is not null || padding is not null))
+            {
+                throw new UsageException("--length and --pad apply to --as string only.");
+            }
+
+            if (fieldLength is < 1 or > 20000)
+            {
+                throw new UsageException($"--length must be 1-20000 characters; {fieldLength} is not.");
+            }
+
+            bool spaces = padding?.ToLowerInvariant() switch
+            {
+                null or "nul" or "null" => false,
+                "space" or "spaces" => true,
+                _ => throw new UsageException($"--pad must be nul or space; '{padding}' is not."),
+            };
+            StringWrite? text = k == PlcValueType.String ? StringWrite.Create(string.Join(' ', v), fieldLength, spaces) : null;
+            ushort[] words = text?.Words ?? Encode(k, v);
             Addresses.EnsureRange(target, words.Length, protocol, forWrite: true);
             int unit;
             await using (HostLinkClient client = connection.CreateClient(parse, output))
@@ -96,10 +119,13 @@ internal static class WriteCommand
             }
 
             PlcAddress last = target.Offset(words.Length - 1);
-            summary = words.Length == 1
-                ? $"Wrote {Numbers.Hex(words[0])} ({words[0]}) to {target}."
-                : $"Wrote {words.Length} words to {target}-{last}.";
-            Report(output, unit, target, k, ValuesOf(k, words), words, summary);
+            string range = words.Length == 1 ? target.ToString() : $"{target}-{last}";
+            summary = text is not null
+                ? $"Wrote \"{text.Text}\" to {range} ({text.Layout})."
+                : words.Length == 1
+                    ? $"Wrote {Numbers.Hex(words[0])} ({words[0]}) to {target}."
+                    : $"Wrote {words.Length} words to {range}.";
+            Report(output, unit, target, k, text is null ? ValuesOf(k, words) : [text.Text], words, summary);
             return ExitCodes.Success;
         });
         return command;
@@ -127,9 +153,6 @@ internal static class WriteCommand
         var values = new JsonArray();
         switch (kind)
         {
-            case PlcValueType.String:
-                values.Add(PlcWords.ReadString(words));
-                break;
             case PlcValueType.Int32:
             case PlcValueType.UInt32:
             case PlcValueType.Float:
@@ -162,20 +185,9 @@ internal static class WriteCommand
         return values;
     }
 
-    /// <summary>The words for the values, checked (nothing is sent when one is out of range).</summary>
+    /// <summary>The words for numeric values, checked (nothing is sent when one is out of range); text is laid out by <see cref="StringWrite"/>.</summary>
     public static ushort[] Encode(PlcValueType kind, string[] values)
     {
-        if (kind == PlcValueType.String)
-        {
-            string text = string.Join(' ', values);
-            if (text.Any(c => c > 0x7F))
-            {
-                throw new UsageException("The text must be ASCII.");
-            }
-
-            return PlcWords.FromString(text);
-        }
-
         var words = new List<ushort>();
         Span<ushort> pair = stackalloc ushort[2];
         foreach (string v in values)
