@@ -25,7 +25,7 @@ namespace OmronHostLink.Link;
 /// A PLC answers in order, so any late answer to the old request arrives before the echo and is thrown away.
 /// </para>
 /// </remarks>
-internal sealed class HostLinkConnection : IAsyncDisposable
+internal sealed partial class HostLinkConnection : IAsyncDisposable
 {
     private const int MaxFirstFrame = FrameWriter.MaxFirstFrameLength;
     private const int MaxContinuationFrame = FrameWriter.MaxContinuationFrameLength;
