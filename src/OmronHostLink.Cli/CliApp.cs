@@ -49,7 +49,36 @@ internal static class CliApp
             EnableDefaultExceptionHandler = false,
             ProcessTerminationTimeout = null,
         };
+        if (parse.Action is System.CommandLine.Help.HelpAction)
+        {
+            var help = new StringWriter();
+            int code = await parse.InvokeAsync(new InvocationConfiguration { Output = help, Error = stderr, EnableDefaultExceptionHandler = false, ProcessTerminationTimeout = null }, cancellationToken).ConfigureAwait(false);
+            await stdout.WriteAsync(HelpText.MarkOptionalArguments(help.ToString(), parse.CommandResult.Command)).ConfigureAwait(false);
+            return code;
+        }
+
         return await parse.InvokeAsync(invocation, cancellationToken).ConfigureAwait(false);
+    }
+
+    /// <summary><c>hostlink help [command]</c>: the same as <c>--help</c>, for those who type it the other way round.</summary>
+    private static Command HelpCommand(CliContext context)
+    {
+        var command = new Command("help", "Show the help of hostlink or of one command: hostlink help read.");
+        var name = new Argument<string?>("command") { Description = "The command to explain (default: all commands).", Arity = ArgumentArity.ZeroOrOne };
+        command.Add(name);
+        command.SetAction(async (parse, cancellationToken) =>
+        {
+            string? target = parse.GetValue(name);
+            Command root = parse.RootCommandResult.Command;
+            if (target is not null && !root.Subcommands.Any(c => c.Name == target))
+            {
+                context.Error.WriteLine($"There is no command '{target}'; run 'hostlink help' for the list.");
+                return ExitCodes.InvalidInput;
+            }
+
+            return await RunAsync(target is null ? ["--help"] : [target, "--help"], context.Out, context.Error, cancellationToken).ConfigureAwait(false);
+        });
+        return command;
     }
 
     internal static RootCommand BuildRoot(CliContext context)
@@ -70,6 +99,7 @@ internal static class CliApp
         root.Add(RawCommand.Create(context));
         root.Add(SimulateCommand.Create(context));
         root.Add(DemoCommand.Create(context));
+        root.Add(HelpCommand(context));
         return root;
     }
 }

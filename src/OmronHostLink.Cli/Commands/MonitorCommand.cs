@@ -15,7 +15,7 @@ internal static class MonitorCommand
         var count = new Argument<string?>("count") { Description = "Number of values (default 1).", Arity = ArgumentArity.ZeroOrOne };
         Option<string?> kind = ReadCommand.AsOption();
         Option<TimeSpan?> interval = Durations.Option("--interval", "Time between polls; 0 polls back to back.", TimeSpan.FromSeconds(1), TimeSpan.Zero, TimeSpan.FromDays(1));
-        var polls = new Option<int?>("--count") { Description = "Stop after this many polls.", HelpName = "N" };
+        Option<int?> polls = OptionValues.OptionalInteger("--count", "Stop after this many polls.", 1, int.MaxValue, "N");
         var all = new Option<bool>("--all") { Description = "Print every poll, not only the values that changed." };
         Option<bool> json = CliContext.JsonOption("Print one JSON document per line for each poll that saw a change (every poll with --all), and a status line when the PLC is lost or answers again.");
         command.Add(address);
@@ -30,10 +30,6 @@ internal static class MonitorCommand
             ReadRequest request = ReadCommand.Request(parse, address, count, kind, connection);
             TimeSpan every = parse.GetValue(interval) ?? TimeSpan.FromSeconds(1);
             int? limit = parse.GetValue(polls);
-            if (limit is < 1)
-            {
-                throw new UsageException($"--count must be at least 1; {limit} is not.");
-            }
 
             bool everyPoll = parse.GetValue(all);
             await using HostLinkClient client = connection.CreateClient(parse, output);

@@ -41,9 +41,7 @@ internal static class ReadCommand
 
     public static Option<string?> AsOption()
     {
-        var option = new Option<string?>("--as") { Description = "word, bcd, int16, uint16, int32, uint32, float, string or bit (default: word, or bit for a bit address).", HelpName = "type" };
-        option.AcceptOnlyFromAmong(ValueKinds.Names);
-        return option;
+        return OptionValues.OptionalChoice("--as", "word, bcd, int16, uint16, int32, uint32, float, string or bit (default: word, or bit for a bit address).", "type", ValueKinds.Names);
     }
 
     /// <summary>The read described by the arguments, checked before anything is sent.</summary>

@@ -18,26 +18,22 @@ internal static class SimulateCommand
         var tcp = new Option<string?>("--tcp") { Description = "Listen on host:port (default 127.0.0.1:9600; port 0 picks a free one).", HelpName = "host:port" };
         var port = new Option<string?>("--port") { Description = "Serve a serial port or pty path instead (e.g. one end of a socat pair).", HelpName = "name" };
         var units = new Option<string>("--units") { Description = "Unit numbers the PLC answers: 0,1 or 0-3.", DefaultValueFactory = _ => "0", HelpName = "list" };
-        var mode = new Option<string>("--mode") { Description = "Operating mode at start.", DefaultValueFactory = _ => "program", HelpName = "program|monitor|run" };
-        mode.AcceptOnlyFromAmong("program", "monitor", "run");
+        Option<string> mode = OptionValues.Choice("--mode", "Operating mode at start.", "program", "program", "monitor", "run");
         var memory = new Option<string?>("--memory") { Description = "JSON file with initial memory and state, e.g. {\"D100\":[1,2,3],\"mode\":\"run\"}.", HelpName = "file.json" };
-        var baud = new Option<int?>("--baud") { Description = "Line speed: on TCP, emulate the wire time of this speed (default none); on a serial port, the port's speed (default 9600).", HelpName = "n" };
-        var dataBits = new Option<int>("--data-bits") { Description = "Serial data bits.", DefaultValueFactory = _ => 7, HelpName = "7|8" };
-        dataBits.AcceptOnlyFromAmong("7", "8");
-        var parity = new Option<string>("--parity") { Description = "Serial parity.", DefaultValueFactory = _ => "even", HelpName = "none|even|odd" };
-        parity.AcceptOnlyFromAmong("none", "even", "odd");
-        var stopBits = new Option<int>("--stop-bits") { Description = "Serial stop bits.", DefaultValueFactory = _ => 2, HelpName = "1|2" };
-        stopBits.AcceptOnlyFromAmong("1", "2");
+        Option<int?> baud = OptionValues.OptionalInteger("--baud", "Line speed: on TCP, emulate the wire time of this speed (default none); on a serial port, the port's speed (default 9600).", 1, 10_000_000, "n");
+        Option<int> dataBits = OptionValues.IntegerChoice("--data-bits", "Serial data bits.", 7, 7, 8);
+        Option<string> parity = OptionValues.Choice("--parity", "Serial parity.", "even", "none", "even", "odd");
+        Option<int> stopBits = OptionValues.IntegerChoice("--stop-bits", "Serial stop bits.", 2, 1, 2);
         Option<TimeSpan?> turnaround = Durations.Option("--turnaround", "Time between a command and its answer.", TimeSpan.Zero, TimeSpan.Zero, TimeSpan.FromMinutes(1));
         var model = new Option<string?>("--model") { Description = "Model code MM reports, two hex digits (default 30 = CS/CJ).", HelpName = "hex" };
-        var drop = Probability("--fault-drop", "Probability of not answering at all.");
-        var corrupt = Probability("--fault-corrupt", "Probability of corrupting a character (the FCS no longer matches).");
-        var noise = Probability("--fault-noise", "Probability of sending noise bytes before a frame.");
-        var truncate = Probability("--fault-truncate", "Probability of cutting a frame short.");
-        var late = Probability("--fault-late", "Probability of answering late (after the host's deadline).");
-        var echo = Probability("--fault-echo", "Probability of echoing the command first, as a 2-wire RS-485 line does.");
+        var drop = OptionValues.Probability("--fault-drop", "Probability of not answering at all.");
+        var corrupt = OptionValues.Probability("--fault-corrupt", "Probability of corrupting a character (the FCS no longer matches).");
+        var noise = OptionValues.Probability("--fault-noise", "Probability of sending noise bytes before a frame.");
+        var truncate = OptionValues.Probability("--fault-truncate", "Probability of cutting a frame short.");
+        var late = OptionValues.Probability("--fault-late", "Probability of answering late (after the host's deadline).");
+        var echo = OptionValues.Probability("--fault-echo", "Probability of echoing the command first, as a 2-wire RS-485 line does.");
         Option<TimeSpan?> lateBy = Durations.Option("--fault-late-by", "How late a late answer comes.", TimeSpan.FromSeconds(1), TimeSpan.Zero, TimeSpan.FromMinutes(10));
-        var seed = new Option<int>("--fault-seed") { Description = "Seed of the fault generator (same seed, same faults).", DefaultValueFactory = _ => 1, HelpName = "n" };
+        Option<int> seed = OptionValues.Integer("--fault-seed", "Seed of the fault generator (same seed, same faults).", 1, int.MinValue, int.MaxValue, "n");
         foreach (Option o in new Option[] { tcp, port, units, mode, memory, baud, dataBits, parity, stopBits, turnaround, model, drop, corrupt, noise, truncate, late, lateBy, echo, seed })
         {
             command.Add(o);
@@ -100,7 +96,7 @@ internal static class SimulateCommand
                 }
                 catch (ArgumentException e)
                 {
-                    throw new UsageException($"The serial settings are not valid: {Addresses.FirstSentence(e.Message)}", e);
+                    throw new UsageException(OptionValues.SerialMessage(e), e);
                 }
 
                 options.BitsPerCharacter = serial.BitsPerCharacter;
@@ -185,19 +181,5 @@ internal static class SimulateCommand
         {
             throw new HostLinkConnectionException($"Cannot open serial port {settings.PortName}: {e.Message}", e);
         }
-    }
-
-    private static Option<double> Probability(string name, string description)
-    {
-        var option = new Option<double>(name) { Description = description + " 0-1.", DefaultValueFactory = _ => 0, HelpName = "p" };
-        option.Validators.Add(result =>
-        {
-            double p = result.GetValueOrDefault<double>();
-            if (double.IsNaN(p) || p < 0 || p > 1)
-            {
-                result.AddError($"{name} must be a probability 0-1.");
-            }
-        });
-        return option;
     }
 }

@@ -16,8 +16,8 @@ internal static class WriteCommand
         var values = new Argument<string[]>("value") { Description = "Values: decimal or 0x-hex; float as 1.5; string as text; bit as 1/0, on/off, true/false.", Arity = ArgumentArity.OneOrMore };
         Option<string?> kind = ReadCommand.AsOption();
         var rmw = new Option<bool>("--read-modify-write") { Description = "Write bits with C-mode by reading the words they cover, changing the bits and writing the words back (one read, one write; anything the PLC program writes in between is lost). Without it, C-mode refuses bit writes: use --fins to write bits directly." };
-        var length = new Option<int?>("--length") { Description = "For --as string: the field's width in characters; the text is padded to fill it (default: the text and a NUL after it).", HelpName = "n" };
-        var pad = new Option<string?>("--pad") { Description = "For --as string with --length: pad with nul (default) or space.", HelpName = "nul|space" };
+        Option<int?> length = OptionValues.OptionalInteger("--length", "For --as string: the field's width in characters; the text is padded to fill it (default: the text and a NUL after it).", 1, 20000, "n");
+        Option<string?> pad = OptionValues.OptionalChoice("--pad", "For --as string with --length: pad with nul (default) or space.", "nul|space", "nul", "space");
         Option<bool> json = CliContext.JsonOption();
         command.Add(address);
         command.Add(values);
@@ -72,7 +72,7 @@ internal static class WriteCommand
                     // The library would fall back to FINS; the user chose C-mode, so say so rather than switch silently.
                     PlcAddress word = target.AsWord();
                     throw new UsageException(
-                        $"C-mode has no bit write. Add --fins to write {Range(addresses)} with FINS (0102, one command), or --read-modify-write to read {Range(word, wordsCovered)}, change the bits and write the word{(wordsCovered == 1 ? "" : "s")} back (anything the PLC program writes there in between is lost).");
+                        $"C-mode has no bit write. Add --fins to write {Range(addresses)} with FINS (0102, one command), or --read-modify-write to read {Range(word, wordsCovered)}, change the bit{(bits.Length == 1 ? "" : "s")} and write the word{(wordsCovered == 1 ? "" : "s")} back (anything the PLC program writes there in between is lost).");
                 }
 
                 await using HostLinkClient client = connection.CreateClient(parse, output, configure: o => o.AllowReadModifyWriteBits = useRmw);
@@ -97,17 +97,7 @@ internal static class WriteCommand
                 throw new UsageException("--length and --pad apply to --as string only.");
             }
 
-            if (fieldLength is < 1 or > 20000)
-            {
-                throw new UsageException($"--length must be 1-20000 characters; {fieldLength} is not.");
-            }
-
-            bool spaces = padding?.ToLowerInvariant() switch
-            {
-                null or "nul" or "null" => false,
-                "space" or "spaces" => true,
-                _ => throw new UsageException($"--pad must be nul or space; '{padding}' is not."),
-            };
+            bool spaces = padding == "space";
             StringWrite? text = k == PlcValueType.String ? StringWrite.Create(string.Join(' ', v), fieldLength, spaces) : null;
             ushort[] words = text?.Words ?? Encode(k, v);
             Addresses.EnsureRange(target, words.Length, protocol, forWrite: true);
