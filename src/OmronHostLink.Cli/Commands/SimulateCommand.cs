@@ -17,7 +17,9 @@ internal static class SimulateCommand
         var command = new Command("simulate", "Run a virtual CS/CJ PLC (C-mode) on TCP (default 127.0.0.1:9600) or a serial port. Ctrl+C stops cleanly.");
         var tcp = new Option<string?>("--tcp") { Description = "Listen on host:port (default 127.0.0.1:9600; port 0 picks a free one).", HelpName = "host:port" };
         var port = new Option<string?>("--port") { Description = "Serve a serial port or pty path instead (e.g. one end of a socat pair).", HelpName = "name" };
-        var units = new Option<string>("--units") { Description = "Unit numbers the PLC answers: 0,1 or 0-3.", DefaultValueFactory = _ => "0", HelpName = "list" };
+        var units = new Option<string>("--units") { Description = "Unit numbers on the line: 0,1 or 0-3. Each is a PLC of its own (memory, mode, errors) unless --shared-memory.", DefaultValueFactory = _ => "0", HelpName = "list" };
+        var shared = new Option<bool>("--shared-memory") { Description = "Make the --units one PLC answering to all of them (one memory, mode and error state)." };
+        var readyFile = new Option<string?>("--ready-file") { Description = "Write the address served (host:port, or the serial port) to this file once the simulator accepts connections; the file is removed when it stops.", HelpName = "path" };
         Option<string> mode = OptionValues.Choice("--mode", "Operating mode at start.", "program", "program", "monitor", "run");
         var memory = new Option<string?>("--memory") { Description = "JSON file with initial memory and state, e.g. {\"D100\":[1,2,3],\"mode\":\"run\"}.", HelpName = "file.json" };
         Option<int?> baud = OptionValues.OptionalInteger("--baud", "Line speed: on TCP, emulate the wire time of this speed (default none); on a serial port, the port's speed (default 9600).", 1, 10_000_000, "n");
@@ -34,7 +36,7 @@ internal static class SimulateCommand
         var echo = OptionValues.Probability("--fault-echo", "Probability of echoing the command first, as a 2-wire RS-485 line does.");
         Option<TimeSpan?> lateBy = Durations.Option("--fault-late-by", "How late a late answer comes.", TimeSpan.FromSeconds(1), TimeSpan.Zero, TimeSpan.FromMinutes(10));
         Option<int> seed = OptionValues.Integer("--fault-seed", "Seed of the fault generator (same seed, same faults).", 1, int.MinValue, int.MaxValue, "n");
-        foreach (Option o in new Option[] { tcp, port, units, mode, memory, baud, dataBits, parity, stopBits, turnaround, model, drop, corrupt, noise, truncate, late, lateBy, echo, seed })
+        foreach (Option o in new Option[] { tcp, port, units, shared, readyFile, mode, memory, baud, dataBits, parity, stopBits, turnaround, model, drop, corrupt, noise, truncate, late, lateBy, echo, seed })
         {
             command.Add(o);
         }
@@ -102,14 +104,18 @@ internal static class SimulateCommand
                 options.BitsPerCharacter = serial.BitsPerCharacter;
             }
 
-            VirtualPlc plc;
+            bool oneCpu = parse.GetValue(shared) || options.Units.Count == 1;
+            VirtualPlcLine line;
             try
             {
                 options.Validate();
-                plc = new VirtualPlc(options);
+                line = oneCpu ? new VirtualPlcLine([new VirtualPlc(options)]) : VirtualPlcLine.OnePlcPerUnit(options);
                 if (parse.GetValue(memory) is { } file)
                 {
-                    plc.LoadJsonFile(file);
+                    foreach (VirtualPlc plc in line.Plcs)
+                    {
+                        plc.LoadJsonFile(file);
+                    }
                 }
             }
             catch (Exception e) when (e is FormatException or IOException or UnauthorizedAccessException)
@@ -117,47 +123,74 @@ internal static class SimulateCommand
                 throw new UsageException($"The initial memory cannot be loaded: {e.Message}", e);
             }
 
-            string unitList = string.Join(",", options.Units.Select(u => u.ToString("D2", CultureInfo.InvariantCulture)));
-            string state = $"{StatusCommand.ModeName(plc.Mode)} mode, model code {plc.ModelCode:X2}";
-            if (serial is not null)
+            string? ready = parse.GetValue(readyFile);
+            if (ready is not null)
             {
-                await using var host = new SerialSimulatorHost(plc, () => OpenSerial(serial));
-                await host.StartAsync(ct).ConfigureAwait(false);
-                output.Line($"Simulating units {unitList} ({state}) on {serial}. Ctrl+C stops.");
-                await Task.WhenAny(host.Completion, Task.Delay(Timeout.Infinite, ct)).ConfigureAwait(false);
-                await host.StopAsync(CancellationToken.None).ConfigureAwait(false);
+                // A file left by an earlier run must not announce this one before it listens.
+                ReadyFile.Remove(ready);
             }
-            else
+
+            string unitList = string.Join(",", options.Units.Select(u => u.ToString("D2", CultureInfo.InvariantCulture)));
+            VirtualPlc first = line.Plcs[0];
+            string state = $"{StatusCommand.ModeName(first.Mode)} mode, model code {first.ModelCode:X2}"
+                + (options.Units.Count == 1 ? string.Empty : oneCpu ? ", one PLC answering every unit" : ", each unit a PLC of its own");
+            try
             {
-                (string h, int p) = tcpText is null ? ("127.0.0.1", 9600) : ParseListen(tcpText);
-                IPAddress address = h is "localhost" ? IPAddress.Loopback : IPAddress.TryParse(h, out IPAddress? ip) ? ip
-                    : throw new UsageException($"--tcp: '{h}' is not an IP address to listen on (use 127.0.0.1, 0.0.0.0 or ::).");
-                await using var host = new TcpSimulatorHost(plc, new IPEndPoint(address, p));
-                try
+                if (serial is not null)
                 {
+                    await using var host = new SerialSimulatorHost(line, () => OpenSerial(serial));
                     await host.StartAsync(ct).ConfigureAwait(false);
+                    output.Line($"Simulating units {unitList} ({state}) on {serial}. Ctrl+C stops.");
+                    ReadyFile.Write(ready, serial.PortName);
+                    await Task.WhenAny(host.Completion, Task.Delay(Timeout.Infinite, ct)).ConfigureAwait(false);
+                    await host.StopAsync(CancellationToken.None).ConfigureAwait(false);
                 }
-                catch (SocketException e)
+                else
                 {
-                    throw new HostLinkConnectionException($"Cannot listen on {h}:{p}: {e.Message}", e);
+                    await ServeTcpAsync(line, tcpText, unitList, state, ready, output, ct).ConfigureAwait(false);
                 }
-
-                output.Line($"Simulating units {unitList} ({state}) on {host.EndPoint}. Ctrl+C stops.");
-                try
+            }
+            finally
+            {
+                if (ready is not null)
                 {
-                    await Task.Delay(Timeout.Infinite, ct).ConfigureAwait(false);
+                    ReadyFile.Remove(ready);
                 }
-                catch (OperationCanceledException)
-                {
-                }
-
-                await host.StopAsync(CancellationToken.None).ConfigureAwait(false);
             }
 
             output.Line("Simulator stopped.");
             return ExitCodes.Success;
         });
         return command;
+    }
+
+    private static async Task ServeTcpAsync(VirtualPlcLine line, string? tcpText, string unitList, string state, string? ready, OutputWriter output, CancellationToken ct)
+    {
+        (string h, int p) = tcpText is null ? ("127.0.0.1", 9600) : ParseListen(tcpText);
+        IPAddress address = h is "localhost" ? IPAddress.Loopback : IPAddress.TryParse(h, out IPAddress? ip) ? ip
+            : throw new UsageException($"--tcp: '{h}' is not an IP address to listen on (use 127.0.0.1, 0.0.0.0 or ::).");
+        await using var host = new TcpSimulatorHost(line, new IPEndPoint(address, p));
+        try
+        {
+            await host.StartAsync(ct).ConfigureAwait(false);
+        }
+        catch (SocketException e)
+        {
+            throw new HostLinkConnectionException($"Cannot listen on {h}:{p}: {e.Message}", e);
+        }
+
+        // Listening now: a client that connects from here on is served.
+        output.Line($"Simulating units {unitList} ({state}) on {host.EndPoint}. Ctrl+C stops.");
+        ReadyFile.Write(ready, host.EndPoint.ToString());
+        try
+        {
+            await Task.Delay(Timeout.Infinite, ct).ConfigureAwait(false);
+        }
+        catch (OperationCanceledException)
+        {
+        }
+
+        await host.StopAsync(CancellationToken.None).ConfigureAwait(false);
     }
 
     private static (string Host, int Port) ParseListen(string text)

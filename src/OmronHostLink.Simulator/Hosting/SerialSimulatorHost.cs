@@ -10,7 +10,7 @@ namespace OmronHostLink.Simulator.Hosting;
 /// </remarks>
 public sealed class SerialSimulatorHost : IAsyncDisposable
 {
-    private readonly VirtualPlc _plc;
+    private readonly Func<Stream, CancellationToken, Task> _serve;
     private readonly Func<Stream> _open;
     private CancellationTokenSource? _stopping;
     private Task? _session;
@@ -23,7 +23,18 @@ public sealed class SerialSimulatorHost : IAsyncDisposable
     {
         ArgumentNullException.ThrowIfNull(plc);
         ArgumentNullException.ThrowIfNull(openStream);
-        _plc = plc;
+        _serve = plc.RunAsync;
+        _open = openStream;
+    }
+
+    /// <summary>Creates the host of a line of PLCs.</summary>
+    /// <param name="line">The PLCs to serve, each with its own unit numbers.</param>
+    /// <param name="openStream">Opens the serial line; called by <see cref="StartAsync"/>.</param>
+    public SerialSimulatorHost(VirtualPlcLine line, Func<Stream> openStream)
+    {
+        ArgumentNullException.ThrowIfNull(line);
+        ArgumentNullException.ThrowIfNull(openStream);
+        _serve = line.RunAsync;
         _open = openStream;
     }
 
@@ -44,7 +55,7 @@ public sealed class SerialSimulatorHost : IAsyncDisposable
 
         _stream = _open() ?? throw new InvalidOperationException("The stream factory returned null.");
         _stopping = new CancellationTokenSource();
-        _session = _plc.RunAsync(_stream, _stopping.Token);
+        _session = _serve(_stream, _stopping.Token);
         return Task.CompletedTask;
     }
 
