@@ -30,9 +30,7 @@ void Stop()
             return;
         }
 
-        // Not on the signal's own thread: the command's continuations would run there, to the end of Main, and
-        // disposing the signal registration from inside its handler never returns.
-        _ = Task.Run(cancellation.Cancel);
+        cancellation.Cancel();
     }
 
     _ = Task.Delay(CliApp.StopGrace).ContinueWith(
