@@ -28,6 +28,7 @@ internal sealed record MonitorStatusDocument(DateTimeOffset Time, string Status,
 /// <summary>Source-generated serialisation of the console's JSON documents (no reflection).</summary>
 [JsonSourceGenerationOptions(PropertyNamingPolicy = JsonKnownNamingPolicy.CamelCase)]
 [JsonSerializable(typeof(ErrorDocument))]
+[JsonSerializable(typeof(ErrorInfo))]
 [JsonSerializable(typeof(WriteDocument))]
 [JsonSerializable(typeof(MonitorStatusDocument))]
 internal sealed partial class CliJsonContext : JsonSerializerContext

@@ -117,4 +117,20 @@ public sealed class CliJsonTests
 
         j.GetProperty("values").GetRawText().Should().Be("[true,false,true]");
     }
+
+    [Theory]
+    [InlineData("ZZ", "IC")]
+    [InlineData("RD000A0001", "15")]
+    public async Task A_raw_end_code_is_one_document_with_the_frames_and_the_error(string text, string endCode)
+    {
+        await using var sim = await SimulatedPlc.StartAsync();
+
+        CliResult r = await sim.RunAsync("raw", text, "--json");
+
+        r.ExitCode.Should().Be(3, r.ToString());
+        JsonElement j = r.Json();
+        j.GetProperty("received").GetArrayLength().Should().Be(1);
+        j.GetProperty("error").GetProperty("kind").GetString().Should().Be("endCode");
+        j.GetProperty("error").GetProperty("endCode").GetString().Should().Be(endCode);
+    }
 }
