@@ -63,14 +63,17 @@ internal static class ScanCommand
 
             progress.Clear();
             output.Note($"Scanned {Count(list.Count, "unit number")} in {Durations.Format(clock.Elapsed)}: {Answer(found.Count)}.");
+            ErrorInfo? none = found.Count == 0
+                ? new ErrorInfo("timeout", null, $"No unit answered on {client.Description} (probed {Count(list.Count, "unit number")}).")
+                : null;
             if (output.IsJson)
             {
-                output.Result(_ => { }, j => WriteJson(j, found));
+                output.Result(_ => { }, j => WriteJson(j, found, none));
             }
 
-            if (found.Count == 0)
+            if (none is not null)
             {
-                output.Fail($"No unit answered on {client.Description} (probed {Count(list.Count, "unit number")}).");
+                output.Fail(none.Message);
                 return ExitCodes.Communication;
             }
 
@@ -95,7 +98,7 @@ internal static class ScanCommand
         return f.Error is null ? $"Unit {f.Unit:D2}: {model}, {mode}" : $"Unit {f.Unit:D2}: {model}, {mode} ({f.Error})";
     }
 
-    private static void WriteJson(System.Text.Json.Utf8JsonWriter j, List<(int Unit, PlcModel? Model, PlcStatus? Status, string? Error)> found)
+    private static void WriteJson(System.Text.Json.Utf8JsonWriter j, List<(int Unit, PlcModel? Model, PlcStatus? Status, string? Error)> found, ErrorInfo? none)
     {
         j.WriteStartObject();
         j.WriteStartArray("units");
@@ -132,6 +135,13 @@ internal static class ScanCommand
         }
 
         j.WriteEndArray();
+        if (none is not null)
+        {
+            // The one document of a failed scan says so as every failed command's does.
+            j.WritePropertyName("error");
+            System.Text.Json.JsonSerializer.Serialize(j, none, CliJsonContext.Console.ErrorInfo);
+        }
+
         j.WriteEndObject();
     }
 

@@ -60,6 +60,18 @@ public sealed class CliScanTests
     }
 
     [Fact]
+    public async Task An_empty_scan_in_json_is_one_document_with_the_error()
+    {
+        await using var sim = await SimulatedPlc.StartAsync(units: [0]);
+
+        CliResult r = await sim.RunAsync("scan", "--units", "4-5", "--timeout", "30ms", "--json");
+
+        r.ExitCode.Should().Be(4, r.ToString());
+        r.Json().GetProperty("units").GetArrayLength().Should().Be(0);
+        r.Json().GetProperty("error").GetProperty("kind").GetString().Should().Be("timeout");
+    }
+
+    [Fact]
     public async Task One_unit_answering_is_one_unit()
     {
         await using var sim = await SimulatedPlc.StartAsync(units: [0]);
