@@ -25,7 +25,7 @@ namespace OmronHostLink.Link;
 /// A PLC answers in order, so any late answer to the old request arrives before the echo and is thrown away.
 /// </para>
 /// </remarks>
-internal sealed class HostLinkConnection : IAsyncDisposable
+internal sealed partial class HostLinkConnection : IAsyncDisposable
 {
     private const int MaxFirstFrame = FrameWriter.MaxFirstFrameLength;
     private const int MaxContinuationFrame = FrameWriter.MaxContinuationFrameLength;
@@ -86,6 +86,7 @@ internal sealed class HostLinkConnection : IAsyncDisposable
         }
 
         int attempt = 0;
+        var waited = Stopwatch.StartNew();
         while (true)
         {
             cancellationToken.ThrowIfCancellationRequested();
@@ -106,6 +107,15 @@ internal sealed class HostLinkConnection : IAsyncDisposable
                 attempt++;
                 HostLinkMetrics.Retry(request.Header);
                 HostLinkLog.Retry(_logger, request.Unit, request.Header, e.Message, attempt, retries);
+            }
+            catch (HostLinkTimeoutException) when (!cancellationToken.IsCancellationRequested)
+            {
+                // Said in the caller's terms: the command that went unanswered and the time it cost in all (the last
+                // deadline may have been a resynchronisation fence's, which the caller never asked for).
+                TimeSpan total = waited.Elapsed;
+                throw new HostLinkTimeoutException(
+                    $"No answer from unit {request.Unit:D2} to {request.Header} on {_transport.Description}: waited {total.TotalMilliseconds:0} ms in all ({attempt + 1} attempt{(attempt == 0 ? "" : "s")}).",
+                    total);
             }
             finally
             {
