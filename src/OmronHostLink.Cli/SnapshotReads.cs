@@ -12,7 +12,7 @@ internal static class SnapshotReads
         if (request.IsTimerCounterFlag)
         {
             bool[] flags = await plc.ReadBitsAsync(request.Address, request.Count, cancellationToken).ConfigureAwait(false);
-            return new Snapshot(request, [], flags);
+            return new Snapshot(request, [], Array.ConvertAll(flags, f => (PlcValue?)PlcValue.FromBit(f)));
         }
 
         return await request.ReadAsync(plc, cancellationToken).ConfigureAwait(false);

@@ -17,8 +17,8 @@ public partial class HostLinkUnit
         Guard.InRange(count, 1, 10000, nameof(count));
         if (address.Area is PlcArea.Timer or PlcArea.Counter)
         {
-            address.EnsureRange(count, Options.Protocol, forWrite: false);
-            return Options.Protocol == HostLinkProtocol.Fins
+            address.EnsureRange(count, Options.CommandSet, forWrite: false);
+            return Options.CommandSet == HostLinkCommandSet.Fins
                 ? await FinsReadFlagsAsync(address, count, cancellationToken).ConfigureAwait(false)
                 : await CModeReadFlagsAsync(address, count, cancellationToken).ConfigureAwait(false);
         }
@@ -48,9 +48,9 @@ public partial class HostLinkUnit
         Guard.InRange(values.Length, 1, 10000, nameof(values));
         PlcAddress first = address.AsWord();
         int words = WordsCovered(address, values.Length);
-        if (Options.AllowReadModifyWriteBits && Options.Protocol == HostLinkProtocol.CMode)
+        if (Options.AllowReadModifyWriteBits && Options.CommandSet == HostLinkCommandSet.CMode)
         {
-            first.EnsureRange(words, HostLinkProtocol.CMode, forWrite: true);
+            first.EnsureRange(words, HostLinkCommandSet.CMode, forWrite: true);
             ushort[] current = await ReadWordsAsync(first, words, cancellationToken).ConfigureAwait(false);
             for (int i = 0; i < values.Length; i++)
             {
@@ -62,7 +62,7 @@ public partial class HostLinkUnit
             return;
         }
 
-        first.EnsureRange(words, HostLinkProtocol.Fins, forWrite: true);
+        first.EnsureRange(words, HostLinkCommandSet.Fins, forWrite: true);
         for (int done = 0; done < values.Length;)
         {
             int n = Math.Min(MemoryAreaWriteCommand.MaxDataBytes, values.Length - done);

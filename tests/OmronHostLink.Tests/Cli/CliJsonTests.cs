@@ -55,7 +55,7 @@ public sealed class CliJsonTests
 
     [Theory]
     [InlineData("read", "D99999", "--json", "--tcp", "127.0.0.1:1")]
-    [InlineData("read", "D1", "--as", "double", "--json", "--tcp", "127.0.0.1:1")]
+    [InlineData("read", "D1", "--as", "quad", "--json", "--tcp", "127.0.0.1:1")]
     [InlineData("status", "--json")]
     public async Task Invalid_input_is_a_json_usage_error_with_exit_2(params string[] args)
     {

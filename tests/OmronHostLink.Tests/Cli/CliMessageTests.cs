@@ -40,10 +40,10 @@ public sealed class CliMessageTests
     [Fact]
     public async Task A_bad_as_names_the_option_and_the_choices()
     {
-        CliResult r = await Cli.RunAsync("read", "D1", "--as", "double", "--tcp", "127.0.0.1:1");
+        CliResult r = await Cli.RunAsync("read", "D1", "--as", "quad", "--tcp", "127.0.0.1:1");
 
         r.ExitCode.Should().Be(2, r.ToString());
-        r.Err.Should().Contain("--as: 'double' is not one of word, bcd, int16");
+        r.Err.Should().Contain("--as: 'quad' is not one of word, bcd, int16");
     }
 
     [Fact]
