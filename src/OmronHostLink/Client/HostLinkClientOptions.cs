@@ -1,5 +1,6 @@
 using Microsoft.Extensions.Logging;
 using OmronHostLink.Link;
+using OmronHostLink.Transports;
 
 namespace OmronHostLink;
 
@@ -75,4 +76,13 @@ public sealed class HostLinkClientOptions
     }
 
     internal HostLinkClientOptions Clone() => (HostLinkClientOptions)MemberwiseClone();
+
+    /// <summary>The part of these options the link itself uses.</summary>
+    internal HostLinkConnectionOptions ToConnectionOptions() => new()
+    {
+        LineTiming = LineTiming,
+        TurnaroundAllowance = TurnaroundAllowance,
+        LocalEcho = LocalEcho,
+        LoggerFactory = LoggerFactory,
+    };
 }

@@ -3,6 +3,7 @@ using System.Text;
 using OmronHostLink.Link;
 using OmronHostLink.Protocol;
 using OmronHostLink.Protocol.CMode;
+using OmronHostLink.Transports;
 
 namespace OmronHostLink;
 

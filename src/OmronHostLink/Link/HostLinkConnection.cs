@@ -33,7 +33,7 @@ internal sealed class HostLinkConnection : IAsyncDisposable
     private static readonly Random TokenRandom = new();
 
     private readonly IHostLinkTransport _transport;
-    private readonly HostLinkClientOptions _options;
+    private readonly HostLinkConnectionOptions _options;
     private readonly ILogger _logger;
     private readonly SemaphoreSlim _gate = new(1, 1);
     private readonly byte[] _frame = new byte[FrameReader.MaxFrameLength + 2];
@@ -51,7 +51,7 @@ internal sealed class HostLinkConnection : IAsyncDisposable
     private bool _disposed;
     private int _sid;
 
-    public HostLinkConnection(IHostLinkTransport transport, HostLinkClientOptions options)
+    public HostLinkConnection(IHostLinkTransport transport, HostLinkConnectionOptions options)
     {
         _transport = transport;
         _options = options;
@@ -163,7 +163,7 @@ internal sealed class HostLinkConnection : IAsyncDisposable
     {
         if (_disposed)
         {
-            throw new ObjectDisposedException(nameof(HostLinkClient));
+            throw new ObjectDisposedException(nameof(HostLinkConnection), $"The link to {_transport.Description} is closed.");
         }
     }
 

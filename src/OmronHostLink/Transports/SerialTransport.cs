@@ -16,14 +16,14 @@ public sealed class SerialTransport : IHostLinkTransport
         Guard.NotNull(settings);
         settings.Validate();
         _settings = settings;
-        LineTiming = new Link.LineTiming(settings.BaudRate, settings.BitsPerCharacter);
+        LineTiming = new LineTiming(settings.BaudRate, settings.BitsPerCharacter);
     }
 
     /// <inheritdoc/>
     public string Description => _settings.ToString();
 
     /// <inheritdoc/>
-    public Link.LineTiming? LineTiming { get; }
+    public LineTiming? LineTiming { get; }
 
     /// <inheritdoc/>
     public ValueTask<Stream> OpenAsync(CancellationToken cancellationToken)
@@ -52,7 +52,7 @@ public sealed class SerialTransport : IHostLinkTransport
         _stream = null;
         if (s is not null)
         {
-            await Link.StreamCompat.DisposeAsync(s).ConfigureAwait(false);
+            await StreamCompat.DisposeAsync(s).ConfigureAwait(false);
         }
     }
 

@@ -1,7 +1,6 @@
 using System.Net;
 using System.Net.Sockets;
 using System.Text;
-using OmronHostLink.Link;
 using OmronHostLink.Protocol;
 using OmronHostLink.Simulator;
 using OmronHostLink.Simulator.Hosting;

@@ -2,7 +2,7 @@ using System.Collections.Concurrent;
 using System.Diagnostics;
 using System.Globalization;
 using System.Net;
-using OmronHostLink.Link;
+using OmronHostLink.Transports;
 using OmronHostLink.Protocol;
 using OmronHostLink.Simulator;
 using OmronHostLink.Simulator.Faults;
