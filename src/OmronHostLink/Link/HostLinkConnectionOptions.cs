@@ -17,4 +17,7 @@ internal sealed class HostLinkConnectionOptions
 
     /// <summary>Where the link logs; null for nowhere.</summary>
     public ILoggerFactory? LoggerFactory { get; init; }
+
+    /// <summary>The clock deadlines run on.</summary>
+    public TimeProvider TimeProvider { get; init; } = TimeProvider.System;
 }

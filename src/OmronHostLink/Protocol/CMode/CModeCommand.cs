@@ -30,6 +30,28 @@ public abstract class CModeCommand
     /// <summary>Characters a response spends on one data entry, for cutting a multi-frame response.</summary>
     public virtual int ResponseAtomLength => 4;
 
+    /// <summary>The most answer text (end code and data, every frame joined) a correct answer holds. Default: an end code alone.</summary>
+    internal virtual int MaxAnswerTextLength => CModeResponse.EndCodeLength;
+
+    /// <summary>What repeating the command would do. Default: not repeatable.</summary>
+    internal virtual CommandEffect Effect => CommandEffect.NotRepeatable;
+
+    /// <summary>How the command travels and is answered.</summary>
+    internal ExchangeShape Exchange => ExchangeShape.CMode(
+        PrefixLength + FixedTextLength,
+        AtomLength,
+        MayUseSeveralFrames,
+        ExpectsResponse,
+        MaxAnswerTextLength,
+        AnswerCanEqualCommand(Header, TextLength));
+
+    /// <summary>
+    /// Whether a correct answer can be the very characters of a command: TS echoes it, and a two-character text (SC 00,
+    /// MF 01) reads the same as an answer carrying only an end code.
+    /// </summary>
+    internal static bool AnswerCanEqualCommand(string header, int textLength)
+        => header == "TS" || textLength == CModeResponse.EndCodeLength;
+
     /// <summary>Length of the unframed message: prefix and text.</summary>
     public int MessageLength => PrefixLength + TextLength;
 
@@ -40,13 +62,19 @@ public abstract class CModeCommand
     /// <returns>The number of characters written.</returns>
     public int WriteMessage(int unit, Span<byte> destination)
     {
+        WritePrefix(unit, Header, destination);
+        WriteText(destination.Slice(PrefixLength, TextLength));
+        return MessageLength;
+    }
+
+    /// <summary>Writes <c>@</c>, the unit's two digits and the header.</summary>
+    internal static void WritePrefix(int unit, string header, Span<byte> destination)
+    {
         Guard.Unit(unit);
         destination[0] = (byte)'@';
         HexAscii.WriteDecimal(unit, destination.Slice(1, 2));
-        destination[3] = (byte)Header[0];
-        destination[4] = (byte)Header[1];
-        WriteText(destination.Slice(PrefixLength, TextLength));
-        return MessageLength;
+        destination[3] = (byte)header[0];
+        destination[4] = (byte)header[1];
     }
 
     /// <summary>The unframed message as a new array.</summary>
