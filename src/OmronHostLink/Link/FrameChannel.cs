@@ -55,7 +55,7 @@ internal sealed class FrameChannel : IValueTaskSource<bool>
     private TimeSpan _deadlineTimeout;
 
     private ManualResetValueTaskSourceCore<bool> _waiter;
-    private ValueTaskAwaiter<int> _pendingRead;
+    private ConfiguredValueTaskAwaitable<int>.ConfiguredValueTaskAwaiter _pendingRead;
     private CancellationToken _callerToken;
     private CancellationTokenRegistration _callerRegistration;
     private CancellationTokenSource _writeAbort = new();
@@ -509,14 +509,16 @@ internal sealed class FrameChannel : IValueTaskSource<bool>
                     return;
                 }
 
-                if (!read.IsCompleted)
+                // Without the caller's synchronization context: the loop must never wait for a test runner's or UI thread.
+                ConfiguredValueTaskAwaitable<int>.ConfiguredValueTaskAwaiter awaiter = read.ConfigureAwait(false).GetAwaiter();
+                if (!awaiter.IsCompleted)
                 {
-                    _pendingRead = read.GetAwaiter();
-                    _pendingRead.UnsafeOnCompleted(_onReadCompleted);
+                    _pendingRead = awaiter;
+                    awaiter.UnsafeOnCompleted(_onReadCompleted);
                     return;
                 }
 
-                if (!Deliver(read.GetAwaiter(), ref wake))
+                if (!Deliver(awaiter, ref wake))
                 {
                     return;
                 }
@@ -530,7 +532,7 @@ internal sealed class FrameChannel : IValueTaskSource<bool>
 
     private void OnReadCompleted()
     {
-        ValueTaskAwaiter<int> completed = _pendingRead;
+        ConfiguredValueTaskAwaitable<int>.ConfiguredValueTaskAwaiter completed = _pendingRead;
         _pendingRead = default;
         bool wake = false;
         bool more = Deliver(completed, ref wake);
@@ -546,7 +548,7 @@ internal sealed class FrameChannel : IValueTaskSource<bool>
 
     /// <summary>Takes a completed read's bytes into the buffer.</summary>
     /// <returns>Whether the loop should read again.</returns>
-    private bool Deliver(ValueTaskAwaiter<int> completed, ref bool wake)
+    private bool Deliver(ConfiguredValueTaskAwaitable<int>.ConfiguredValueTaskAwaiter completed, ref bool wake)
     {
         int n;
         try

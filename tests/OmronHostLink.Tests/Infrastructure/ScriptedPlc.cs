@@ -105,8 +105,8 @@ internal sealed class ScriptedPlc : IAsyncDisposable
 
     public async ValueTask DisposeAsync()
     {
+        // The loop ends on the cancellation before the stream goes: a read racing the stream's disposal fails untyped.
         _stop.Cancel();
-        await _stream.DisposeAsync();
         try
         {
             await _loop;
@@ -114,5 +114,7 @@ internal sealed class ScriptedPlc : IAsyncDisposable
         catch (OperationCanceledException)
         {
         }
+
+        await _stream.DisposeAsync();
     }
 }

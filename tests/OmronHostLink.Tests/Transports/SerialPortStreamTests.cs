@@ -7,6 +7,7 @@ using OmronHostLink.Transports;
 namespace OmronHostLink.Tests.Transports;
 
 /// <summary>The Linux serial transport over real pseudo-terminal pairs made by socat.</summary>
+[Trait("Category", "Slow")]
 public sealed class SerialPortStreamTests
 {
     // Upper bound for anything that should happen at once; a hang fails the test instead of the run.
