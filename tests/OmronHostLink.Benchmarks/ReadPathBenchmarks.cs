@@ -135,6 +135,24 @@ public class ReadPathBenchmarks
 
         public override long Seek(long offset, SeekOrigin origin) => throw new NotSupportedException();
 
+        /// <summary>Closing ends a pending read with end of stream, as a closed socket does.</summary>
+        protected override void Dispose(bool disposing)
+        {
+            bool pending;
+            lock (_lock)
+            {
+                pending = _pending;
+                _pending = false;
+            }
+
+            if (pending)
+            {
+                _read.SetResult(0);
+            }
+
+            base.Dispose(disposing);
+        }
+
         public override void SetLength(long value) => throw new NotSupportedException();
 
         private void Answer()

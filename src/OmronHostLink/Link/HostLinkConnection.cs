@@ -68,9 +68,6 @@ internal sealed class HostLinkConnection : IAsyncDisposable
     /// <summary>The next FINS service ID: every FINS exchange carries its own, so an answer to another one is refused.</summary>
     public byte NextSid() => unchecked((byte)Interlocked.Increment(ref _sid));
 
-    /// <inheritdoc cref="TransactionAttempt.FrameTimeout"/>
-    public TimeSpan FrameTimeout(int charactersSent, int charactersExpected) => _attempt.FrameTimeout(charactersSent, charactersExpected);
-
     /// <summary>Runs one request, repeating it up to <paramref name="retries"/> times after a timeout or damage.</summary>
 #if NET
     [AsyncMethodBuilder(typeof(PoolingAsyncValueTaskMethodBuilder<>))]
