@@ -10,6 +10,7 @@ namespace OmronHostLink.Benchmarks;
 /// so the figure includes the thread hand-offs between the bytes arriving and the caller resuming.
 /// </summary>
 [MemoryDiagnoser]
+[MedianColumn]
 public class ReadPathBenchmarks
 {
     private readonly ManualResetEventSlim _done = new();

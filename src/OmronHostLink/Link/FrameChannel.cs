@@ -215,13 +215,14 @@ internal sealed class FrameChannel : IValueTaskSource<bool>
             lock (_lock)
             {
                 ThrowIfCancelledLocked();
-                var buffer = new ReadOnlySequence<byte>(_buffer, _start, _end - _start);
+                int held = _end - _start;
+                var buffer = new ReadOnlySequence<byte>(_buffer, _start, held);
                 FrameScanResult scan = FrameReader.TryReadFrame(ref buffer, expectStart, out ReadOnlySequence<byte> frame, out _);
                 if (scan == FrameScanResult.Frame)
                 {
                     length = (int)frame.Length;
                     frame.CopyTo(_frame);
-                    _start = (int)buffer.Start.GetInteger();
+                    _start += held - (int)buffer.Length;
                 }
                 else if (scan == FrameScanResult.Overflow)
                 {
@@ -231,7 +232,7 @@ internal sealed class FrameChannel : IValueTaskSource<bool>
                 else
                 {
                     // Noise skipped before a frame's start is gone for good.
-                    _start = (int)buffer.Start.GetInteger();
+                    _start += held - (int)buffer.Length;
                     if (_deadlinePassed)
                     {
                         error = new HostLinkTimeoutException($"No answer from {_description} within {timeout.TotalMilliseconds:0} ms.", timeout);

@@ -81,6 +81,10 @@ internal sealed class ScriptedPlc : IAsyncDisposable
         catch (IOException)
         {
         }
+        catch (InvalidOperationException)
+        {
+            // The far end closed the in-memory link under a pending read.
+        }
     }
 
     private async Task SendAsync(Reply reply)
