@@ -121,7 +121,7 @@ internal sealed class ConnectionOptions
         {
             (string host, int tcpPort) = ParseEndpoint(tcp, "--tcp");
             SerialLineSettings line = SerialSettings(parse, "tcp");
-            options.LineTiming = new Link.LineTiming(line.BaudRate, line.BitsPerCharacter);
+            options.LineTiming = new LineTiming(line.BaudRate, line.BitsPerCharacter);
             client = HostLinkClient.ForTcp(host, tcpPort, options, TimeSpan.FromSeconds(5));
         }
         else

@@ -1,6 +1,6 @@
 using System.Diagnostics;
 using System.Globalization;
-using OmronHostLink.Link;
+using OmronHostLink.Transports;
 using OmronHostLink.Planning;
 using OmronHostLink.Simulator;
 using OmronHostLink.Simulator.Hosting;
@@ -23,6 +23,8 @@ internal static class WireEfficiency
         int runs = 5;
         bool skipPlan = false;
         bool skipWire = false;
+        bool skipTcp = false;
+        int tcpTransactions = 301;
         for (int i = 0; i < args.Length; i++)
         {
             switch (args[i])
@@ -32,6 +34,17 @@ internal static class WireEfficiency
                     break;
                 case "--plan-only":
                     skipWire = true;
+                    skipTcp = true;
+                    break;
+                case "--tcp-only":
+                    skipWire = true;
+                    skipPlan = true;
+                    break;
+                case "--no-tcp":
+                    skipTcp = true;
+                    break;
+                case "--tcp-transactions":
+                    tcpTransactions = int.Parse(args[++i], CultureInfo.InvariantCulture);
                     break;
                 case "--no-plan":
                     skipPlan = true;
@@ -84,6 +97,11 @@ internal static class WireEfficiency
             Console.WriteLine("| Line | Turnaround | One transaction | Split into 30-word RDs | Split / one | Characters (split vs one) |");
             Console.WriteLine("|---|---|---|---|---|---|");
             splits.ForEach(Console.WriteLine);
+        }
+
+        if (!skipTcp)
+        {
+            await MinimalClientComparison.RunAsync(tcpTransactions);
         }
 
         if (!skipPlan)

@@ -1,6 +1,6 @@
 using Microsoft.Extensions.Hosting;
 using Microsoft.Extensions.Logging;
-using OmronHostLink.Link;
+using OmronHostLink.Transports;
 using OmronHostLink.Worker.Configuration;
 using OmronHostLink.Worker.Mqtt;
 

@@ -1,3 +1,4 @@
+using OmronHostLink.Protocol;
 using OmronHostLink.Protocol.CMode;
 using OmronHostLink.Protocol.Fins;
 
@@ -69,7 +70,7 @@ public partial class HostLinkUnit
             int bit = address.Bit + done;
             PlcAddress from = first.Offset(bit / 16).WithBit(bit % 16);
             var command = MemoryAreaWriteCommand.Bits(FinsAddressing.Bit(from), values.Span.Slice(done, n));
-            await FinsAsync(command, 0, retryable: Options.WriteRetries > 0, ExpectNoData, "0102", cancellationToken).ConfigureAwait(false);
+            await FinsAsync(command, 0, CommandEffect.Idempotent, ExpectNoData, "0102", cancellationToken).ConfigureAwait(false);
             done += n;
         }
     }
@@ -90,8 +91,6 @@ public partial class HostLinkUnit
         var command = new AreaReadCommand(CModeArea.TimerCounterStatus, begin, count);
         return CModeAsync(
             command,
-            2 + count,
-            retryable: true,
             static (data, n) =>
             {
                 var flags = new bool[n];
@@ -112,7 +111,7 @@ public partial class HostLinkUnit
         return FinsAsync(
             new MemoryAreaReadCommand(FinsAddressing.Bit(address), count),
             count,
-            retryable: true,
+            CommandEffect.ReadOnly,
             static (data, n) => FinsBits.Read(data, n),
             count,
             cancellationToken);

@@ -1,3 +1,4 @@
+using OmronHostLink.Protocol;
 using OmronHostLink.Protocol.Fins;
 
 namespace OmronHostLink;
@@ -211,7 +212,7 @@ public partial class HostLinkUnit
             int bit = address.Bit + done;
             PlcAddress from = first.Offset(bit / 16).WithBit(bit % 16);
             var command = MemoryAreaWriteCommand.Bits(FinsAddressing.Bit(from), bits.AsSpan(done, n));
-            await FinsAsync(command, 0, retryable: Options.WriteRetries > 0, ExpectNoData, "0102", cancellationToken).ConfigureAwait(false);
+            await FinsAsync(command, 0, CommandEffect.Idempotent, ExpectNoData, "0102", cancellationToken).ConfigureAwait(false);
             done += n;
         }
     }

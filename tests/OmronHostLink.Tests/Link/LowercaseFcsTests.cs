@@ -1,6 +1,7 @@
 using OmronHostLink.Link;
 using OmronHostLink.Simulator.Hosting;
 using OmronHostLink.Tests.Infrastructure;
+using OmronHostLink.Transports;
 
 namespace OmronHostLink.Tests.Link;
 
