@@ -10,7 +10,8 @@ public partial class HostLinkUnit
     /// <summary>
     /// Reads <paramref name="count"/> consecutive bits from <paramref name="address"/> in one command: bits of a word
     /// area (<c>CIO100.14</c>, continuing across word boundaries) from one read of the words they cover, or timer/counter
-    /// completion flags (<c>T0</c>, <c>C10</c>: that flag and the next ones) from one C-mode RG or one FINS 0101.
+    /// completion flags (<c>T0</c>, <c>C10</c>: that flag and the next ones) from one C-mode RG or FINS 0101 (split only
+    /// beyond one answer frame's bits).
     /// </summary>
     /// <exception cref="ArgumentException">The address names a word of a word area, or the range does not fit the area or the protocol (nothing is sent).</exception>
     public async ValueTask<bool[]> ReadBitsAsync(PlcAddress address, int count, CancellationToken cancellationToken = default)
@@ -18,10 +19,7 @@ public partial class HostLinkUnit
         Guard.InRange(count, 1, 10000, nameof(count));
         if (address.Area is PlcArea.Timer or PlcArea.Counter)
         {
-            address.EnsureRange(count, Options.CommandSet, forWrite: false);
-            return Options.CommandSet == HostLinkCommandSet.Fins
-                ? await FinsReadFlagsAsync(address, count, cancellationToken).ConfigureAwait(false)
-                : await CModeReadFlagsAsync(address, count, cancellationToken).ConfigureAwait(false);
+            return await ReadCompletionFlagsAsync(address, count, cancellationToken).ConfigureAwait(false);
         }
 
         EnsureBitAddress(address);
@@ -83,37 +81,5 @@ public partial class HostLinkUnit
         {
             throw new ArgumentException($"{address} names a word; a bit address has a bit number, as in {address}.05.", nameof(address));
         }
-    }
-
-    private ValueTask<bool[]> CModeReadFlagsAsync(PlcAddress address, int count, CancellationToken cancellationToken)
-    {
-        int begin = address.Area == PlcArea.Counter ? 2048 + address.Word : address.Word;
-        var command = new AreaReadCommand(CModeArea.TimerCounterStatus, begin, count);
-        return CModeAsync(
-            command,
-            static (data, n) =>
-            {
-                var flags = new bool[n];
-                CModeResponse.ReadFlags(data, flags);
-                return flags;
-            },
-            count,
-            cancellationToken);
-    }
-
-    private ValueTask<bool[]> FinsReadFlagsAsync(PlcAddress address, int count, CancellationToken cancellationToken)
-    {
-        if (count > MemoryAreaReadCommand.MaxBits)
-        {
-            throw new ArgumentException($"One FINS read carries at most {MemoryAreaReadCommand.MaxBits} completion flags; {count} were asked for.", nameof(count));
-        }
-
-        return FinsAsync(
-            new MemoryAreaReadCommand(FinsAddressing.Bit(address), count),
-            count,
-            CommandEffect.ReadOnly,
-            static (data, n) => FinsBits.Read(data, n),
-            count,
-            cancellationToken);
     }
 }
