@@ -25,6 +25,7 @@ internal static class WireEfficiency
         bool skipWire = false;
         bool skipTcp = false;
         int tcpTransactions = 301;
+        int[] bauds = [9600, 115200];
         for (int i = 0; i < args.Length; i++)
         {
             switch (args[i])
@@ -43,6 +44,9 @@ internal static class WireEfficiency
                 case "--no-tcp":
                     skipTcp = true;
                     break;
+                case "--baud":
+                    bauds = [int.Parse(args[++i], CultureInfo.InvariantCulture)];
+                    break;
                 case "--tcp-transactions":
                     tcpTransactions = int.Parse(args[++i], CultureInfo.InvariantCulture);
                     break;
@@ -59,7 +63,7 @@ internal static class WireEfficiency
             Console.WriteLine("| Line | Turnaround | Words | Frames | Chars on wire | Theoretical ms | Measured ms (median) | Min–max ms | Efficiency |");
             Console.WriteLine("|---|---|---|---|---|---|---|---|---|");
             var splits = new List<string>();
-            foreach (int baud in new[] { 9600, 115200 })
+            foreach (int baud in bauds)
             {
                 foreach (int turnaround in new[] { 0, 10 })
                 {
