@@ -84,9 +84,11 @@ internal sealed class PacedSerialStream(Stream inner, int baudRate, int bitsPerC
     {
         _outboundFreeAt = Math.Max(Stopwatch.GetTimestamp(), _outboundFreeAt) + (long)(buffer.Length * _ticksPerCharacter);
         await WaitUntilAsync(_outboundFreeAt, cancellationToken).ConfigureAwait(false);
+        // Stamped before the send: the send wakes the host, which on a busy machine may run (and answer) before this
+        // thread runs again.
+        _answerSentAt = Stopwatch.GetTimestamp();
         await inner.WriteAsync(buffer, cancellationToken).ConfigureAwait(false);
         Interlocked.Add(ref _charactersOut, buffer.Length);
-        _answerSentAt = Stopwatch.GetTimestamp();
     }
 
     public override Task<int> ReadAsync(byte[] buffer, int offset, int count, CancellationToken cancellationToken)
