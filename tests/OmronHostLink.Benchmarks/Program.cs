@@ -1,8 +1,10 @@
 using BenchmarkDotNet.Running;
 using OmronHostLink.Benchmarks;
+using OmronHostLink.Benchmarks.Scale;
 
 // dotnet run -c Release --project tests/OmronHostLink.Benchmarks -- wire [--runs N] [--baud N] [--no-plan | --plan-only | --tcp-only | --no-tcp] [--tcp-transactions N]
 // dotnet run -c Release --project tests/OmronHostLink.Benchmarks -- serial [--rounds N] [--reads N]
+// dotnet run -c Release --project tests/OmronHostLink.Benchmarks -- scale [--links 1,10,50,100] [--seconds 60] [--tags 10]
 // dotnet run -c Release --project tests/OmronHostLink.Benchmarks -- --filter '*'
 if (args.Length > 0 && args[0] == "wire")
 {
@@ -12,6 +14,11 @@ if (args.Length > 0 && args[0] == "wire")
 if (args.Length > 0 && args[0] == "serial")
 {
     return await SerialEfficiency.RunAsync(args[1..]);
+}
+
+if (args.Length > 0 && args[0] == "scale")
+{
+    return await ScaleBenchmark.RunAsync(args[1..]);
 }
 
 BenchmarkSwitcher.FromAssembly(typeof(ProtocolBenchmarks).Assembly).Run(args);
