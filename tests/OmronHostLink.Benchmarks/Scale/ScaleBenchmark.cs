@@ -2,7 +2,7 @@ using System.Diagnostics;
 using System.Globalization;
 using System.Runtime.InteropServices;
 using System.Text.Json.Nodes;
-using OmronHostLink.Link;
+using OmronHostLink.Transports;
 using OmronHostLink.Planning;
 using OmronHostLink.Simulator;
 
