@@ -334,6 +334,28 @@ public sealed class WatchTests
     }
 
     [Fact]
+    public async Task A_timer_completion_flag_is_watched_apart_from_its_present_value()
+    {
+        await using InProcessLine line = InProcessLine.Start();
+        var clock = new SteppingClock();
+        PlcTag[] tags = [PlcTag.Parse("T5:bit"), PlcTag.Parse("T5")];
+        await using IAsyncEnumerator<WatchEvent> watch = line.Client
+            .WatchAsync(tags, new WatchOptions { Interval = Second, TimeProvider = clock })
+            .GetAsyncEnumerator();
+        (await Next(watch)).NewValue.Should().Be(PlcValue.FromBit(false));
+        (await Next(watch)).NewValue.Should().Be(PlcValue.FromWord(0));
+
+        ValueTask<bool> pending = watch.MoveNextAsync();
+        await clock.NextTimerAsync();
+        line.Plc.SetFlag(PlcArea.Timer, 5, true);
+        clock.Advance(Second);
+        WatchEvent change = await Completed(pending, watch);
+        change.Tag.Should().BeSameAs(tags[0]);
+        change.NewValue.Should().Be(PlcValue.FromBit(true));
+        line.FramesSent.Should().Be(4, "each cycle reads the flag (RG) and the present value (RC)");
+    }
+
+    [Fact]
     public async Task A_cap_below_the_retry_interval_is_refused()
     {
         await using InProcessLine line = InProcessLine.Start();
