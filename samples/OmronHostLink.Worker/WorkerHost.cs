@@ -9,7 +9,7 @@ using OmronHostLink.Worker.Simulation;
 
 namespace OmronHostLink.Worker;
 
-/// <summary>Builds the worker's generic host: options, validation, the optional simulator and the link pollers.</summary>
+/// <summary>Builds the worker's generic host: options, validation, a client per link, the optional simulator and the link pollers.</summary>
 public static class WorkerHost
 {
     /// <summary>The Windows service name (deploy/install-service.ps1 registers the service under it).</summary>
@@ -35,6 +35,7 @@ public static class WorkerHost
             .Bind(builder.Configuration.GetSection(WorkerOptions.SectionName))
             .ValidateOnStart();
         services.AddSingleton<IValidateOptions<WorkerOptions>, WorkerOptionsValidator>();
+        services.AddLinkClients(builder.Configuration);
 
         services.AddOptions<SimulatorOptions>()
             .Bind(builder.Configuration.GetSection(SimulatorOptions.SectionName))
