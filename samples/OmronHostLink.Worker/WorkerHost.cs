@@ -6,6 +6,7 @@ using OmronHostLink.Worker.Configuration;
 using OmronHostLink.Worker.Mqtt;
 using OmronHostLink.Worker.Polling;
 using OmronHostLink.Worker.Simulation;
+using OmronHostLink.Worker.Telemetry;
 
 namespace OmronHostLink.Worker;
 
@@ -50,6 +51,7 @@ public static class WorkerHost
         services.AddMqttOutput(builder.Configuration);
         services.AddSingleton<PollingHostedService>();
         services.AddHostedService(sp => sp.GetRequiredService<PollingHostedService>());
+        services.AddTelemetryExport(builder.Configuration);
 
         // Each is a no-op unless its service manager started the process. Windows: reports SERVICE_RUNNING/STOPPED to
         // the service control manager, turns a service stop into a graceful shutdown and logs to the event log.
