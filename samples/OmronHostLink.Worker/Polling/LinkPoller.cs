@@ -75,14 +75,7 @@ internal sealed class LinkPoller(string name, LinkOptions options, Func<HostLink
         {
             try
             {
-                await foreach (WatchEvent e in group.Unit.WatchAsync(group.Tags, watch, stoppingToken).ConfigureAwait(false))
-                {
-                    // Not asking for the next event holds the watch: a group waits here while another probes its unit.
-                    if (Handle(group, e) is { } unitAnswers)
-                    {
-                        await unitAnswers.WaitAsync(stoppingToken).ConfigureAwait(false);
-                    }
-                }
+                await WatchOnceAsync(group, watch, stoppingToken).ConfigureAwait(false);
             }
             catch (Exception e) when (!stoppingToken.IsCancellationRequested)
             {
@@ -101,6 +94,53 @@ internal sealed class LinkPoller(string name, LinkOptions options, Func<HostLink
 
                 await Task.Delay(group.Interval, time, stoppingToken).ConfigureAwait(false);
             }
+        }
+    }
+
+    private async Task WatchOnceAsync(PollGroup group, WatchOptions watch, CancellationToken stoppingToken)
+    {
+        IAsyncEnumerator<WatchEvent> events = group.Unit.WatchAsync(group.Tags, watch, stoppingToken).GetAsyncEnumerator(stoppingToken);
+        Task<bool> next = events.MoveNextAsync().AsTask();
+        try
+        {
+            while (await next.ConfigureAwait(false))
+            {
+                WatchEvent e = events.Current;
+                if (e.Kind != WatchEventKind.Polled)
+                {
+                    // Not asking for the next event holds the watch: a group waits here while another probes its unit.
+                    if (Handle(group, e) is { } unitAnswers)
+                    {
+                        await unitAnswers.WaitAsync(stoppingToken).ConfigureAwait(false);
+                    }
+
+                    next = events.MoveNextAsync().AsTask();
+                    continue;
+                }
+
+                // Queue for the next read (past an overrun report, which comes first) before logging and publishing
+                // this one: the group is back at the link's gate as soon as its read is done, so on a busy link the
+                // groups keep their turns whatever their handling costs.
+                next = events.MoveNextAsync().AsTask();
+                WatchEvent? overrun = null;
+                if (next.IsCompletedSuccessfully && next.Result && events.Current.Kind == WatchEventKind.Overrun)
+                {
+                    overrun = events.Current;
+                    next = events.MoveNextAsync().AsTask();
+                }
+
+                _ = Handle(group, e); // Never holds back: the unit answered.
+                if (overrun is not null)
+                {
+                    _ = Handle(group, overrun);
+                }
+            }
+        }
+        finally
+        {
+            // A read may still be under way (when handling failed); the watch can only be closed after it.
+            await ((Task)next).ConfigureAwait(ConfigureAwaitOptions.SuppressThrowing);
+            await events.DisposeAsync().ConfigureAwait(false);
         }
     }
 

@@ -23,7 +23,7 @@ public sealed class LinkSchedulingTests(ITestOutputHelper output) : IAsyncLifeti
 
     public async Task InitializeAsync()
     {
-        var plc = new VirtualPlc(new VirtualPlcOptions { Units = [0], Turnaround = TimeSpan.FromMilliseconds(1) });
+        var plc = new VirtualPlc(new VirtualPlcOptions { Units = [0], Turnaround = TimeSpan.FromMilliseconds(5) });
         _simulator = await RecordingSimulator.StartAsync(plc);
     }
 

@@ -247,19 +247,19 @@ public sealed class WorkerHostTests(ITestOutputHelper output) : IDisposable
     {
         // Every answer frame waits for a PLC turnaround, as on a real line: the link, not the worker's handling of what
         // it read, is what the groups share.
-        var plc = new VirtualPlc(new VirtualPlcOptions { Turnaround = TimeSpan.FromMilliseconds(1) });
+        var plc = new VirtualPlc(new VirtualPlcOptions { Turnaround = TimeSpan.FromMilliseconds(5) });
         await using TcpSimulatorHost simulator = await StartSimulator(plc);
         Dictionary<string, string?> config = Link(simulator.EndPoint.Port);
-        // Two groups that want the link all the time (1 ms) and one at 250 ms: the link is saturated.
+        // Two groups that want the link all the time (1 ms) and one at 500 ms: the link is saturated.
         Group(config, "big", "D0", type: "word", count: 400, intervalMs: 1);
         Group(config, "small", "D1000", type: "word", intervalMs: 1);
-        Group(config, "slow", "D2000", type: "word", intervalMs: 250);
+        Group(config, "slow", "D2000", type: "word", intervalMs: 500);
         var logs = new CapturingLoggerProvider();
         using IHost host = BuildHost(config, logs);
         await host.StartAsync();
         try
         {
-            await Eventually(() => Values(logs, "slow").Count() >= 5, "the 250 ms group runs repeatedly", logs);
+            await Eventually(() => Values(logs, "slow").Count() >= 5, "the 500 ms group runs repeatedly", logs);
         }
         finally
         {
