@@ -1,5 +1,6 @@
 using Microsoft.Extensions.Configuration;
 using Microsoft.Extensions.DependencyInjection;
+using Microsoft.Extensions.Options;
 using OmronHostLink.DependencyInjection;
 using OmronHostLink.Transports;
 
@@ -31,7 +32,8 @@ public static class LinkClients
             return services; // A value the binder cannot convert: start-up reports it.
         }
 
-        if (options is null || new WorkerOptionsValidator().Validate(null, options).Failed)
+        services.AddSingleton<IValidateOptions<WorkerOptions>, LineSpeedValidator>();
+        if (options is null || new WorkerOptionsValidator().Validate(null, options).Failed || new LineSpeedValidator().Validate(null, options).Failed)
         {
             return services;
         }
@@ -76,5 +78,23 @@ public static class LinkClients
 
         // The line behind the serial-device server: its speed sets the frame deadlines (Omron's 7E2 format).
         settings.Serial.BaudRate = link.LineBaudRate;
+    }
+
+    /// <summary>
+    /// A serial-device server's line runs at a standard rate, as the client settings require: a <c>LineBaudRate</c> that
+    /// is not one is reported by its own key rather than as the client's <c>Serial:BaudRate</c>.
+    /// </summary>
+    private sealed class LineSpeedValidator : IValidateOptions<WorkerOptions>
+    {
+        private static readonly int[] StandardRates = [300, 600, 1200, 1800, 2400, 4800, 9600, 19200, 38400, 57600, 115200, 230400];
+
+        public ValidateOptionsResult Validate(string? name, WorkerOptions options)
+        {
+            string[] failures = options.Links
+                .Where(l => l.Value is { Enabled: true, LineBaudRate: { } baud } && Array.IndexOf(StandardRates, baud) < 0)
+                .Select(l => $"{WorkerOptions.SectionName}:Links:{l.Key}:LineBaudRate {l.Value.LineBaudRate} is not a standard rate ({string.Join(", ", StandardRates)}).")
+                .ToArray();
+            return failures.Length == 0 ? ValidateOptionsResult.Success : ValidateOptionsResult.Fail(failures);
+        }
     }
 }

@@ -101,6 +101,22 @@ public sealed class LinkClientsTests
         failures.Should().OnlyContain(f => f.StartsWith("HostLink:Links:press", StringComparison.Ordinal), "each problem is reported once, by its worker key");
     }
 
+    [Fact]
+    public async Task A_line_speed_the_client_cannot_take_is_reported_by_its_worker_key()
+    {
+        using IHost host = Build(new()
+        {
+            ["HostLink:Links:press:Tcp"] = "127.0.0.1:1",
+            ["HostLink:Links:press:LineBaudRate"] = "100000",
+            ["HostLink:Links:press:Groups:g:Address"] = "D0",
+        });
+
+        Exception? error = await Record.ExceptionAsync(() => host.StartAsync());
+
+        error.Should().BeOfType<OptionsValidationException>().Which.Failures.Should().ContainSingle()
+            .Which.Should().StartWith("HostLink:Links:press:LineBaudRate 100000 is not a standard rate (300, 600,");
+    }
+
     private static IHost Build(Dictionary<string, string?> config)
     {
         var configuration = new ConfigurationManager();
