@@ -1,6 +1,8 @@
+using Microsoft.Extensions.Configuration;
 using Microsoft.Extensions.DependencyInjection;
 using Microsoft.Extensions.DependencyInjection.Extensions;
 using Microsoft.Extensions.Hosting;
+using Microsoft.Extensions.Logging;
 using Microsoft.Extensions.Options;
 using OmronHostLink.Worker.Configuration;
 using OmronHostLink.Worker.Mqtt;
@@ -27,22 +29,49 @@ public static class WorkerHost
     public static HostApplicationBuilder CreateBuilder(HostApplicationBuilderSettings settings)
         => Configure(Host.CreateApplicationBuilder(settings));
 
+    /// <summary>The generic host's own log category, where a failed start is logged with its stack trace.</summary>
+    private const string HostCategory = "Microsoft.Extensions.Hosting.Internal.Host";
+
+    /// <summary>
+    /// Binds without throwing: a value the binder cannot convert is reported, with its key, by the validators'
+    /// <see cref="ConfigurationSchema"/> check, and the host then refuses to start.
+    /// </summary>
+    private static void BindLeniently(IConfiguration section, object options)
+    {
+        try
+        {
+            section.Bind(options);
+        }
+        catch (InvalidOperationException)
+        {
+        }
+    }
+
     private static HostApplicationBuilder Configure(HostApplicationBuilder builder)
     {
         IServiceCollection services = builder.Services;
         services.TryAddSingleton(TimeProvider.System);
 
+        IConfigurationSection hostLink = builder.Configuration.GetSection(WorkerOptions.SectionName);
         services.AddOptions<WorkerOptions>()
-            .Bind(builder.Configuration.GetSection(WorkerOptions.SectionName))
+            .Configure(options => BindLeniently(hostLink, options))
             .ValidateOnStart();
         services.AddSingleton<IValidateOptions<WorkerOptions>, WorkerOptionsValidator>();
         services.AddLinkClients(builder.Configuration);
 
+        IConfigurationSection simulator = builder.Configuration.GetSection(SimulatorOptions.SectionName);
         services.AddOptions<SimulatorOptions>()
-            .Bind(builder.Configuration.GetSection(SimulatorOptions.SectionName))
+            .Configure(options => BindLeniently(simulator, options))
             .ValidateDataAnnotations()
             .ValidateOnStart();
         services.AddSingleton<IValidateOptions<SimulatorOptions>, SimulatorOptionsValidator>();
+
+        if (!StartupCheck.Passes(builder.Configuration))
+        {
+            // The start is going to fail validation, and Program prints every failure, each naming its key. The host
+            // would first log "Hosting failed to start" with the framework's stack trace: that is all noise here.
+            builder.Logging.AddFilter(HostCategory, LogLevel.None);
+        }
 
         // Order matters: hosted services start in registration order and stop in reverse, so the simulator listens
         // before the links connect and outlives them, and the MQTT output sends the links' last states.

@@ -40,9 +40,14 @@ internal static class Addresses
         }
         catch (ArgumentException e)
         {
-            throw new UsageException(FirstSentence(e.Message), e);
+            throw new UsageException(InCliWords(FirstSentence(e.Message)), e);
         }
     }
+
+    /// <summary>The library's advice in the console's terms: "use FINS" is the option <c>--fins</c> here.</summary>
+    public static string InCliWords(string message)
+        => message.Replace("; use FINS", "; add --fins", StringComparison.Ordinal)
+            .Replace(", use FINS", ", add --fins", StringComparison.Ordinal);
 
     /// <summary>An ArgumentException message without the "(Parameter 'x')" suffix.</summary>
     public static string FirstSentence(string message)

@@ -1,4 +1,5 @@
 using System.CommandLine;
+using System.Text.Json;
 using OmronHostLink.Cli.Commands;
 
 namespace OmronHostLink.Cli;
@@ -6,6 +7,9 @@ namespace OmronHostLink.Cli;
 /// <summary>The <c>hostlink</c> command line: parses, runs one command, and returns its exit code.</summary>
 internal static class CliApp
 {
+    /// <summary>How long a command may take to stop after Ctrl+C or SIGTERM before the process is ended.</summary>
+    public static readonly TimeSpan StopGrace = TimeSpan.FromSeconds(5);
+
     /// <summary>Runs the command line <paramref name="args"/> with the given output streams.</summary>
     /// <param name="args">The arguments after the program name.</param>
     /// <param name="stdout">Results.</param>
@@ -21,12 +25,19 @@ internal static class CliApp
         bool helpOrVersion = parse.Action is { ClearsParseErrors: true };
         if (parse.Errors.Count > 0 && !helpOrVersion)
         {
+            string name = parse.CommandResult.Command is RootCommand ? "hostlink" : "hostlink " + parse.CommandResult.Command.Name;
+            if (args.Contains("--json", StringComparer.Ordinal))
+            {
+                // A script that asked for JSON gets its one document even when the command line itself is wrong.
+                string message = string.Join(" ", parse.Errors.Select(e => e.Message));
+                stdout.WriteLine(JsonSerializer.Serialize(new ErrorDocument(new ErrorInfo("usage", null, message)), CliJsonContext.Console.ErrorDocument));
+            }
+
             foreach (System.CommandLine.Parsing.ParseError error in parse.Errors)
             {
                 stderr.WriteLine(error.Message);
             }
 
-            string name = parse.CommandResult.Command is RootCommand ? "hostlink" : "hostlink " + parse.CommandResult.Command.Name;
             stderr.WriteLine($"Run '{name} --help' for usage.");
             return ExitCodes.InvalidInput;
         }
@@ -38,7 +49,36 @@ internal static class CliApp
             EnableDefaultExceptionHandler = false,
             ProcessTerminationTimeout = null,
         };
+        if (parse.Action is System.CommandLine.Help.HelpAction)
+        {
+            var help = new StringWriter();
+            int code = await parse.InvokeAsync(new InvocationConfiguration { Output = help, Error = stderr, EnableDefaultExceptionHandler = false, ProcessTerminationTimeout = null }, cancellationToken).ConfigureAwait(false);
+            await stdout.WriteAsync(HelpText.MarkOptionalArguments(help.ToString(), parse.CommandResult.Command)).ConfigureAwait(false);
+            return code;
+        }
+
         return await parse.InvokeAsync(invocation, cancellationToken).ConfigureAwait(false);
+    }
+
+    /// <summary><c>hostlink help [command]</c>: the same as <c>--help</c>, for those who type it the other way round.</summary>
+    private static Command HelpCommand(CliContext context)
+    {
+        var command = new Command("help", "Show the help of hostlink or of one command: hostlink help read.");
+        var name = new Argument<string?>("command") { Description = "The command to explain (default: all commands).", Arity = ArgumentArity.ZeroOrOne };
+        command.Add(name);
+        command.SetAction(async (parse, cancellationToken) =>
+        {
+            string? target = parse.GetValue(name);
+            Command root = parse.RootCommandResult.Command;
+            if (target is not null && !root.Subcommands.Any(c => c.Name == target))
+            {
+                context.Error.WriteLine($"There is no command '{target}'; run 'hostlink help' for the list.");
+                return ExitCodes.InvalidInput;
+            }
+
+            return await RunAsync(target is null ? ["--help"] : [target, "--help"], context.Out, context.Error, cancellationToken).ConfigureAwait(false);
+        });
+        return command;
     }
 
     internal static RootCommand BuildRoot(CliContext context)
@@ -59,6 +99,7 @@ internal static class CliApp
         root.Add(RawCommand.Create(context));
         root.Add(SimulateCommand.Create(context));
         root.Add(DemoCommand.Create(context));
+        root.Add(HelpCommand(context));
         return root;
     }
 }

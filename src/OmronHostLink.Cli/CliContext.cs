@@ -43,12 +43,12 @@ internal sealed class CliContext
             }
             catch (OperationCanceledException) when (cancellationToken.IsCancellationRequested)
             {
-                output.Fail("Cancelled.");
+                output.Report(new ErrorInfo("cancelled", null, "Cancelled."));
                 return ExitCodes.Failure;
             }
             catch (Exception e)
             {
-                output.Fail(Describe(e, parse));
+                output.Report(ErrorOf(e));
                 if (output.Verbose)
                 {
                     output.Fail(e.ToString());
@@ -59,13 +59,34 @@ internal sealed class CliContext
         });
     }
 
+    /// <summary>The failure as the JSON error document describes it.</summary>
+    public static ErrorInfo ErrorOf(Exception e) => new(KindOf(e), EndCodeOf(e), Describe(e));
+
+    /// <summary><c>endCode</c>, <c>timeout</c>, <c>frame</c>, <c>connection</c>, <c>usage</c> or <c>other</c>.</summary>
+    public static string KindOf(Exception e) => e switch
+    {
+        HostLinkEndCodeException or FinsEndCodeException => "endCode",
+        HostLinkTimeoutException => "timeout",
+        HostLinkFrameException => "frame",
+        HostLinkConnectionException => "connection",
+        UsageException or ArgumentException => "usage",
+        _ => "other",
+    };
+
+    private static string? EndCodeOf(Exception e) => e switch
+    {
+        HostLinkEndCodeException c => c.EndCode.ToCode(),
+        FinsEndCodeException f => f.EndCode.ToString(),
+        _ => null,
+    };
+
     /// <summary>One sentence for the user.</summary>
     public static string Describe(Exception e, ParseResult? parse = null)
     {
         string message = e switch
         {
             UsageException => e.Message,
-            ArgumentException => Addresses.FirstSentence(e.Message),
+            ArgumentException => Addresses.InCliWords(Addresses.FirstSentence(e.Message)),
             HostLinkException => e.Message,
             _ => $"{e.GetType().Name}: {e.Message}",
         };

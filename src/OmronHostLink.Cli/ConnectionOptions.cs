@@ -12,17 +12,14 @@ internal sealed class ConnectionOptions
         DefaultTimeoutMs = defaultTimeoutMs;
         DefaultRetries = defaultRetries;
         Port = new Option<string?>("--port") { Description = "Serial port: COM3, /dev/ttyUSB0, or any device path (a pty).", HelpName = "name" };
-        Baud = new Option<int>("--baud") { Description = "Baud rate.", DefaultValueFactory = _ => 9600, HelpName = "n" };
-        DataBits = new Option<int>("--data-bits") { Description = "Data bits: 7 or 8.", DefaultValueFactory = _ => 7, HelpName = "7|8" };
-        DataBits.AcceptOnlyFromAmong("7", "8");
-        Parity = new Option<string>("--parity") { Description = "Parity.", DefaultValueFactory = _ => "even", HelpName = "none|even|odd" };
-        Parity.AcceptOnlyFromAmong("none", "even", "odd");
-        StopBits = new Option<int>("--stop-bits") { Description = "Stop bits: 1 or 2.", DefaultValueFactory = _ => 2, HelpName = "1|2" };
-        StopBits.AcceptOnlyFromAmong("1", "2");
+        Baud = OptionValues.BaudRate("--baud", "Baud rate.", 9600);
+        DataBits = OptionValues.IntegerChoice("--data-bits", "Data bits: 7 or 8.", 7, 7, 8);
+        Parity = OptionValues.Choice("--parity", "Parity.", "even", "none", "even", "odd");
+        StopBits = OptionValues.IntegerChoice("--stop-bits", "Stop bits: 1 or 2.", 2, 1, 2);
         Tcp = new Option<string?>("--tcp") { Description = "A serial device server or the simulator, as host:port.", HelpName = "host:port" };
-        Unit = new Option<int>("--unit") { Description = "The PLC's unit number, 0-31.", DefaultValueFactory = _ => 0, HelpName = "0-31" };
-        Timeout = new Option<int?>("--timeout") { Description = "Milliseconds the PLC may take to start answering a frame (the wire time is added).", HelpName = "ms" };
-        Retries = new Option<int?>("--retries") { Description = "Times a read is repeated after a timeout or damaged frame (writes are never repeated).", HelpName = "n" };
+        Unit = OptionValues.Integer("--unit", "The PLC's unit number, 0-31.", 0, 0, 31, "0-31");
+        Timeout = Durations.Option("--timeout", "Time the PLC may take to start answering a frame (the wire time is added); default " + Durations.Format(TimeSpan.FromMilliseconds(defaultTimeoutMs ?? 300)) + ".", null, TimeSpan.FromMilliseconds(1), TimeSpan.FromMinutes(1));
+        Retries = OptionValues.OptionalInteger("--retries", "Times a read is repeated after a timeout or damaged frame, 0-10 (writes are never repeated).", 0, 10, "n");
         Fins = new Option<bool>("--fins") { Description = "Use FINS over Host Link (FA) where C-mode would otherwise be used: reads, writes, bit writes, status and mode." };
     }
 
@@ -46,7 +43,7 @@ internal sealed class ConnectionOptions
 
     public Option<int> Unit { get; }
 
-    public Option<int?> Timeout { get; }
+    public Option<TimeSpan?> Timeout { get; }
 
     public Option<int?> Retries { get; }
 
@@ -101,12 +98,7 @@ internal sealed class ConnectionOptions
         }
 
         int unit = unitOverride >= 0 ? unitOverride : IncludeUnit ? GetUnit(parse) : 0;
-        int timeout = parse.GetValue(Timeout) ?? DefaultTimeoutMs ?? 300;
-        if (timeout is < 1 or > 60000)
-        {
-            throw new UsageException($"--timeout must be 1-60000 ms; {timeout} is not.");
-        }
-
+        TimeSpan timeout = parse.GetValue(Timeout) ?? TimeSpan.FromMilliseconds(DefaultTimeoutMs ?? 300);
         int retries = parse.GetValue(Retries) ?? DefaultRetries ?? 2;
         if (retries is < 0 or > 10)
         {
@@ -116,7 +108,7 @@ internal sealed class ConnectionOptions
         var options = new HostLinkClientOptions
         {
             UnitNumber = unit,
-            TurnaroundAllowance = TimeSpan.FromMilliseconds(timeout),
+            TurnaroundAllowance = timeout,
             ReadRetries = retries,
             WriteRetries = 0,
             WordOrder = WordOrder,
@@ -129,7 +121,7 @@ internal sealed class ConnectionOptions
         {
             (string host, int tcpPort) = ParseEndpoint(tcp, "--tcp");
             SerialLineSettings line = SerialSettings(parse, "tcp");
-            options.LineTiming = new Link.LineTiming(line.BaudRate, line.BitsPerCharacter);
+            options.LineTiming = new LineTiming(line.BaudRate, line.BitsPerCharacter);
             client = HostLinkClient.ForTcp(host, tcpPort, options, TimeSpan.FromSeconds(5));
         }
         else
@@ -168,7 +160,7 @@ internal sealed class ConnectionOptions
         }
         catch (ArgumentException e)
         {
-            throw new UsageException($"The serial settings are not valid: {e.Message}", e);
+            throw new UsageException(OptionValues.SerialMessage(e), e);
         }
 
         return settings;

@@ -18,6 +18,9 @@ internal static class ExitCodes
     /// <summary>Communication failed: timeout, damaged frames, or the port or connection could not be opened.</summary>
     public const int Communication = 4;
 
+    /// <summary><c>errors</c>: the PLC reports error bits (read, and cleared with <c>--clear</c>).</summary>
+    public const int PlcErrors = 5;
+
     /// <summary>The exit code for an exception that ended a command.</summary>
     public static int For(Exception e) => e switch
     {

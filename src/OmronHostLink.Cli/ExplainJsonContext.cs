@@ -16,6 +16,8 @@ namespace OmronHostLink.Cli;
 [JsonSerializable(typeof(string[]))]
 [JsonSerializable(typeof(long[]))]
 [JsonSerializable(typeof(bool[]))]
+[JsonSerializable(typeof(FinsAddressField))]
+[JsonSerializable(typeof(FinsAddressField[]))]
 internal sealed partial class ExplainJsonContext : JsonSerializerContext
 {
     private static JsonSerializerOptions? s_explanationOptions;

@@ -9,7 +9,8 @@ namespace OmronHostLink.Cli;
 /// <summary>
 /// Decodes captured frames without a PLC, with the library's own parsers: <see cref="FrameCheck"/> for shape, FCS and
 /// unit, <see cref="CModeHeaders"/> for header names, <see cref="CModeCommand.Parse"/> and <see cref="CModeResponse"/>
-/// for C-mode fields, <see cref="FinsMessage"/> and <see cref="FinsResponse"/> for FINS.
+/// for C-mode fields, <see cref="FinsMessage"/> and <see cref="FinsResponse"/> for FINS (parameters and answer data in
+/// <see cref="FinsExplainFields"/>). Without a direction from the user, <see cref="FrameDirection"/> tells it.
 /// </summary>
 internal static class FrameExplainer
 {
@@ -37,12 +38,25 @@ internal static class FrameExplainer
         return bytes;
     }
 
-    public static FrameExplanation Explain(string input, bool response)
+    /// <summary>Explains one frame.</summary>
+    /// <param name="input">The frame as the user typed it.</param>
+    /// <param name="response">True for an answer, false for a command, null to tell from the frame where it can.</param>
+    public static FrameExplanation Explain(string input, bool? response)
     {
         byte[] typed = Normalise(input);
-        var x = new FrameExplanation { Frame = FrameText.Printable(typed), IsResponse = response };
+        var x = new FrameExplanation
+        {
+            Frame = FrameText.Printable(typed),
+            IsResponse = response ?? false,
+            DirectionFrom = response is null ? FrameExplanation.FromDefault : FrameExplanation.FromOption,
+        };
         if (typed.AsSpan().SequenceEqual(CModeFrames.Initialize) || typed.AsSpan().SequenceEqual(CModeFrames.Initialize[..^1]))
         {
+            if (response is null)
+            {
+                x.DirectionFrom = FrameExplanation.FromShape;
+            }
+
             x.Header = CModeHeaders.Initialize;
             x.Name = CModeHeaders.Name(CModeHeaders.Initialize);
             x.Notes.Add("INITIALIZE carries no unit number and no FCS; no unit answers it.");
@@ -60,7 +74,7 @@ internal static class FrameExplainer
 
         x.FcsExpected = check.ExpectedFcs.ToString("X2", CultureInfo.InvariantCulture);
         x.FcsFound = Encoding.ASCII.GetString(frame, check.FcsAt, 2);
-        if (check.FcsFault(frame) is { } fcs)
+        if (FcsFault(check, frame, x.FcsFound) is { } fcs)
         {
             x.Problems.Add(fcs);
         }
@@ -69,6 +83,12 @@ internal static class FrameExplainer
         {
             x.Text = Encoding.ASCII.GetString(frame, 0, check.FcsAt);
             x.Notes.Add("No '@': a continuation frame (its FCS covers this frame only); unit and header are in the first frame.");
+            if (response is null)
+            {
+                x.Notes.Add("A continuation frame does not show which way it goes: explained as a frame of a command; give --response for a frame of an answer.");
+            }
+
+            CheckLength(x, frame.Length, first: false, fins: false);
             return x;
         }
 
@@ -89,7 +109,13 @@ internal static class FrameExplainer
         x.Header = header;
         x.Name = CModeHeaders.Name(header);
         x.Text = Encoding.ASCII.GetString(text);
-        switch ((header == CModeHeaders.Fins, response))
+        if (response is null)
+        {
+            FrameDirection.Recognise(x, header, text);
+        }
+
+        CheckLength(x, frame.Length, first: true, fins: header == CModeHeaders.Fins);
+        switch ((header == CModeHeaders.Fins, x.IsResponse))
         {
             case (true, true):
                 ExplainFinsResponse(x, text, check.Unit);
@@ -106,6 +132,70 @@ internal static class FrameExplainer
         }
 
         return x;
+    }
+
+    /// <summary>
+    /// A frame longer than Host Link allows: a PLC answers end code 18 to a first or single C-mode frame over 131
+    /// characters and A8 to a later frame over 128 (the FCS, <c>*</c> and CR counted), and never sends one itself.
+    /// An FA frame is never divided and may hold up to 1,115 characters.
+    /// </summary>
+    private static void CheckLength(FrameExplanation x, int length, bool first, bool fins)
+    {
+        int limit = fins ? FinsMessage.MaxFrameLength : first ? FrameWriter.MaxFirstFrameLength : FrameWriter.MaxContinuationFrameLength;
+        if (length <= limit)
+        {
+            return;
+        }
+
+        string frame = fins ? "an FA frame" : first ? "a frame" : "a later frame of a divided message";
+        string characters = $"The frame is {length} characters long (FCS, '*' and CR counted)";
+        if (x.IsResponse)
+        {
+            x.Problems.Insert(0, $"{characters}; a PLC never sends {frame} over {limit} characters (it divides a longer answer into frames).");
+            return;
+        }
+
+        if (fins)
+        {
+            x.Problems.Insert(0, $"{characters}; {frame} holds at most {limit}.");
+            return;
+        }
+
+        EndCode code = first ? EndCode.FrameLengthError : EndCode.AbortedFrameLengthError;
+        string name = first ? "frame length error" : "aborted: frame length error in a later frame";
+        WouldAnswer(x, code);
+        x.Problems.Insert(0, $"{characters}: a PLC answers end code {code.ToCode()} ({name}) to {frame} over {limit} characters.");
+    }
+
+    /// <summary>The exception's sentence without the frame it quotes (the explanation shows the frame).</summary>
+    internal static string Sentence(HostLinkFrameException e)
+        => e.Frame is { } frame && e.Message.EndsWith($" Frame: {frame}", StringComparison.Ordinal)
+            ? e.Message[..^($" Frame: {frame}".Length)]
+            : e.Message;
+
+    /// <summary>Records the end code a CS/CJ would answer; the first error a PLC detects is the one it answers.</summary>
+    private static bool WouldAnswer(FrameExplanation x, EndCode code)
+    {
+        if (x.Fields.ContainsKey("wouldAnswer"))
+        {
+            return false;
+        }
+
+        x.Field("wouldAnswer", code.ToCode());
+        x.Field("wouldAnswerMeaning", code.Meaning());
+        return true;
+    }
+
+    /// <summary>
+    /// The FCS problem, if any. An FCS that is right but in lower case is named as such: Omron sends it in upper case
+    /// and the library's link compares it character for character, so it refuses one as it refuses any changed character.
+    /// </summary>
+    private static string? FcsFault(FrameCheck check, byte[] frame, string found)
+    {
+        string expected = check.ExpectedFcs.ToString("X2", CultureInfo.InvariantCulture);
+        return FrameExplanation.IsLowercaseOf(found, expected)
+            ? $"FCS '{found}' is a lowercase FCS: the right value, in lower case. Host Link sends the FCS in upper case ('{expected}'); this library's link refuses a lowercase FCS as it refuses any changed character."
+            : check.FcsFault(frame);
     }
 
     /// <summary>The frame with its ending: a frame typed without <c>*</c> or CR is read as a complete (final) frame.</summary>
@@ -151,9 +241,9 @@ internal static class FrameExplainer
         }
         catch (CModeCommandRejectedException e)
         {
-            x.Field("wouldAnswer", e.EndCode.ToCode());
-            x.Field("wouldAnswerMeaning", e.EndCode.Meaning());
-            x.Notes.Add($"A CS/CJ PLC would refuse this command with end code {e.EndCode.ToCode()}: {e.Message}");
+            x.Notes.Add(WouldAnswer(x, e.EndCode)
+                ? $"A CS/CJ PLC would refuse this command with end code {e.EndCode.ToCode()}: {e.Message}"
+                : $"Within the length a PLC takes, it would still refuse this command with end code {e.EndCode.ToCode()}: {e.Message}");
             return;
         }
 
@@ -248,11 +338,13 @@ internal static class FrameExplainer
         }
         catch (HostLinkFrameException e)
         {
-            x.Problems.Add(e.Message);
+            x.Problems.Add(Sentence(e));
         }
     }
 
-    private static void DecodeData(FrameExplanation x, string header, ReadOnlySpan<byte> data)
+    /// <summary>Decodes the data of a normal-completion C-mode answer into fields.</summary>
+    /// <exception cref="HostLinkFrameException">The data does not have the shape of the header's answer.</exception>
+    internal static void DecodeData(FrameExplanation x, string header, ReadOnlySpan<byte> data)
     {
         if (CModeAreaInfo.TryFromHeader(Encoding.ASCII.GetBytes(header), out CModeArea area, out bool write) && !write)
         {
@@ -319,13 +411,27 @@ internal static class FrameExplainer
         }
         catch (HostLinkFrameException e)
         {
-            x.Problems.Add(e.Message);
+            x.Problems.Add(Sentence(e));
             return;
         }
 
         x.Field("responseWaitMs", (long)message.Header.ResponseWaitTime.TotalMilliseconds);
         FinsFields(x, message.Header, message.CommandCode);
         x.Field("parameters", Hex(message.Parameters.Span));
+        FinsCommand command;
+        try
+        {
+            command = message.ToCommand();
+        }
+        catch (FinsFormatException e)
+        {
+            x.Field("wouldAnswer", e.EndCode.ToString());
+            x.Field("wouldAnswerMeaning", e.EndCode.Meaning);
+            x.Notes.Add($"A CS/CJ PLC would answer this command with FINS response code {e.EndCode}: {e.Message}");
+            return;
+        }
+
+        FinsExplainFields.AddParameters(x, command);
     }
 
     private static void ExplainFinsResponse(FrameExplanation x, ReadOnlySpan<byte> text, int unit)
@@ -348,7 +454,7 @@ internal static class FrameExplainer
         }
         catch (HostLinkFrameException e)
         {
-            x.Problems.Add(e.Message);
+            x.Problems.Add(Sentence(e));
             return;
         }
 
@@ -359,6 +465,17 @@ internal static class FrameExplainer
         x.Field("fatalCpuError", response.EndCode.FatalCpuError);
         x.Field("nonFatalCpuError", response.EndCode.NonFatalCpuError);
         x.Field("data", Hex(response.Data.Span));
+        if (response.EndCode.IsSuccess)
+        {
+            try
+            {
+                FinsExplainFields.AddAnswerData(x, response.CommandCode, response.Data.Span);
+            }
+            catch (HostLinkFrameException e)
+            {
+                x.Problems.Add(Sentence(e));
+            }
+        }
     }
 
     /// <summary>The Host Link end code at the start of an answer's text, recorded; false (with the problem) when there is none.</summary>

@@ -64,34 +64,6 @@ internal static class Numbers
         return units.ToArray();
     }
 
-    /// <summary>Parses a duration: <c>500ms</c>, <c>1s</c>, <c>1.5s</c>, <c>2m</c>, or a bare number of seconds.</summary>
-    public static TimeSpan ParseDuration(string text, string option)
-    {
-        string t = text.Trim().ToLowerInvariant();
-        double factor = 1000;
-        if (t.EndsWith("ms", StringComparison.Ordinal))
-        {
-            factor = 1;
-            t = t[..^2];
-        }
-        else if (t.EndsWith('s'))
-        {
-            t = t[..^1];
-        }
-        else if (t.EndsWith('m'))
-        {
-            factor = 60_000;
-            t = t[..^1];
-        }
-
-        if (!double.TryParse(t, NumberStyles.AllowDecimalPoint, CultureInfo.InvariantCulture, out double n) || n * factor < 1 || n * factor > 86_400_000)
-        {
-            throw new UsageException($"{option} '{text}' is not a duration such as 500ms, 1s or 2m (at least 1 ms, at most a day).");
-        }
-
-        return TimeSpan.FromMilliseconds(n * factor);
-    }
-
     public static string Hex(ushort word) => "0x" + word.ToString("X4", CultureInfo.InvariantCulture);
 
     public static string Hex(uint value) => "0x" + value.ToString("X8", CultureInfo.InvariantCulture);

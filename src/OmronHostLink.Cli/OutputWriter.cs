@@ -79,6 +79,35 @@ internal sealed class OutputWriter
         return Encoding.UTF8.GetString(buffer.WrittenSpan);
     }
 
+    /// <summary>
+    /// Reports a failure: its sentence on the error writer, and in JSON mode also the error document on the output, so
+    /// that a script reading stdout always gets one document.
+    /// </summary>
+    public void Report(ErrorInfo error)
+    {
+        lock (_gate)
+        {
+            if (IsJson)
+            {
+                Out.WriteLine(JsonSerializer.Serialize(new ErrorDocument(error), CliJsonContext.Console.ErrorDocument));
+            }
+
+            Error.WriteLine(error.Message);
+        }
+    }
+
+    /// <summary>Writes a source-generated JSON document as one line (JSON mode only).</summary>
+    public void Document<T>(T document, System.Text.Json.Serialization.Metadata.JsonTypeInfo<T> type)
+    {
+        if (IsJson)
+        {
+            lock (_gate)
+            {
+                Out.WriteLine(JsonSerializer.Serialize(document, type));
+            }
+        }
+    }
+
     /// <summary>Writes an error sentence to the error writer.</summary>
     public void Fail(string message)
     {

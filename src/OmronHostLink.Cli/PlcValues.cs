@@ -200,6 +200,8 @@ internal sealed class Snapshot
             case PlcValueType.UInt32:
             case PlcValueType.Float:
                 return $"{value}  ({Numbers.Hex(PlcWords.ReadUInt32(Words.AsSpan(i * 2, 2), Request.Order))})";
+            case PlcValueType.Double:
+                return $"{value}  (0x{BitConverter.DoubleToInt64Bits(value!.Value.ToDouble()):X16})";
             default:
                 ushort w = Words[i];
                 return Kind switch

@@ -4,8 +4,8 @@ namespace OmronHostLink.Cli;
 internal static class ValueKinds
 {
     /// <summary>
-    /// The types the console reads and writes: every <see cref="PlcValueType"/> but LREAL (double) and 8-digit BCD
-    /// (bcd32), which the library and the worker offer and the console's <c>--as</c> does not take.
+    /// The types the console reads and writes: every <see cref="PlcValueType"/> but 8-digit BCD (bcd32), which the
+    /// library and the worker offer and the console's <c>--as</c> does not take.
     /// </summary>
     public static string[] Names => PlcValueTypes.Names.Where(Offered).ToArray();
 
@@ -14,5 +14,5 @@ internal static class ValueKinds
             ? type
             : throw new UsageException($"--as must be one of {string.Join(", ", Names)}; '{text}' is not.");
 
-    private static bool Offered(string name) => name != PlcValueType.Double.Name() && name != PlcValueType.Bcd32.Name();
+    private static bool Offered(string name) => name != PlcValueType.Bcd32.Name();
 }

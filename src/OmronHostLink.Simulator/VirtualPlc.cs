@@ -41,6 +41,10 @@ public sealed class VirtualPlc
     private ushort _error1;
     private ushort _error2;
     private TimeSpan _clockOffset;
+    private bool _umProtected;
+
+    /// <summary>MS program area code 011: 30K steps.</summary>
+    private const int ProgramAreaThirtyKSteps = 0b011;
 
     /// <summary>Creates a PLC with the given options (or the defaults: unit 0, PROGRAM mode, model code 30).</summary>
     /// <param name="options">Units, initial mode and memory, wire-time emulation, faults. The instance is kept; do not change it once sessions run.</param>
@@ -149,6 +153,35 @@ public sealed class VirtualPlc
             }
         }
     }
+
+    /// <summary>
+    /// Whether the user program memory is write-protected (the CPU's DIP switch): bit 7 of the MS status word is 0 then.
+    /// Default false.
+    /// </summary>
+    public bool UserMemoryWriteProtected
+    {
+        get
+        {
+            lock (_gate)
+            {
+                return _umProtected;
+            }
+        }
+
+        set
+        {
+            lock (_gate)
+            {
+                _umProtected = value;
+            }
+        }
+    }
+
+    /// <summary>
+    /// The low byte of the MS status word (W342 4-3-23): bit 7 set when UM is not write-protected, bits 6-4 the
+    /// program area size (011: 30K steps, a CS1/CJ1 CPU's), bits 3-0 zero.
+    /// </summary>
+    internal byte StatusLowByte => (byte)((UserMemoryWriteProtected ? 0x00 : 0x80) | (ProgramAreaThirtyKSteps << 4));
 
     /// <summary>The two words of error information MF reports.</summary>
     public PlcErrorInfo Errors

@@ -33,6 +33,16 @@ public sealed class VirtualPlcOptions
     /// <summary>Faults to inject into answers. Default none.</summary>
     public Faults.FaultOptions Faults { get; set; } = new();
 
+    /// <summary>A copy of these options answering <paramref name="units"/> instead (the fault options are shared, not copied).</summary>
+    /// <param name="units">The unit numbers.</param>
+    /// <returns>The copy.</returns>
+    public VirtualPlcOptions WithUnits(IReadOnlyList<int> units)
+    {
+        var copy = (VirtualPlcOptions)MemberwiseClone();
+        copy.Units = units;
+        return copy;
+    }
+
     /// <summary>Checks the options.</summary>
     /// <exception cref="ArgumentException">A value is out of range.</exception>
     public void Validate()

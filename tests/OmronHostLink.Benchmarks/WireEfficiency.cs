@@ -1,6 +1,6 @@
 using System.Diagnostics;
 using System.Globalization;
-using OmronHostLink.Link;
+using OmronHostLink.Transports;
 using OmronHostLink.Planning;
 using OmronHostLink.Simulator;
 using OmronHostLink.Simulator.Hosting;
@@ -23,6 +23,9 @@ internal static class WireEfficiency
         int runs = 5;
         bool skipPlan = false;
         bool skipWire = false;
+        bool skipTcp = false;
+        int tcpTransactions = 301;
+        int[] bauds = [9600, 115200];
         for (int i = 0; i < args.Length; i++)
         {
             switch (args[i])
@@ -32,6 +35,20 @@ internal static class WireEfficiency
                     break;
                 case "--plan-only":
                     skipWire = true;
+                    skipTcp = true;
+                    break;
+                case "--tcp-only":
+                    skipWire = true;
+                    skipPlan = true;
+                    break;
+                case "--no-tcp":
+                    skipTcp = true;
+                    break;
+                case "--baud":
+                    bauds = [int.Parse(args[++i], CultureInfo.InvariantCulture)];
+                    break;
+                case "--tcp-transactions":
+                    tcpTransactions = int.Parse(args[++i], CultureInfo.InvariantCulture);
                     break;
                 case "--no-plan":
                     skipPlan = true;
@@ -46,7 +63,7 @@ internal static class WireEfficiency
             Console.WriteLine("| Line | Turnaround | Words | Frames | Chars on wire | Theoretical ms | Measured ms (median) | Min–max ms | Efficiency |");
             Console.WriteLine("|---|---|---|---|---|---|---|---|---|");
             var splits = new List<string>();
-            foreach (int baud in new[] { 9600, 115200 })
+            foreach (int baud in bauds)
             {
                 foreach (int turnaround in new[] { 0, 10 })
                 {
@@ -84,6 +101,11 @@ internal static class WireEfficiency
             Console.WriteLine("| Line | Turnaround | One transaction | Split into 30-word RDs | Split / one | Characters (split vs one) |");
             Console.WriteLine("|---|---|---|---|---|---|");
             splits.ForEach(Console.WriteLine);
+        }
+
+        if (!skipTcp)
+        {
+            await MinimalClientComparison.RunAsync(tcpTransactions);
         }
 
         if (!skipPlan)

@@ -22,22 +22,14 @@ public static class LinkClients
     public static IServiceCollection AddLinkClients(this IServiceCollection services, IConfiguration configuration)
     {
         ArgumentNullException.ThrowIfNull(configuration);
-        WorkerOptions? options;
-        try
-        {
-            options = configuration.GetSection(WorkerOptions.SectionName).Get<WorkerOptions>();
-        }
-        catch (InvalidOperationException)
-        {
-            return services; // A value the binder cannot convert: start-up reports it.
-        }
-
         services.AddSingleton<IValidateOptions<WorkerOptions>, LineSpeedValidator>();
-        if (options is null || new WorkerOptionsValidator().Validate(null, options).Failed || new LineSpeedValidator().Validate(null, options).Failed)
+        if (!StartupCheck.Passes(configuration))
         {
             return services;
         }
 
+        var options = new WorkerOptions();
+        configuration.GetSection(WorkerOptions.SectionName).Bind(options);
         foreach ((string name, LinkOptions link) in options.Links)
         {
             if (link.Enabled)
@@ -84,7 +76,7 @@ public static class LinkClients
     /// A serial-device server's line runs at a standard rate, as the client settings require: a <c>LineBaudRate</c> that
     /// is not one is reported by its own key rather than as the client's <c>Serial:BaudRate</c>.
     /// </summary>
-    private sealed class LineSpeedValidator : IValidateOptions<WorkerOptions>
+    internal sealed class LineSpeedValidator : IValidateOptions<WorkerOptions>
     {
         private static readonly int[] StandardRates = [300, 600, 1200, 1800, 2400, 4800, 9600, 19200, 38400, 57600, 115200, 230400];
 

@@ -1,3 +1,4 @@
+using Microsoft.Extensions.Configuration;
 using Microsoft.Extensions.Options;
 using OmronHostLink.Transports;
 using OmronHostLink.Worker.Polling;
@@ -10,10 +11,31 @@ namespace OmronHostLink.Worker.Configuration;
 /// </summary>
 public sealed class WorkerOptionsValidator : IValidateOptions<WorkerOptions>
 {
+    private readonly IConfiguration? _configuration;
+
+    /// <summary>Checks the bound options only.</summary>
+    public WorkerOptionsValidator()
+    {
+    }
+
+    /// <summary>Checks the section as written first (<see cref="ConfigurationSchema"/>), then the bound options.</summary>
+    /// <param name="configuration">The configuration the options are bound from.</param>
+    public WorkerOptionsValidator(IConfiguration configuration)
+    {
+        _configuration = configuration;
+    }
+
     /// <inheritdoc/>
     public ValidateOptionsResult Validate(string? name, WorkerOptions options)
     {
         ArgumentNullException.ThrowIfNull(options);
+        if (_configuration is not null
+            && ConfigurationSchema.Check(_configuration.GetSection(WorkerOptions.SectionName), typeof(WorkerOptions)) is { Count: > 0 } written)
+        {
+            // The bound options miss what could not be read; judging them would only add consequences of these.
+            return ValidateOptionsResult.Fail(written);
+        }
+
         var failures = new List<string>();
         const string root = WorkerOptions.SectionName + ":Links";
         if (!options.Links.Values.Any(l => l is { Enabled: true }))

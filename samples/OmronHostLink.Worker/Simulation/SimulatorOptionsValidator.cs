@@ -1,14 +1,36 @@
+using Microsoft.Extensions.Configuration;
 using Microsoft.Extensions.Options;
+using OmronHostLink.Worker.Configuration;
 
 namespace OmronHostLink.Worker.Simulation;
 
 /// <summary>Checks the <c>Simulator</c> section when the simulator is enabled, naming bad fields by path.</summary>
 public sealed class SimulatorOptionsValidator : IValidateOptions<SimulatorOptions>
 {
+    private readonly IConfiguration? _configuration;
+
+    /// <summary>Checks the bound options only.</summary>
+    public SimulatorOptionsValidator()
+    {
+    }
+
+    /// <summary>Checks the section as written first (<see cref="ConfigurationSchema"/>), then the bound options.</summary>
+    /// <param name="configuration">The configuration the options are bound from.</param>
+    public SimulatorOptionsValidator(IConfiguration configuration)
+    {
+        _configuration = configuration;
+    }
+
     /// <inheritdoc/>
     public ValidateOptionsResult Validate(string? name, SimulatorOptions options)
     {
         ArgumentNullException.ThrowIfNull(options);
+        if (_configuration is not null
+            && ConfigurationSchema.Check(_configuration.GetSection(SimulatorOptions.SectionName), typeof(SimulatorOptions)) is { Count: > 0 } written)
+        {
+            return ValidateOptionsResult.Fail(written);
+        }
+
         if (!options.Enabled)
         {
             return ValidateOptionsResult.Success;

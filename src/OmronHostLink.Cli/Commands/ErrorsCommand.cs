@@ -8,7 +8,7 @@ internal static class ErrorsCommand
 {
     public static Command Create(CliContext context)
     {
-        var command = new Command("errors", "Error information (MF): the two error words and the bits that are on; --clear clears the errors after reading.");
+        var command = new Command("errors", "Error information (MF): the two error words and the bits that are on; --clear clears the errors after reading. Exit 5 when an error bit is on.");
         var connection = new ConnectionOptions();
         connection.AddTo(command);
         var clear = new Option<bool>("--clear") { Description = "Clear the errors after reading them." };
@@ -21,7 +21,7 @@ internal static class ErrorsCommand
             await using HostLinkClient client = connection.CreateClient(parse, output);
             PlcErrorInfo errors = await client.ReadErrorsAsync(c, ct).ConfigureAwait(false);
             output.Result(w => WriteHuman(w, client.UnitNumber, errors, c), j => WriteJson(j, client.UnitNumber, errors, c));
-            return ExitCodes.Success;
+            return errors.HasErrors ? ExitCodes.PlcErrors : ExitCodes.Success;
         });
         return command;
     }

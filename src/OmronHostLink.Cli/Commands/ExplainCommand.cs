@@ -10,14 +10,23 @@ internal static class ExplainCommand
     {
         var command = new Command("explain", "Decode a captured frame: unit, header, end code and meaning, fields, FCS expected vs found. Takes the frame with or without *, CR or a literal \\r. Exit 2 when the frame is not valid.");
         var frame = new Argument<string>("frame") { Description = "The frame, for example '@00RD0000001057*' (quote it: * and $ mean something to the shell)." };
-        var response = new Option<bool>("--response") { Description = "The frame is an answer from the PLC (default: a command to it)." };
+        var response = new Option<bool>("--response") { Description = "The frame is an answer from the PLC (default: told from the frame where it can be, else a command)." };
+        var commandOption = new Option<bool>("--command") { Description = "The frame is a command to the PLC, even where it has the shape of an answer." };
         Option<bool> json = CliContext.JsonOption();
         command.Add(frame);
         command.Add(response);
+        command.Add(commandOption);
         command.Add(json);
         context.SetAction(command, json, (parse, output, _) =>
         {
-            FrameExplanation x = FrameExplainer.Explain(parse.GetValue(frame)!, parse.GetValue(response));
+            bool? direction = (parse.GetValue(response), parse.GetValue(commandOption)) switch
+            {
+                (true, true) => throw new UsageException("Give --response or --command, not both."),
+                (true, false) => true,
+                (false, true) => false,
+                _ => null,
+            };
+            FrameExplanation x = FrameExplainer.Explain(parse.GetValue(frame)!, direction);
             output.Result(w => WriteHuman(w, x), j => ExplainJsonContext.Write(j, x));
             if (!x.Valid)
             {
@@ -34,7 +43,14 @@ internal static class ExplainCommand
     private static void WriteHuman(TextWriter w, FrameExplanation x)
     {
         w.WriteLine($"Frame:      {x.Frame}");
-        w.WriteLine($"Direction:  {(x.IsResponse ? "response (PLC to host)" : "command (host to PLC)")}");
+        string direction = x.IsResponse ? "response (PLC to host)" : "command (host to PLC)";
+        w.WriteLine($"Direction:  {direction}{x.DirectionFrom switch
+        {
+            FrameExplanation.FromShape => ", told by its shape",
+            FrameExplanation.FromAmbiguous => "; ambiguous, see the note",
+            FrameExplanation.FromDefault => ", assumed",
+            _ => string.Empty,
+        }}");
         if (x.Unit is { } unit)
         {
             w.WriteLine($"Unit:       {unit:D2}");
@@ -57,7 +73,7 @@ internal static class ExplainCommand
 
         if (x.Fcs is { } fcs)
         {
-            w.WriteLine($"FCS:        found {fcs.Found}, expected {fcs.Expected}: {(fcs.Ok ? "OK" : "MISMATCH")}");
+            w.WriteLine($"FCS:        found {fcs.Found}, expected {fcs.Expected}: {(fcs.Ok ? "OK" : fcs.Lowercase ? "lowercase FCS (Host Link sends it in upper case)" : "MISMATCH")}");
         }
 
         w.WriteLine($"Ending:     {(x.Final ? "*CR (final frame)" : "CR (more frames follow)")}");
@@ -86,6 +102,7 @@ internal static class ExplainCommand
         long[] ls => string.Join(" ", ls.Select(l => $"0x{l:X4}({l})")),
         bool[] bs => string.Join(" ", bs.Select(b => b ? "1" : "0")),
         string[] ss => string.Join(" ", ss),
+        FinsAddressField[] items => string.Join(", ", items.Select(i => i.ToString())),
         string s when s.Length == 0 => "(empty)",
         _ => Convert.ToString(value, CultureInfo.InvariantCulture) ?? string.Empty,
     };

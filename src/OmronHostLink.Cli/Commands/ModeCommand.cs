@@ -10,8 +10,7 @@ internal static class ModeCommand
         var command = new Command("mode", "Change the operating mode (SC). Refuses without --yes: leaving RUN or MONITOR stops the machine's program.");
         var connection = new ConnectionOptions();
         connection.AddTo(command);
-        var mode = new Argument<string>("mode") { Description = "run, monitor or program." };
-        mode.AcceptOnlyFromAmong("run", "monitor", "program");
+        Argument<string> mode = OptionValues.ChoiceArgument("mode", "run, monitor or program (any case).", "run", "monitor", "program");
         var yes = new Option<bool>("--yes") { Description = "Confirm the change." };
         Option<bool> json = CliContext.JsonOption();
         command.Add(mode);

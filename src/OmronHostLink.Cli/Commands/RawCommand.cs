@@ -1,5 +1,6 @@
 using System.CommandLine;
 using System.Text;
+using System.Text.Json;
 using OmronHostLink.Protocol;
 
 namespace OmronHostLink.Cli.Commands;
@@ -36,19 +37,18 @@ internal static class RawCommand
             {
                 answer = await client.ExchangeRawAsync(t, expectsResponse: header != "XZ", ct).ConfigureAwait(false);
             }
-            catch (HostLinkEndCodeException)
+            catch (HostLinkEndCodeException e)
             {
-                Print(output, client.UnitNumber, sent, received, null);
-                throw;
+                return Refused(output, client.UnitNumber, sent, received, null, e);
             }
 
             string answerText = Encoding.ASCII.GetString(answer);
-            Print(output, client.UnitNumber, sent, received, answerText);
             if (header is not ("TS" or "XZ") && answer.Length >= 2 && HexAscii.TryParseByte(answer.AsSpan(0, 2), out byte code) && code != 0)
             {
-                throw new HostLinkEndCodeException((EndCode)code, header, client.UnitNumber);
+                return Refused(output, client.UnitNumber, sent, received, answerText, new HostLinkEndCodeException((EndCode)code, header, client.UnitNumber));
             }
 
+            Print(output, client.UnitNumber, sent, received, answerText, null);
             return ExitCodes.Success;
         });
         return command;
@@ -85,7 +85,16 @@ internal static class RawCommand
         }
     }
 
-    private static void Print(OutputWriter output, int unit, List<string> sent, List<string> received, string? text)
+    /// <summary>An answer with an error end code: the frames as received and, in the same JSON document, the error.</summary>
+    private static int Refused(OutputWriter output, int unit, List<string> sent, List<string> received, string? text, HostLinkEndCodeException e)
+    {
+        ErrorInfo error = CliContext.ErrorOf(e);
+        Print(output, unit, sent, received, text, error);
+        output.Fail(error.Message);
+        return ExitCodes.EndCode;
+    }
+
+    private static void Print(OutputWriter output, int unit, List<string> sent, List<string> received, string? text, ErrorInfo? error)
         => output.Result(
             w =>
             {
@@ -124,6 +133,12 @@ internal static class RawCommand
                 else
                 {
                     j.WriteString("text", text);
+                }
+
+                if (error is not null)
+                {
+                    j.WritePropertyName("error");
+                    JsonSerializer.Serialize(j, error, CliJsonContext.Console.ErrorInfo);
                 }
 
                 j.WriteEndObject();

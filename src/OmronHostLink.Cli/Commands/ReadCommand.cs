@@ -22,12 +22,15 @@ internal static class ReadCommand
         {
             ReadRequest request = Request(parse, address, count, kind, connection);
             await using HostLinkClient client = connection.CreateClient(parse, output);
-            Snapshot snapshot = await request.ReadAsync(client, ct).ConfigureAwait(false);
+            Snapshot snapshot = await request.ReadSnapshotAsync(client, ct).ConfigureAwait(false);
+            DateTimeOffset time = DateTimeOffset.Now;
             output.Result(
                 w => WriteHuman(w, snapshot, null),
                 j =>
                 {
                     j.WriteStartObject();
+                    j.WriteNumber("unit", client.UnitNumber);
+                    j.WriteString("time", time);
                     snapshot.WriteJsonFields(j);
                     j.WriteEndObject();
                 });
@@ -38,9 +41,7 @@ internal static class ReadCommand
 
     public static Option<string?> AsOption()
     {
-        var option = new Option<string?>("--as") { Description = "word, bcd, int16, uint16, int32, uint32, float, string or bit (default: word, or bit for a bit address).", HelpName = "type" };
-        option.AcceptOnlyFromAmong(ValueKinds.Names);
-        return option;
+        return OptionValues.OptionalChoice("--as", "word, bcd, int16, uint16, int32, uint32, float, double, string or bit (default: word, or bit for a bit address).", "type", ValueKinds.Names);
     }
 
     /// <summary>The read described by the arguments, checked before anything is sent.</summary>

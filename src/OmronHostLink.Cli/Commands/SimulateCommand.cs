@@ -17,28 +17,26 @@ internal static class SimulateCommand
         var command = new Command("simulate", "Run a virtual CS/CJ PLC (C-mode) on TCP (default 127.0.0.1:9600) or a serial port. Ctrl+C stops cleanly.");
         var tcp = new Option<string?>("--tcp") { Description = "Listen on host:port (default 127.0.0.1:9600; port 0 picks a free one).", HelpName = "host:port" };
         var port = new Option<string?>("--port") { Description = "Serve a serial port or pty path instead (e.g. one end of a socat pair).", HelpName = "name" };
-        var units = new Option<string>("--units") { Description = "Unit numbers the PLC answers: 0,1 or 0-3.", DefaultValueFactory = _ => "0", HelpName = "list" };
-        var mode = new Option<string>("--mode") { Description = "Operating mode at start.", DefaultValueFactory = _ => "program", HelpName = "program|monitor|run" };
-        mode.AcceptOnlyFromAmong("program", "monitor", "run");
+        var units = new Option<string>("--units") { Description = "Unit numbers on the line: 0,1 or 0-3. Each is a PLC of its own (memory, mode, errors) unless --shared-memory.", DefaultValueFactory = _ => "0", HelpName = "list" };
+        var shared = new Option<bool>("--shared-memory") { Description = "Make the --units one PLC answering to all of them (one memory, mode and error state)." };
+        var readyFile = new Option<string?>("--ready-file") { Description = "Write the address served (host:port, or the serial port) to this file once the simulator accepts connections; the file is removed when it stops.", HelpName = "path" };
+        Option<string> mode = OptionValues.Choice("--mode", "Operating mode at start.", "program", "program", "monitor", "run");
         var memory = new Option<string?>("--memory") { Description = "JSON file with initial memory and state, e.g. {\"D100\":[1,2,3],\"mode\":\"run\"}.", HelpName = "file.json" };
-        var baud = new Option<int?>("--baud") { Description = "Line speed: on TCP, emulate the wire time of this speed (default none); on a serial port, the port's speed (default 9600).", HelpName = "n" };
-        var dataBits = new Option<int>("--data-bits") { Description = "Serial data bits.", DefaultValueFactory = _ => 7, HelpName = "7|8" };
-        dataBits.AcceptOnlyFromAmong("7", "8");
-        var parity = new Option<string>("--parity") { Description = "Serial parity.", DefaultValueFactory = _ => "even", HelpName = "none|even|odd" };
-        parity.AcceptOnlyFromAmong("none", "even", "odd");
-        var stopBits = new Option<int>("--stop-bits") { Description = "Serial stop bits.", DefaultValueFactory = _ => 2, HelpName = "1|2" };
-        stopBits.AcceptOnlyFromAmong("1", "2");
-        var turnaround = new Option<int>("--turnaround") { Description = "Milliseconds between a command and its answer.", DefaultValueFactory = _ => 0, HelpName = "ms" };
+        Option<int?> baud = OptionValues.OptionalInteger("--baud", "Line speed: on TCP, emulate the wire time of this speed (default none); on a serial port, the port's speed (default 9600).", 1, 10_000_000, "n");
+        Option<int> dataBits = OptionValues.IntegerChoice("--data-bits", "Serial data bits.", 7, 7, 8);
+        Option<string> parity = OptionValues.Choice("--parity", "Serial parity.", "even", "none", "even", "odd");
+        Option<int> stopBits = OptionValues.IntegerChoice("--stop-bits", "Serial stop bits.", 2, 1, 2);
+        Option<TimeSpan?> turnaround = Durations.Option("--turnaround", "Time between a command and its answer.", TimeSpan.Zero, TimeSpan.Zero, TimeSpan.FromMinutes(1));
         var model = new Option<string?>("--model") { Description = "Model code MM reports, two hex digits (default 30 = CS/CJ).", HelpName = "hex" };
-        var drop = Probability("--fault-drop", "Probability of not answering at all.");
-        var corrupt = Probability("--fault-corrupt", "Probability of corrupting a character (the FCS no longer matches).");
-        var noise = Probability("--fault-noise", "Probability of sending noise bytes before a frame.");
-        var truncate = Probability("--fault-truncate", "Probability of cutting a frame short.");
-        var late = Probability("--fault-late", "Probability of answering late (after the host's deadline).");
-        var echo = Probability("--fault-echo", "Probability of echoing the command first, as a 2-wire RS-485 line does.");
-        var lateBy = new Option<int>("--fault-late-by") { Description = "How late a late answer comes, in ms.", DefaultValueFactory = _ => 1000, HelpName = "ms" };
-        var seed = new Option<int>("--fault-seed") { Description = "Seed of the fault generator (same seed, same faults).", DefaultValueFactory = _ => 1, HelpName = "n" };
-        foreach (Option o in new Option[] { tcp, port, units, mode, memory, baud, dataBits, parity, stopBits, turnaround, model, drop, corrupt, noise, truncate, late, lateBy, echo, seed })
+        var drop = OptionValues.Probability("--fault-drop", "Probability of not answering at all.");
+        var corrupt = OptionValues.Probability("--fault-corrupt", "Probability of corrupting a character (the FCS no longer matches).");
+        var noise = OptionValues.Probability("--fault-noise", "Probability of sending noise bytes before a frame.");
+        var truncate = OptionValues.Probability("--fault-truncate", "Probability of cutting a frame short.");
+        var late = OptionValues.Probability("--fault-late", "Probability of answering late (after the host's deadline).");
+        var echo = OptionValues.Probability("--fault-echo", "Probability of echoing the command first, as a 2-wire RS-485 line does.");
+        Option<TimeSpan?> lateBy = Durations.Option("--fault-late-by", "How late a late answer comes.", TimeSpan.FromSeconds(1), TimeSpan.Zero, TimeSpan.FromMinutes(10));
+        Option<int> seed = OptionValues.Integer("--fault-seed", "Seed of the fault generator (same seed, same faults).", 1, int.MinValue, int.MaxValue, "n");
+        foreach (Option o in new Option[] { tcp, port, units, shared, readyFile, mode, memory, baud, dataBits, parity, stopBits, turnaround, model, drop, corrupt, noise, truncate, late, lateBy, echo, seed })
         {
             command.Add(o);
         }
@@ -63,7 +61,7 @@ internal static class SimulateCommand
                     _ => PlcMode.Program,
                 },
                 BaudRate = baudRate ?? 0,
-                Turnaround = TimeSpan.FromMilliseconds(parse.GetValue(turnaround)),
+                Turnaround = parse.GetValue(turnaround) ?? TimeSpan.Zero,
                 Faults = new FaultOptions
                 {
                     Seed = parse.GetValue(seed),
@@ -72,7 +70,7 @@ internal static class SimulateCommand
                     Noise = parse.GetValue(noise),
                     Truncate = parse.GetValue(truncate),
                     Late = parse.GetValue(late),
-                    LateBy = TimeSpan.FromMilliseconds(parse.GetValue(lateBy)),
+                    LateBy = parse.GetValue(lateBy) ?? TimeSpan.FromSeconds(1),
                     Echo = parse.GetValue(echo),
                 },
             };
@@ -100,20 +98,24 @@ internal static class SimulateCommand
                 }
                 catch (ArgumentException e)
                 {
-                    throw new UsageException($"The serial settings are not valid: {Addresses.FirstSentence(e.Message)}", e);
+                    throw new UsageException(OptionValues.SerialMessage(e), e);
                 }
 
                 options.BitsPerCharacter = serial.BitsPerCharacter;
             }
 
-            VirtualPlc plc;
+            bool oneCpu = parse.GetValue(shared) || options.Units.Count == 1;
+            VirtualPlcLine line;
             try
             {
                 options.Validate();
-                plc = new VirtualPlc(options);
+                line = oneCpu ? new VirtualPlcLine([new VirtualPlc(options)]) : VirtualPlcLine.OnePlcPerUnit(options);
                 if (parse.GetValue(memory) is { } file)
                 {
-                    plc.LoadJsonFile(file);
+                    foreach (VirtualPlc plc in line.Plcs)
+                    {
+                        plc.LoadJsonFile(file);
+                    }
                 }
             }
             catch (Exception e) when (e is FormatException or IOException or UnauthorizedAccessException)
@@ -121,48 +123,75 @@ internal static class SimulateCommand
                 throw new UsageException($"The initial memory cannot be loaded: {e.Message}", e);
             }
 
-            string unitList = string.Join(",", options.Units.Select(u => u.ToString("D2", CultureInfo.InvariantCulture)));
-            string state = $"{StatusCommand.ModeName(plc.Mode)} mode, model code {plc.ModelCode:X2}";
-            if (serial is not null)
+            string? ready = parse.GetValue(readyFile);
+            if (ready is not null)
             {
-                // The host reopens the port when it is lost (socat restarted, an adapter unplugged) until Ctrl+C.
-                await using var host = new SerialSimulatorHost(plc, serial, output.Note);
-                await host.StartAsync(ct).ConfigureAwait(false);
-                output.Line($"Simulating units {unitList} ({state}) on {serial}. Ctrl+C stops.");
-                await Task.WhenAny(host.Completion, Task.Delay(Timeout.Infinite, ct)).ConfigureAwait(false);
-                await host.StopAsync(CancellationToken.None).ConfigureAwait(false);
+                // A file left by an earlier run must not announce this one before it listens.
+                ReadyFile.Remove(ready);
             }
-            else
+
+            string unitList = string.Join(",", options.Units.Select(u => u.ToString("D2", CultureInfo.InvariantCulture)));
+            VirtualPlc first = line.Plcs[0];
+            string state = $"{StatusCommand.ModeName(first.Mode)} mode, model code {first.ModelCode:X2}"
+                + (options.Units.Count == 1 ? string.Empty : oneCpu ? ", one PLC answering every unit" : ", each unit a PLC of its own");
+            try
             {
-                (string h, int p) = tcpText is null ? ("127.0.0.1", 9600) : ParseListen(tcpText);
-                IPAddress address = h is "localhost" ? IPAddress.Loopback : IPAddress.TryParse(h, out IPAddress? ip) ? ip
-                    : throw new UsageException($"--tcp: '{h}' is not an IP address to listen on (use 127.0.0.1, 0.0.0.0 or ::).");
-                await using var host = new TcpSimulatorHost(plc, new IPEndPoint(address, p));
-                try
+                if (serial is not null)
                 {
+                    // The host reopens the port when it is lost (socat restarted, an adapter unplugged) until Ctrl+C.
+                    await using var host = new SerialSimulatorHost(line, serial, output.Note);
                     await host.StartAsync(ct).ConfigureAwait(false);
+                    output.Line($"Simulating units {unitList} ({state}) on {serial}. Ctrl+C stops.");
+                    ReadyFile.Write(ready, serial.PortName);
+                    await Task.WhenAny(host.Completion, Task.Delay(Timeout.Infinite, ct)).ConfigureAwait(false);
+                    await host.StopAsync(CancellationToken.None).ConfigureAwait(false);
                 }
-                catch (SocketException e)
+                else
                 {
-                    throw new HostLinkConnectionException($"Cannot listen on {h}:{p}: {e.Message}", e);
+                    await ServeTcpAsync(line, tcpText, unitList, state, ready, output, ct).ConfigureAwait(false);
                 }
-
-                output.Line($"Simulating units {unitList} ({state}) on {host.EndPoint}. Ctrl+C stops.");
-                try
+            }
+            finally
+            {
+                if (ready is not null)
                 {
-                    await Task.Delay(Timeout.Infinite, ct).ConfigureAwait(false);
+                    ReadyFile.Remove(ready);
                 }
-                catch (OperationCanceledException)
-                {
-                }
-
-                await host.StopAsync(CancellationToken.None).ConfigureAwait(false);
             }
 
             output.Line("Simulator stopped.");
             return ExitCodes.Success;
         });
         return command;
+    }
+
+    private static async Task ServeTcpAsync(VirtualPlcLine line, string? tcpText, string unitList, string state, string? ready, OutputWriter output, CancellationToken ct)
+    {
+        (string h, int p) = tcpText is null ? ("127.0.0.1", 9600) : ParseListen(tcpText);
+        IPAddress address = h is "localhost" ? IPAddress.Loopback : IPAddress.TryParse(h, out IPAddress? ip) ? ip
+            : throw new UsageException($"--tcp: '{h}' is not an IP address to listen on (use 127.0.0.1, 0.0.0.0 or ::).");
+        await using var host = new TcpSimulatorHost(line, new IPEndPoint(address, p));
+        try
+        {
+            await host.StartAsync(ct).ConfigureAwait(false);
+        }
+        catch (SocketException e)
+        {
+            throw new HostLinkConnectionException($"Cannot listen on {h}:{p}: {e.Message}", e);
+        }
+
+        // Listening now: a client that connects from here on is served.
+        output.Line($"Simulating units {unitList} ({state}) on {host.EndPoint}. Ctrl+C stops.");
+        ReadyFile.Write(ready, host.EndPoint.ToString());
+        try
+        {
+            await Task.Delay(Timeout.Infinite, ct).ConfigureAwait(false);
+        }
+        catch (OperationCanceledException)
+        {
+        }
+
+        await host.StopAsync(CancellationToken.None).ConfigureAwait(false);
     }
 
     private static (string Host, int Port) ParseListen(string text)
@@ -174,19 +203,5 @@ internal static class SimulateCommand
         }
 
         return (text[..colon].Trim('[', ']'), p);
-    }
-
-    private static Option<double> Probability(string name, string description)
-    {
-        var option = new Option<double>(name) { Description = description + " 0-1.", DefaultValueFactory = _ => 0, HelpName = "p" };
-        option.Validators.Add(result =>
-        {
-            double p = result.GetValueOrDefault<double>();
-            if (double.IsNaN(p) || p < 0 || p > 1)
-            {
-                result.AddError($"{name} must be a probability 0-1.");
-            }
-        });
-        return option;
     }
 }

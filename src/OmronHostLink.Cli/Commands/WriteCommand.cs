@@ -1,5 +1,6 @@
 using System.CommandLine;
 using System.Globalization;
+using System.Text.Json.Nodes;
 
 namespace OmronHostLink.Cli.Commands;
 
@@ -14,12 +15,16 @@ internal static class WriteCommand
         var address = new Argument<string>("address") { Description = "D100, CIO100.05, W30, H10, A448, T5, C7, E1_100." };
         var values = new Argument<string[]>("value") { Description = "Values: decimal or 0x-hex; float as 1.5; string as text; bit as 1/0, on/off, true/false.", Arity = ArgumentArity.OneOrMore };
         Option<string?> kind = ReadCommand.AsOption();
-        var rmw = new Option<bool>("--read-modify-write") { Description = "Without --fins, write bits by reading the word, changing the bit and writing the word back (anything the PLC program writes in between is lost). With --fins bits are written directly." };
+        var rmw = new Option<bool>("--read-modify-write") { Description = "Write bits with C-mode by reading the words they cover, changing the bits and writing the words back (one read, one write; anything the PLC program writes in between is lost). Without it, C-mode refuses bit writes: use --fins to write bits directly." };
+        Option<int?> length = OptionValues.OptionalInteger("--length", "For --as string: the field's width in characters; the text is padded to fill it (default: the text and a NUL after it).", 1, 20000, "n");
+        Option<string?> pad = OptionValues.OptionalChoice("--pad", "For --as string with --length: pad with nul (default) or space.", "nul|space", "nul", "space");
         Option<bool> json = CliContext.JsonOption();
         command.Add(address);
         command.Add(values);
         command.Add(kind);
         command.Add(rmw);
+        command.Add(length);
+        command.Add(pad);
         command.Add(json);
         context.SetAction(command, json, async (parse, output, ct) =>
         {
@@ -60,18 +65,23 @@ internal static class WriteCommand
                     addresses[i] = target.AsWord().Offset(n / 16).WithBit(n % 16);
                 }
 
-                Addresses.EnsureRange(target.AsWord(), ((target.Bit + bits.Length - 1) / 16) + 1, protocol, forWrite: true);
-                await using HostLinkClient client = connection.CreateClient(parse, output, configure: o => o.AllowReadModifyWriteBits = useRmw);
-
-                for (int i = 0; i < bits.Length; i++)
+                int wordsCovered = ((target.Bit + bits.Length - 1) / 16) + 1;
+                Addresses.EnsureRange(target.AsWord(), wordsCovered, protocol, forWrite: true);
+                if (protocol == HostLinkCommandSet.CMode && !useRmw)
                 {
-                    await client.WriteBitAsync(addresses[i], bits[i], ct).ConfigureAwait(false);
+                    // The library would fall back to FINS; the user chose C-mode, so say so rather than switch silently.
+                    PlcAddress word = target.AsWord();
+                    throw new UsageException(
+                        $"C-mode has no bit write. Add --fins to write {Range(addresses)} with FINS (0102, one command), or --read-modify-write to read {Range(word, wordsCovered)}, change the bit{(bits.Length == 1 ? "" : "s")} and write the word{(wordsCovered == 1 ? "" : "s")} back (anything the PLC program writes there in between is lost).");
                 }
+
+                await using HostLinkClient client = connection.CreateClient(parse, output, configure: o => o.AllowReadModifyWriteBits = useRmw);
+                await client.WriteBitsAsync(target, bits, ct).ConfigureAwait(false);
 
                 summary = bits.Length == 1
                     ? $"Wrote {(bits[0] ? 1 : 0)} to {addresses[0]}."
                     : $"Wrote {bits.Length} bits to {addresses[0]}-{addresses[^1]}.";
-                Report(output, target, k, v.Length, summary);
+                Report(output, client.UnitNumber, target, k, new JsonArray(bits.Select(b => (JsonNode?)JsonValue.Create(b)).ToArray()), null, summary);
                 return ExitCodes.Success;
             }
 
@@ -80,50 +90,77 @@ internal static class WriteCommand
                 throw new UsageException($"{target} names a bit; write it with --as bit, or give the word address {target.AsWord()}.");
             }
 
-            ushort[] words = Encode(k, v, connection.WordOrder);
+            int? fieldLength = parse.GetValue(length);
+            string? padding = parse.GetValue(pad);
+            if (k != PlcValueType.String && (fieldLength is not null || padding is not null))
+            {
+                throw new UsageException("--length and --pad apply to --as string only.");
+            }
+
+            bool spaces = padding == "space";
+            StringWrite? text = k == PlcValueType.String ? StringWrite.Create(string.Join(' ', v), fieldLength, spaces) : null;
+            ushort[] words = text?.Words ?? Encode(k, v, connection.WordOrder);
             Addresses.EnsureRange(target, words.Length, protocol, forWrite: true);
+            int unit;
             await using (HostLinkClient client = connection.CreateClient(parse, output))
             {
+                unit = client.UnitNumber;
                 await client.WriteWordsAsync(target, words, ct).ConfigureAwait(false);
             }
 
             PlcAddress last = target.Offset(words.Length - 1);
-            summary = words.Length == 1
-                ? $"Wrote {Numbers.Hex(words[0])} ({words[0]}) to {target}."
-                : $"Wrote {words.Length} words to {target}-{last}.";
-            Report(output, target, k, words.Length, summary);
+            string range = words.Length == 1 ? target.ToString() : $"{target}-{last}";
+            summary = text is not null
+                ? $"Wrote \"{text.Text}\" to {range} ({text.Layout})."
+                : words.Length == 1
+                    ? $"Wrote {Numbers.Hex(words[0])} ({words[0]}) to {target}."
+                    : $"Wrote {words.Length} words to {range}.";
+            Report(output, unit, target, k, text is null ? ValuesOf(k, words, connection.WordOrder) : [text.Text], words, summary);
             return ExitCodes.Success;
         });
         return command;
     }
 
-    private static void Report(OutputWriter output, PlcAddress target, PlcValueType kind, int count, string summary)
-        => output.Result(
-            w => w.WriteLine(summary),
-            j =>
-            {
-                j.WriteStartObject();
-                j.WriteString("address", target.ToString());
-                j.WriteString("as", kind.Name());
-                j.WriteNumber(kind == PlcValueType.Bit ? "bits" : "words", count);
-                j.WriteBoolean("ok", true);
-                j.WriteEndObject();
-            });
-
-    /// <summary>The words for the values, checked (nothing is sent when one is out of range).</summary>
-    public static ushort[] Encode(PlcValueType kind, string[] values, WordOrder order)
+    private static void Report(OutputWriter output, int unit, PlcAddress target, PlcValueType kind, JsonArray values, ushort[]? words, string summary)
     {
-        if (kind == PlcValueType.String)
+        if (output.IsJson)
         {
-            string text = string.Join(' ', values);
-            if (text.Any(c => c > 0x7F))
-            {
-                throw new UsageException("The text must be ASCII.");
-            }
+            output.Document(new WriteDocument(unit, target.ToString(), kind.Name(), values, words, Ok: true), CliJsonContext.Console.WriteDocument);
+        }
+        else
+        {
+            output.Line(summary);
+        }
+    }
 
-            return PlcValueCodec.Encode([PlcValue.FromString(text)], order);
+    private static string Range(PlcAddress[] bits) => bits.Length == 1 ? bits[0].ToString() : $"{bits[0]}-{bits[^1]}";
+
+    private static string Range(PlcAddress word, int words) => words == 1 ? word.ToString() : $"{word}-{word.Offset(words - 1)}";
+
+    /// <summary>The values the words written hold, in their natural JSON type (what the PLC now has, decoded back).</summary>
+    public static JsonArray ValuesOf(PlcValueType kind, ushort[] words, WordOrder order)
+    {
+        var values = new JsonArray();
+        foreach (PlcValue value in PlcValueCodec.DecodeValues(kind, words, words.Length / kind.WordsPerValue(), order))
+        {
+            values.Add(value.Type switch
+            {
+                PlcValueType.Word or PlcValueType.UInt16 => JsonValue.Create(value.ToUInt16()),
+                PlcValueType.Int16 => JsonValue.Create(value.ToInt16()),
+                PlcValueType.Int32 or PlcValueType.Bcd or PlcValueType.Bcd32 => JsonValue.Create(value.ToInt32()),
+                PlcValueType.UInt32 => JsonValue.Create(value.ToUInt32()),
+                PlcValueType.Float => JsonValue.Create(value.ToSingle()),
+                PlcValueType.Double => JsonValue.Create(value.ToDouble()),
+                _ => JsonValue.Create(value.ToString()),
+            });
         }
 
+        return values;
+    }
+
+    /// <summary>The words for numeric values, checked (nothing is sent when one is out of range); text is laid out by <see cref="StringWrite"/>.</summary>
+    public static ushort[] Encode(PlcValueType kind, string[] values, WordOrder order)
+    {
         return PlcValueCodec.Encode(values.Select(v => Parse(kind, v)).ToArray(), order);
     }
 
@@ -143,6 +180,9 @@ internal static class WriteCommand
         PlcValueType.Float => float.TryParse(v, NumberStyles.Float, CultureInfo.InvariantCulture, out float f) && float.IsFinite(f)
             ? PlcValue.FromSingle(f)
             : throw new UsageException($"The float value '{v}' is not a finite number such as 1.5 or -2e3."),
+        PlcValueType.Double => double.TryParse(v, NumberStyles.Float, CultureInfo.InvariantCulture, out double d) && double.IsFinite(d)
+            ? PlcValue.FromDouble(d)
+            : throw new UsageException($"The double value '{v}' is not a finite number such as 1.5 or -2e3."),
         _ => throw new UsageException($"--as {kind.Name()} values cannot be written as words."),
     };
 

@@ -7,23 +7,37 @@ using OmronHostLink.Simulator.Protocol;
 namespace OmronHostLink.Simulator.Hosting;
 
 /// <summary>
-/// One Host Link session of a <see cref="VirtualPlc"/> over a stream: cuts frames out of the received bytes (noise
-/// skipped), runs them through a <see cref="HostLinkExchange"/>, and writes the answers with turnaround, wire-time
-/// pacing and injected faults.
+/// One Host Link session of the PLCs on a line over a stream: cuts frames out of the received bytes (noise skipped),
+/// runs them through a <see cref="HostLinkExchange"/>, and writes the answers with the answering PLC's turnaround and
+/// injected faults, paced at the line's wire speed.
 /// </summary>
 internal sealed class HostLinkSession
 {
-    private readonly VirtualPlc _plc;
+    private readonly Dictionary<int, VirtualPlc> _plcs = new();
     private readonly HostLinkExchange _exchange;
     private readonly WirePacer _pacer;
-    private readonly FaultInjector _faults;
 
     public HostLinkSession(VirtualPlc plc)
+        : this([plc])
     {
-        _plc = plc;
-        _exchange = new HostLinkExchange(new HostLinkResponder(plc), plc.Options.Units);
-        _pacer = new WirePacer(plc.Options.BaudRate, plc.Options.BitsPerCharacter);
-        _faults = plc.Faults;
+    }
+
+    /// <summary>A session of several PLCs sharing the line (their unit numbers distinct, their line speed the same).</summary>
+    public HostLinkSession(IReadOnlyList<VirtualPlc> plcs)
+    {
+        var responders = new Dictionary<int, HostLinkResponder>();
+        foreach (VirtualPlc plc in plcs)
+        {
+            var responder = new HostLinkResponder(plc);
+            foreach (int unit in plc.Options.Units)
+            {
+                _plcs[unit] = plc;
+                responders[unit] = responder;
+            }
+        }
+
+        _exchange = new HostLinkExchange(responders);
+        _pacer = new WirePacer(plcs[0].Options.BaudRate, plcs[0].Options.BitsPerCharacter);
     }
 
     public async Task RunAsync(Stream stream, CancellationToken cancellationToken)
@@ -91,8 +105,10 @@ internal sealed class HostLinkSession
 
     private async Task SendAsync(Stream stream, byte[] received, LinkReply reply, CancellationToken cancellationToken)
     {
-        TimeSpan turnaround = _plc.Options.Turnaround + reply.Delay;
-        FaultPlan plan = reply.IsHandshake ? FaultPlan.None : _faults.Plan(reply.Bytes!);
+        VirtualPlc plc = _plcs[_exchange.Unit];
+        FaultInjector faults = plc.Faults;
+        TimeSpan turnaround = plc.Options.Turnaround + reply.Delay;
+        FaultPlan plan = reply.IsHandshake ? FaultPlan.None : faults.Plan(reply.Bytes!);
         if (plan.Drop)
         {
             return;
@@ -106,7 +122,7 @@ internal sealed class HostLinkSession
 
         if (plan.Late)
         {
-            turnaround += _faults.LateBy;
+            turnaround += faults.LateBy;
         }
 
         if (turnaround > TimeSpan.Zero)

@@ -3,7 +3,7 @@ using OmronHostLink.Transports;
 namespace OmronHostLink.Simulator.Hosting;
 
 /// <summary>
-/// Serves a <see cref="VirtualPlc"/> over a serial line: a serial port or pseudo-terminal (one end of a socat pair) by
+/// Serves a <see cref="VirtualPlc"/> (or a <see cref="VirtualPlcLine"/> of them) over a serial line: a serial port or pseudo-terminal (one end of a socat pair) by
 /// its name, or any stream from a factory.
 /// </summary>
 /// <remarks>
@@ -15,7 +15,7 @@ namespace OmronHostLink.Simulator.Hosting;
 /// </remarks>
 public sealed class SerialSimulatorHost : IAsyncDisposable
 {
-    private readonly VirtualPlc _plc;
+    private readonly Func<Stream, CancellationToken, Task> _serve;
     private readonly Func<Stream>? _open;
     private readonly SerialTransport? _transport;
     private readonly Action<string>? _report;
@@ -30,7 +30,18 @@ public sealed class SerialSimulatorHost : IAsyncDisposable
     {
         ArgumentNullException.ThrowIfNull(plc);
         ArgumentNullException.ThrowIfNull(openStream);
-        _plc = plc;
+        _serve = plc.RunAsync;
+        _open = openStream;
+    }
+
+    /// <summary>Creates a host that serves a line of PLCs on the stream <paramref name="openStream"/> returns.</summary>
+    /// <param name="line">The PLCs to serve, each with its own unit numbers.</param>
+    /// <param name="openStream">Opens the serial line; called by <see cref="StartAsync"/>.</param>
+    public SerialSimulatorHost(VirtualPlcLine line, Func<Stream> openStream)
+    {
+        ArgumentNullException.ThrowIfNull(line);
+        ArgumentNullException.ThrowIfNull(openStream);
+        _serve = line.RunAsync;
         _open = openStream;
     }
 
@@ -40,10 +51,24 @@ public sealed class SerialSimulatorHost : IAsyncDisposable
     /// <param name="report">Told, in a sentence, when the line is lost and when it is open again; may be null.</param>
     /// <exception cref="ArgumentException">A setting is not valid.</exception>
     public SerialSimulatorHost(VirtualPlc plc, SerialLineSettings settings, Action<string>? report = null)
+        : this((plc ?? throw new ArgumentNullException(nameof(plc))).RunAsync, settings, report)
     {
-        ArgumentNullException.ThrowIfNull(plc);
+    }
+
+    /// <summary>Creates a host that serves a line of PLCs on the serial port <paramref name="settings"/> names until it is stopped, reopening it after it was lost.</summary>
+    /// <param name="line">The PLCs to serve, each with its own unit numbers.</param>
+    /// <param name="settings">The port and its line settings.</param>
+    /// <param name="report">Told, in a sentence, when the line is lost and when it is open again; may be null.</param>
+    /// <exception cref="ArgumentException">A setting is not valid.</exception>
+    public SerialSimulatorHost(VirtualPlcLine line, SerialLineSettings settings, Action<string>? report = null)
+        : this((line ?? throw new ArgumentNullException(nameof(line))).RunAsync, settings, report)
+    {
+    }
+
+    private SerialSimulatorHost(Func<Stream, CancellationToken, Task> serve, SerialLineSettings settings, Action<string>? report)
+    {
         ArgumentNullException.ThrowIfNull(settings);
-        _plc = plc;
+        _serve = serve;
         _transport = new SerialTransport(settings);
         _report = report;
         Description = settings.ToString();
@@ -83,7 +108,7 @@ public sealed class SerialSimulatorHost : IAsyncDisposable
         else
         {
             _stream = _open!() ?? throw new InvalidOperationException("The stream factory returned null.");
-            _session = _plc.RunAsync(_stream, _stopping.Token);
+            _session = _serve(_stream, _stopping.Token);
         }
     }
 
@@ -137,7 +162,7 @@ public sealed class SerialSimulatorHost : IAsyncDisposable
         SerialTransport transport = _transport!;
         while (true)
         {
-            await _plc.RunAsync(stream, stop).ConfigureAwait(false);
+            await _serve(stream, stop).ConfigureAwait(false);
             await transport.CloseAsync().ConfigureAwait(false);
             if (stop.IsCancellationRequested)
             {

@@ -4,12 +4,13 @@ using System.Net.Sockets;
 namespace OmronHostLink.Simulator.Hosting;
 
 /// <summary>
-/// Serves a <see cref="VirtualPlc"/> over TCP, as a serial device server would: one Host Link session per accepted
-/// connection, all on the same PLC memory. Listens on 127.0.0.1 unless another address is passed explicitly.
+/// Serves a <see cref="VirtualPlc"/> (or a <see cref="VirtualPlcLine"/> of several) over TCP, as a serial device server
+/// would: one Host Link session per accepted connection, all on the same PLC memory. Listens on 127.0.0.1 unless another
+/// address is passed explicitly.
 /// </summary>
 public sealed class TcpSimulatorHost : IAsyncDisposable
 {
-    private readonly VirtualPlc _plc;
+    private readonly Func<Stream, CancellationToken, Task> _serve;
     private readonly IPEndPoint _requested;
     private readonly object _gate = new();
     private readonly HashSet<Task> _sessions = new();
@@ -23,7 +24,17 @@ public sealed class TcpSimulatorHost : IAsyncDisposable
     public TcpSimulatorHost(VirtualPlc plc, IPEndPoint? endPoint = null)
     {
         ArgumentNullException.ThrowIfNull(plc);
-        _plc = plc;
+        _serve = plc.RunAsync;
+        _requested = endPoint ?? new IPEndPoint(IPAddress.Loopback, 0);
+    }
+
+    /// <summary>Creates the host of a line of PLCs; it listens once started.</summary>
+    /// <param name="line">The PLCs to serve, each with its own unit numbers.</param>
+    /// <param name="endPoint">Where to listen; null for 127.0.0.1 on an ephemeral port. Port 0 picks an ephemeral port.</param>
+    public TcpSimulatorHost(VirtualPlcLine line, IPEndPoint? endPoint = null)
+    {
+        ArgumentNullException.ThrowIfNull(line);
+        _serve = line.RunAsync;
         _requested = endPoint ?? new IPEndPoint(IPAddress.Loopback, 0);
     }
 
@@ -139,7 +150,7 @@ public sealed class TcpSimulatorHost : IAsyncDisposable
             NetworkStream stream = client.GetStream();
             await using (stream.ConfigureAwait(false))
             {
-                await _plc.RunAsync(stream, stopping).ConfigureAwait(false);
+                await _serve(stream, stopping).ConfigureAwait(false);
             }
         }
     }

@@ -30,6 +30,18 @@ internal sealed class WirePacer
     /// <summary>The time <paramref name="characters"/> characters occupy the line.</summary>
     public TimeSpan WireTime(int characters) => TimeSpan.FromSeconds(characters * _secondsPerCharacter);
 
+    /// <summary>
+    /// When byte <paramref name="index"/> of a <paramref name="count"/>-byte transmission is handed over, from its start:
+    /// the first at once, the last when its last stop bit ends (<see cref="WireTime"/> of the count), the others evenly between.
+    /// </summary>
+    internal TimeSpan DueTime(int index, int count) => count <= 1 ? TimeSpan.Zero : TimeSpan.FromSeconds(index * Step(count));
+
+    /// <summary>How many bytes of a <paramref name="count"/>-byte transmission are due <paramref name="elapsed"/> after its start.</summary>
+    internal int DueCount(TimeSpan elapsed, int count)
+        => count <= 1 ? count : Math.Min(count, (int)Math.Floor((elapsed.TotalSeconds / Step(count)) + 1e-3) + 1);
+
+    private double Step(int count) => count * _secondsPerCharacter / (count - 1);
+
     public async Task WriteAsync(Stream stream, ReadOnlyMemory<byte> bytes, CancellationToken cancellationToken)
     {
         if (!Enabled)
@@ -107,11 +119,10 @@ internal sealed class WirePacer
             return;
         }
 
-        double step = n * _secondsPerCharacter / (n - 1);
         int sent = 0;
         while (sent < n)
         {
-            int due = Math.Min(n, (int)Math.Floor(clock.Elapsed.TotalSeconds / step) + 1);
+            int due = DueCount(clock.Elapsed, n);
             if (due > sent)
             {
                 stream.Write(bytes.Slice(sent, due - sent));
@@ -120,7 +131,7 @@ internal sealed class WirePacer
                 continue;
             }
 
-            TimeSpan next = TimeSpan.FromSeconds(sent * step);
+            TimeSpan next = DueTime(sent, n);
             if (sent == n - 1)
             {
                 WaitUntil(clock, next, cancellationToken);

@@ -15,8 +15,7 @@ internal sealed class HostLinkExchange
     /// <summary>The longest text a multi-frame write may accumulate (10,000 words and the address), a guard against endless frames.</summary>
     private const int MaxCommandText = 6 + (4 * 10000);
 
-    private readonly HostLinkResponder _responder;
-    private readonly HashSet<int> _units;
+    private readonly IReadOnlyDictionary<int, HostLinkResponder> _responders;
     private State _state;
     private int _unit;
     private byte[] _header = [];
@@ -24,11 +23,20 @@ internal sealed class HostLinkExchange
     private SimResponse? _response;
     private int _responseOffset;
 
+    /// <summary>One PLC answering every unit number in <paramref name="units"/>.</summary>
     public HostLinkExchange(HostLinkResponder responder, IEnumerable<int> units)
+        : this(units.Distinct().ToDictionary(u => u, _ => responder))
     {
-        _responder = responder;
-        _units = new HashSet<int>(units);
     }
+
+    /// <summary>Several PLCs on one line, each answering its own unit numbers.</summary>
+    public HostLinkExchange(IReadOnlyDictionary<int, HostLinkResponder> responders)
+    {
+        _responders = responders;
+    }
+
+    /// <summary>The unit number of the exchange in progress, or of the last one: whose answer is being sent.</summary>
+    public int Unit => _unit;
 
     private enum State
     {
@@ -92,7 +100,7 @@ internal sealed class HostLinkExchange
     {
         if (frame.Length > 0 && frame[0] == (byte)'@')
         {
-            if (!MessagePrefix.TryReadUnit(frame, out int unit) || !_units.Contains(unit))
+            if (!MessagePrefix.TryReadUnit(frame, out int unit) || !_responders.ContainsKey(unit))
             {
                 // Another unit's traffic: not ours, and not a delimiter for us.
                 return LinkReply.None;
@@ -147,7 +155,7 @@ internal sealed class HostLinkExchange
 
     private LinkReply First(ReadOnlySpan<byte> frame)
     {
-        if (!MessagePrefix.TryReadUnit(frame, out int unit) || !_units.Contains(unit) || frame.Length < 6)
+        if (!MessagePrefix.TryReadUnit(frame, out int unit) || !_responders.ContainsKey(unit) || frame.Length < 6)
         {
             // Not for us, or too damaged to know whom to answer.
             return LinkReply.None;
@@ -169,7 +177,7 @@ internal sealed class HostLinkExchange
         ReadOnlySpan<byte> text = info.Text(frame);
         if (info.IsFinal)
         {
-            return Send(_responder.Respond(unit, header, text));
+            return Send(_responders[unit].Respond(unit, header, text));
         }
 
         if (!CModeAreaInfo.TryFromHeader(header, out CModeArea area, out bool write) || !write)
@@ -235,7 +243,7 @@ internal sealed class HostLinkExchange
         byte[] header = _header;
         int unit = _unit;
         Reset();
-        return Send(_responder.Respond(unit, header, all));
+        return Send(_responders[unit].Respond(unit, header, all));
     }
 
     /// <summary>

@@ -153,7 +153,7 @@ public sealed class HostLinkResponder
             {
                 string? message = _plc.FalMessage;
                 Span<byte> data = stackalloc byte[message is null ? 4 : 20];
-                HexAscii.WriteWord(CModeResponse.StatusWord(_plc.Mode), data);
+                HexAscii.WriteWord(CModeResponse.StatusWord(_plc.Mode, _plc.StatusLowByte), data);
                 if (message is not null)
                 {
                     data.Slice(4).Fill((byte)' ');

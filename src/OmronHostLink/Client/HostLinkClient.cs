@@ -30,7 +30,7 @@ public sealed class HostLinkClient : HostLinkUnit, IHostLinkClient
         Guard.NotNull(transport);
         HostLinkClientOptions o = (options ?? new HostLinkClientOptions()).Clone();
         o.Validate();
-        return new HostLinkClient(new HostLinkConnection(transport, o), o);
+        return new HostLinkClient(new HostLinkConnection(transport, o.ToConnectionOptions()), o);
     }
 
     /// <summary>Creates a client over a stream that is already open (an in-memory pipe, a custom port).</summary>

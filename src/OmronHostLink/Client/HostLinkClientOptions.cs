@@ -1,5 +1,6 @@
 using Microsoft.Extensions.Logging;
 using OmronHostLink.Link;
+using OmronHostLink.Transports;
 
 namespace OmronHostLink;
 
@@ -54,6 +55,9 @@ public sealed class HostLinkClientOptions
     /// <summary>Where the client logs (frames at Trace, transactions at Debug, retries as warnings).</summary>
     public ILoggerFactory? LoggerFactory { get; set; }
 
+    /// <summary>The clock frame deadlines run on. Default <see cref="TimeProvider.System"/>; tests pass a fake one.</summary>
+    public TimeProvider TimeProvider { get; set; } = TimeProvider.System;
+
     /// <summary>Checks the options and says what is wrong.</summary>
     /// <exception cref="ArgumentException">An option is out of range.</exception>
     public void Validate()
@@ -72,7 +76,21 @@ public sealed class HostLinkClientOptions
         Guard.InRange(ReadRetries, 0, 10, nameof(ReadRetries));
         Guard.InRange(WriteRetries, 0, 10, nameof(WriteRetries));
         Guard.InRange(FinsResponseWait, 0, 15, nameof(FinsResponseWait));
+        if (TimeProvider is null)
+        {
+            throw new ArgumentException("TimeProvider is required.", nameof(TimeProvider));
+        }
     }
 
     internal HostLinkClientOptions Clone() => (HostLinkClientOptions)MemberwiseClone();
+
+    /// <summary>The part of these options the link itself uses.</summary>
+    internal HostLinkConnectionOptions ToConnectionOptions() => new()
+    {
+        LineTiming = LineTiming,
+        TurnaroundAllowance = TurnaroundAllowance,
+        LocalEcho = LocalEcho,
+        LoggerFactory = LoggerFactory,
+        TimeProvider = TimeProvider,
+    };
 }

@@ -1,4 +1,5 @@
 using OmronHostLink.Link;
+using OmronHostLink.Protocol;
 using OmronHostLink.Protocol.CMode;
 using OmronHostLink.Protocol.Fins;
 
@@ -9,23 +10,23 @@ public partial class HostLinkUnit
 {
     /// <summary>Reads the CPU Unit's model and version (FINS 0501).</summary>
     public ValueTask<FinsCpuUnitData> ReadCpuUnitDataAsync(CancellationToken cancellationToken = default)
-        => FinsAsync(new CpuUnitDataReadCommand(), 160, retryable: true, static (data, _) => FinsCpuUnitData.Read(data), 0, cancellationToken);
+        => FinsAsync(new CpuUnitDataReadCommand(), 160, CommandEffect.ReadOnly, static (data, _) => FinsCpuUnitData.Read(data), 0, cancellationToken);
 
     /// <summary>Reads the CPU Unit's status, mode, error flags and error message (FINS 0601).</summary>
     public ValueTask<FinsCpuStatus> ReadCpuStatusAsync(CancellationToken cancellationToken = default)
-        => FinsAsync(new CpuUnitStatusReadCommand(), FinsCpuStatus.Length, retryable: true, static (data, _) => FinsCpuStatus.Read(data), 0, cancellationToken);
+        => FinsAsync(new CpuUnitStatusReadCommand(), FinsCpuStatus.Length, CommandEffect.ReadOnly, static (data, _) => FinsCpuStatus.Read(data), 0, cancellationToken);
 
     /// <summary>Reads the average, longest and shortest cycle times (FINS 0620); <paramref name="initialize"/> restarts the measurement instead.</summary>
     public ValueTask<FinsCycleTime?> ReadCycleTimeAsync(bool initialize = false, CancellationToken cancellationToken = default)
-        => FinsAsync(new CycleTimeReadCommand(initialize), 12, retryable: !initialize, static (data, init) => init ? null : FinsCycleTime.Read(data), initialize, cancellationToken);
+        => FinsAsync(new CycleTimeReadCommand(initialize), 12, initialize ? CommandEffect.NotRepeatable : CommandEffect.ReadOnly, static (data, init) => init ? null : FinsCycleTime.Read(data), initialize, cancellationToken);
 
     /// <summary>Reads the PLC's clock (FINS 0701).</summary>
     public ValueTask<FinsClock> ReadClockAsync(CancellationToken cancellationToken = default)
-        => FinsAsync(new ClockReadCommand(), FinsClock.Length, retryable: true, static (data, _) => FinsClock.Read(data), 0, cancellationToken);
+        => FinsAsync(new ClockReadCommand(), FinsClock.Length, CommandEffect.ReadOnly, static (data, _) => FinsClock.Read(data), 0, cancellationToken);
 
     /// <summary>Sets the PLC's clock (FINS 0702), seconds and day of week included.</summary>
     public async ValueTask WriteClockAsync(DateTime time, CancellationToken cancellationToken = default)
-        => await FinsAsync(new ClockWriteCommand(time, includeSecond: true, time.DayOfWeek), 0, retryable: false, ExpectNoData, "0702", cancellationToken).ConfigureAwait(false);
+        => await FinsAsync(new ClockWriteCommand(time, includeSecond: true, time.DayOfWeek), 0, CommandEffect.NotRepeatable, ExpectNoData, "0702", cancellationToken).ConfigureAwait(false);
 
     /// <summary>Starts the program in MONITOR or RUN mode (FINS 0401).</summary>
     public async ValueTask RunAsync(PlcMode mode = PlcMode.Monitor, CancellationToken cancellationToken = default)
@@ -36,22 +37,22 @@ public partial class HostLinkUnit
         }
 
         var command = new RunCommand(mode == PlcMode.Run ? FinsCpuMode.Run : FinsCpuMode.Monitor);
-        await FinsAsync(command, 0, retryable: false, ExpectNoData, "0401", cancellationToken).ConfigureAwait(false);
+        await FinsAsync(command, 0, CommandEffect.NotRepeatable, ExpectNoData, "0401", cancellationToken).ConfigureAwait(false);
     }
 
     /// <summary>Stops the program: PROGRAM mode (FINS 0402).</summary>
     public async ValueTask StopAsync(CancellationToken cancellationToken = default)
-        => await FinsAsync(new StopCommand(), 0, retryable: false, ExpectNoData, "0402", cancellationToken).ConfigureAwait(false);
+        => await FinsAsync(new StopCommand(), 0, CommandEffect.NotRepeatable, ExpectNoData, "0402", cancellationToken).ConfigureAwait(false);
 
     /// <summary>Clears one error, or all with the default <c>FFFF</c> (FINS 2101).</summary>
     public async ValueTask ClearErrorsAsync(ushort errorCode = ErrorClearCommand.AllErrors, CancellationToken cancellationToken = default)
-        => await FinsAsync(new ErrorClearCommand(errorCode), 0, retryable: false, ExpectNoData, "2101", cancellationToken).ConfigureAwait(false);
+        => await FinsAsync(new ErrorClearCommand(errorCode), 0, CommandEffect.NotRepeatable, ExpectNoData, "2101", cancellationToken).ConfigureAwait(false);
 
     /// <summary>Reads error log records (FINS 2102), up to 53 in one exchange.</summary>
     public ValueTask<FinsErrorLog> ReadErrorLogAsync(int firstRecord = 0, int count = 20, CancellationToken cancellationToken = default)
     {
         var command = new ErrorLogReadCommand(firstRecord, count);
-        return FinsAsync(command, 6 + (count * FinsErrorLogRecord.Length), retryable: true, static (data, _) => FinsErrorLog.Read(data), 0, cancellationToken);
+        return FinsAsync(command, 6 + (count * FinsErrorLogRecord.Length), CommandEffect.ReadOnly, static (data, _) => FinsErrorLog.Read(data), 0, cancellationToken);
     }
 
     /// <summary>Writes <paramref name="value"/> to <paramref name="count"/> words (FINS 0103).</summary>
@@ -59,7 +60,7 @@ public partial class HostLinkUnit
     {
         PlcAddress a = PlcAddress.Parse(address).AsWord();
         a.EnsureRange(count, HostLinkCommandSet.Fins, forWrite: true);
-        await FinsAsync(new MemoryAreaFillCommand(FinsAddressing.Word(a), count, value), 0, retryable: Options.WriteRetries > 0, ExpectNoData, "0103", cancellationToken).ConfigureAwait(false);
+        await FinsAsync(new MemoryAreaFillCommand(FinsAddressing.Word(a), count, value), 0, CommandEffect.Idempotent, ExpectNoData, "0103", cancellationToken).ConfigureAwait(false);
     }
 
     /// <summary>Copies <paramref name="count"/> words inside the PLC (FINS 0105).</summary>
@@ -70,7 +71,7 @@ public partial class HostLinkUnit
         from.EnsureRange(count, HostLinkCommandSet.Fins, forWrite: false);
         to.EnsureRange(count, HostLinkCommandSet.Fins, forWrite: true);
         var command = new MemoryAreaTransferCommand(FinsAddressing.Word(from), FinsAddressing.Word(to), count);
-        await FinsAsync(command, 0, retryable: Options.WriteRetries > 0, ExpectNoData, "0105", cancellationToken).ConfigureAwait(false);
+        await FinsAsync(command, 0, CommandEffect.Idempotent, ExpectNoData, "0105", cancellationToken).ConfigureAwait(false);
     }
 
     /// <summary>
@@ -91,7 +92,7 @@ public partial class HostLinkUnit
         }
 
         var command = new MultipleMemoryAreaReadCommand(items);
-        FinsMultipleReadValue[] values = await FinsAsync(command, command.ResponseDataLength, retryable: true, static (data, c) => FinsMultipleReadValue.ReadAll(data, c), command, cancellationToken).ConfigureAwait(false);
+        FinsMultipleReadValue[] values = await FinsAsync(command, command.ResponseDataLength, CommandEffect.ReadOnly, static (data, c) => FinsMultipleReadValue.ReadAll(data, c), command, cancellationToken).ConfigureAwait(false);
         return values.Select(v => v.Word).ToArray();
     }
 
@@ -104,12 +105,12 @@ public partial class HostLinkUnit
             throw new ArgumentException($"{a} names a word; forcing takes a bit address.", nameof(address));
         }
 
-        await FinsAsync(new ForcedSetResetCommand(action, FinsAddressing.Item(a)), 0, retryable: false, ExpectNoData, "2301", cancellationToken).ConfigureAwait(false);
+        await FinsAsync(new ForcedSetResetCommand(action, FinsAddressing.Item(a)), 0, CommandEffect.NotRepeatable, ExpectNoData, "2301", cancellationToken).ConfigureAwait(false);
     }
 
     /// <summary>Releases every forced bit (FINS 2302).</summary>
     public async ValueTask CancelForcedBitsAsync(CancellationToken cancellationToken = default)
-        => await FinsAsync(new ForcedSetResetCancelCommand(), 0, retryable: false, ExpectNoData, "2302", cancellationToken).ConfigureAwait(false);
+        => await FinsAsync(new ForcedSetResetCancelCommand(), 0, CommandEffect.NotRepeatable, ExpectNoData, "2302", cancellationToken).ConfigureAwait(false);
 
     // ---- Used by the protocol-neutral members ----
 
@@ -124,7 +125,7 @@ public partial class HostLinkUnit
             await FinsAsync(
                 command,
                 n * 2,
-                retryable: true,
+                CommandEffect.ReadOnly,
                 static (data, s) =>
                 {
                     FinsWords.Read(data, s.words.AsSpan(s.done, s.n));
@@ -144,7 +145,7 @@ public partial class HostLinkUnit
         {
             int n = Math.Min(MemoryAreaWriteCommand.MaxWords, words.Length - done);
             var command = MemoryAreaWriteCommand.Words(FinsAddressing.Word(address.Offset(done)), words.Span.Slice(done, n));
-            await FinsAsync(command, 0, retryable: Options.WriteRetries > 0, ExpectNoData, "0102", cancellationToken).ConfigureAwait(false);
+            await FinsAsync(command, 0, CommandEffect.Idempotent, ExpectNoData, "0102", cancellationToken).ConfigureAwait(false);
             done += n;
         }
     }
@@ -153,7 +154,7 @@ public partial class HostLinkUnit
     {
         address.EnsureRange(1, HostLinkCommandSet.Fins, forWrite: true);
         var command = MemoryAreaWriteCommand.Bits(FinsAddressing.Bit(address), new[] { value });
-        await FinsAsync(command, 0, retryable: Options.WriteRetries > 0, ExpectNoData, "0102", cancellationToken).ConfigureAwait(false);
+        await FinsAsync(command, 0, CommandEffect.Idempotent, ExpectNoData, "0102", cancellationToken).ConfigureAwait(false);
     }
 
     private async ValueTask<bool[]> FinsReadCompletionFlagsAsync(PlcAddress address, int count, CancellationToken cancellationToken)
@@ -166,7 +167,7 @@ public partial class HostLinkUnit
             bool[] part = await FinsAsync(
                 new MemoryAreaReadCommand(FinsAddressing.Item(address.Offset(done)), n),
                 n,
-                retryable: true,
+                CommandEffect.ReadOnly,
                 static (data, c) => FinsBits.Read(data, c),
                 n,
                 cancellationToken).ConfigureAwait(false);
@@ -201,18 +202,15 @@ public partial class HostLinkUnit
     }
 
     /// <summary>Sends one FINS command in an FA frame and decodes the data of a successful answer.</summary>
-    private protected ValueTask<TResult> FinsAsync<TState, TResult>(FinsCommand command, int maxResponseData, bool retryable, ResponseDecoder<TState, TResult> decodeData, TState state, CancellationToken cancellationToken)
+    private protected ValueTask<TResult> FinsAsync<TState, TResult>(FinsCommand command, int maxResponseData, CommandEffect effect, ResponseDecoder<TState, TResult> decodeData, TState state, CancellationToken cancellationToken)
     {
         FinsHeader header = FinsHeader.Direct(Connection.NextSid(), Options.FinsResponseWait);
         var message = new byte[FinsMessage.GetCommandLength(header, command)];
         FinsMessage.WriteCommand(message, UnitNumber, header, command);
-
-        // Host Link end code, then ICF DA2 SA2 SID, MRC SRC, MRES SRES and the data, two characters a byte.
-        int maxText = 2 + (2 * (header.Length + 4 + maxResponseData));
-        var request = new HostLinkRequest(UnitNumber, CModeHeaders.Fins, message, message.Length, 1, multiFrame: false, expectsResponse: true, maxText, retryable, singleFrameOnly: true);
+        var request = new HostLinkRequest(UnitNumber, CModeHeaders.Fins, message, FinsMessage.GetExchange(message.Length, header, maxResponseData));
         return Connection.ExecuteAsync(
             request,
-            retryable ? Options.ReadRetries : Options.WriteRetries,
+            RetriesFor(effect),
             static (text, s) =>
             {
                 FinsResponse response = FinsResponse.Parse(text, s.unit, s.header, s.code);

@@ -1,3 +1,4 @@
+using OmronHostLink.Protocol;
 using OmronHostLink.Protocol.Fins;
 
 namespace OmronHostLink;
@@ -167,7 +168,7 @@ public partial class HostLinkUnit
             }
             else
             {
-                await WriteBitRunAsync(address, Array.ConvertAll(values, v => v.ToBoolean()), cancellationToken).ConfigureAwait(false);
+                await WriteBitsAsync(address, Array.ConvertAll(values, v => v.ToBoolean()), cancellationToken).ConfigureAwait(false);
             }
 
             return;
@@ -182,38 +183,6 @@ public partial class HostLinkUnit
         }
 
         await WriteWordsAsync(address, words, cancellationToken).ConfigureAwait(false);
-    }
-
-    // More bits than one command carries: one read and one write of the words they cover (C-mode with read-modify-write
-    // allowed), else FINS bit writes of at most one frame's worth each.
-    private async ValueTask WriteBitRunAsync(PlcAddress address, bool[] bits, CancellationToken cancellationToken)
-    {
-        PlcAddress first = address.AsWord();
-        int wordCount = PlcValueCodec.WordCount(PlcValueType.Bit, bits.Length, address.Bit);
-        if (Options.AllowReadModifyWriteBits && Options.CommandSet == HostLinkCommandSet.CMode)
-        {
-            first.EnsureRange(wordCount, HostLinkCommandSet.CMode, forWrite: true);
-            ushort[] current = await ReadWordsAsync(first, wordCount, cancellationToken).ConfigureAwait(false);
-            for (int i = 0; i < bits.Length; i++)
-            {
-                int n = address.Bit + i;
-                current[n / 16] = PlcWords.SetBit(current[n / 16], n % 16, bits[i]);
-            }
-
-            await WriteWordsAsync(first, current, cancellationToken).ConfigureAwait(false);
-            return;
-        }
-
-        first.EnsureRange(wordCount, HostLinkCommandSet.Fins, forWrite: true);
-        for (int done = 0; done < bits.Length;)
-        {
-            int n = Math.Min(MemoryAreaWriteCommand.MaxDataBytes, bits.Length - done);
-            int bit = address.Bit + done;
-            PlcAddress from = first.Offset(bit / 16).WithBit(bit % 16);
-            var command = MemoryAreaWriteCommand.Bits(FinsAddressing.Bit(from), bits.AsSpan(done, n));
-            await FinsAsync(command, 0, retryable: Options.WriteRetries > 0, ExpectNoData, "0102", cancellationToken).ConfigureAwait(false);
-            done += n;
-        }
     }
 
     private static void EnsureBitAddress(PlcAddress address, string typeName, bool forWrite = false)

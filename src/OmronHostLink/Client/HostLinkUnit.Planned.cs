@@ -1,4 +1,5 @@
 using OmronHostLink.Planning;
+using OmronHostLink.Protocol;
 using OmronHostLink.Protocol.Fins;
 
 namespace OmronHostLink;
@@ -104,7 +105,7 @@ public partial class HostLinkUnit
         return FinsAsync(
             command,
             command.ResponseDataLength,
-            retryable: true,
+            CommandEffect.ReadOnly,
             static (data, c) =>
             {
                 FinsMultipleReadValue[] values = FinsMultipleReadValue.ReadAll(data, c);

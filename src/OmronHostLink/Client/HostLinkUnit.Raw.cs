@@ -1,5 +1,6 @@
 using OmronHostLink.Link;
 using OmronHostLink.Protocol;
+using OmronHostLink.Protocol.CMode;
 
 namespace OmronHostLink;
 
@@ -29,16 +30,15 @@ public partial class HostLinkUnit
         var message = new byte[MessagePrefix.UnitLength + body.Length];
         MessagePrefix.WriteUnit(message, UnitNumber);
         body.CopyTo(message, MessagePrefix.UnitLength);
-        var request = new HostLinkRequest(
-            UnitNumber,
-            text.Substring(0, 2),
-            message,
+        string header = text.Substring(0, 2);
+        var shape = ExchangeShape.CMode(
             message.Length,
-            1,
-            multiFrame: false,
+            atomLength: 1,
+            multiFrameCommand: false,
             expectsResponse,
             MaxRawResponseText,
-            retryable: false);
+            CModeCommand.AnswerCanEqualCommand(header, body.Length - 2));
+        var request = new HostLinkRequest(UnitNumber, header, message, shape);
         return Connection.ExecuteAsync(request, 0, static (answer, _) => answer.ToArray(), 0, cancellationToken);
     }
 }

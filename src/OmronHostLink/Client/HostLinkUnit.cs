@@ -3,6 +3,7 @@ using System.Text;
 using OmronHostLink.Link;
 using OmronHostLink.Protocol;
 using OmronHostLink.Protocol.CMode;
+using OmronHostLink.Transports;
 
 namespace OmronHostLink;
 
@@ -100,7 +101,7 @@ public partial class HostLinkUnit
     public ValueTask<PlcStatus> ReadStatusAsync(CancellationToken cancellationToken = default)
         => Options.CommandSet == HostLinkCommandSet.Fins
             ? FinsReadStatusAsync(cancellationToken)
-            : CModeAsync(StatusReadCommand.Instance, 2 + 20, retryable: true, static (data, _) => CModeResponse.ReadStatus(data), 0, cancellationToken);
+            : CModeAsync(StatusReadCommand.Instance, static (data, _) => CModeResponse.ReadStatus(data), 0, cancellationToken);
 
     /// <summary>
     /// Changes the operating mode (C-mode SC; FINS 0401/0402 when the protocol is FINS). Leaving RUN or MONITOR stops
@@ -114,16 +115,16 @@ public partial class HostLinkUnit
             return;
         }
 
-        await CModeAsync(new StatusChangeCommand(mode), 2, retryable: false, static (data, _) => ExpectEmpty(data, "SC"), 0, cancellationToken).ConfigureAwait(false);
+        await CModeAsync(new StatusChangeCommand(mode), static (data, _) => ExpectEmpty(data, "SC"), 0, cancellationToken).ConfigureAwait(false);
     }
 
     /// <summary>Reads the error information (MF), clearing the errors afterwards when <paramref name="clear"/> is true.</summary>
     public ValueTask<PlcErrorInfo> ReadErrorsAsync(bool clear = false, CancellationToken cancellationToken = default)
-        => CModeAsync(new ErrorReadCommand(clear), 2 + 8, retryable: !clear, static (data, _) => CModeResponse.ReadErrors(data), 0, cancellationToken);
+        => CModeAsync(new ErrorReadCommand(clear), static (data, _) => CModeResponse.ReadErrors(data), 0, cancellationToken);
 
     /// <summary>Reads the PLC model code (MM).</summary>
     public ValueTask<PlcModel> ReadModelAsync(CancellationToken cancellationToken = default)
-        => CModeAsync(ModelReadCommand.Instance, 2 + 2, retryable: true, static (data, _) => CModeResponse.ReadModel(data), 0, cancellationToken);
+        => CModeAsync(ModelReadCommand.Instance, static (data, _) => CModeResponse.ReadModel(data), 0, cancellationToken);
 
     /// <summary>
     /// Sends TS (TEST) with <paramref name="text"/> and checks that the PLC echoes it unchanged. Returns the round-trip time.
@@ -135,8 +136,8 @@ public partial class HostLinkUnit
         byte[] sent = Encoding.ASCII.GetBytes(text);
         var clock = System.Diagnostics.Stopwatch.StartNew();
         await Connection.ExecuteAsync(
-            Request(command, TestCommand.MaxTextLength, retryable: true),
-            Options.ReadRetries,
+            Request(command),
+            RetriesFor(command.Effect),
             static (echo, state) =>
             {
                 CModeResponse.CheckTestEcho(echo, state.sent, state.unit);
@@ -149,34 +150,36 @@ public partial class HostLinkUnit
 
     /// <summary>Sends XZ (ABORT) to this unit: it drops the exchange it is in. The PLC sends no answer.</summary>
     public async ValueTask AbortAsync(CancellationToken cancellationToken = default)
-        => await Connection.ExecuteAsync(Request(AbortCommand.Instance, 0, retryable: false), 0, static (_, _) => true, 0, cancellationToken).ConfigureAwait(false);
+        => await Connection.ExecuteAsync(Request(AbortCommand.Instance), RetriesFor(AbortCommand.Instance.Effect), static (_, _) => true, 0, cancellationToken).ConfigureAwait(false);
 
     /// <summary>Sends <c>@**</c> (INITIALIZE): every unit on the line resets its Host Link transmission control. No answer.</summary>
     public ValueTask InitializeAsync(CancellationToken cancellationToken = default)
-        => Connection.SendRawAsync(CModeFrames.Initialize.ToArray(), cancellationToken);
+        => Connection.InitializeAsync(cancellationToken);
 
     // ---- C-mode plumbing ----
 
-    private protected HostLinkRequest Request(CModeCommand command, int maxResponseText, bool retryable)
-        => new(
-            UnitNumber,
-            command.Header,
-            command.ToMessage(UnitNumber),
-            CModeCommand.PrefixLength + command.FixedTextLength,
-            command.AtomLength,
-            command.MayUseSeveralFrames,
-            command.ExpectsResponse,
-            maxResponseText,
-            retryable);
+    private protected HostLinkRequest Request(CModeCommand command)
+        => new(UnitNumber, command.Header, command.ToMessage(UnitNumber), command.Exchange);
 
-    private protected ValueTask<TResult> CModeAsync<TState, TResult>(CModeCommand command, int maxResponseText, bool retryable, ResponseDecoder<TState, TResult> decodeData, TState state, CancellationToken cancellationToken)
+    /// <summary>How often a command is repeated after a timeout or damage: by what repeating it would do.</summary>
+    private protected int RetriesFor(CommandEffect effect) => effect switch
+    {
+        CommandEffect.ReadOnly => Options.ReadRetries,
+        CommandEffect.Idempotent => Options.WriteRetries,
+        _ => 0,
+    };
+
+    private protected ValueTask<TResult> CModeAsync<TState, TResult>(CModeCommand command, ResponseDecoder<TState, TResult> decodeData, TState state, CancellationToken cancellationToken)
         => Connection.ExecuteAsync(
-            Request(command, maxResponseText, retryable),
-            retryable ? Options.ReadRetries : Options.WriteRetries,
+            Request(command),
+            RetriesFor(command.Effect),
             static (text, s) => s.decodeData(CModeResponse.GetData(text, s.header, s.unit), s.state),
             (decodeData, state, header: command.Header, unit: UnitNumber),
             cancellationToken);
 
+#if NET
+    [System.Runtime.CompilerServices.AsyncMethodBuilder(typeof(System.Runtime.CompilerServices.PoolingAsyncValueTaskMethodBuilder<>))]
+#endif
     private async ValueTask<ushort[]> CModeReadWordsAsync(PlcAddress address, int count, CancellationToken cancellationToken)
     {
         // The hot path: no command object and no message array (a pooled buffer carries the message); the only
@@ -188,19 +191,10 @@ public partial class HostLinkUnit
         {
             AreaReadCommand.WriteMessage(UnitNumber, area, begin, count, address.Bank, message);
             string header = CModeAreaInfo.ReadHeader(area);
-            var request = new HostLinkRequest(
-                UnitNumber,
-                header,
-                message.AsMemory(0, length),
-                length,
-                atomLength: 1,
-                multiFrame: false,
-                expectsResponse: true,
-                maxResponseText: CModeResponse.EndCodeLength + (count * CModeAreaInfo.CharactersPerEntry(area)),
-                retryable: true);
+            var request = new HostLinkRequest(UnitNumber, header, message.AsMemory(0, length), AreaReadCommand.GetExchange(area, count));
             return await Connection.ExecuteAsync(
                 request,
-                Options.ReadRetries,
+                RetriesFor(CommandEffect.ReadOnly),
                 static (text, s) =>
                 {
                     ReadOnlySpan<byte> data = CModeResponse.GetData(text, s.header, s.unit);
@@ -221,7 +215,7 @@ public partial class HostLinkUnit
     {
         (CModeArea area, int begin) = CModeAddressing.Map(address);
         var command = new AreaWriteCommand(area, begin, words.Span, address.Bank);
-        await CModeAsync(command, 2, retryable: Options.WriteRetries > 0, static (data, h) => ExpectEmpty(data, h), command.Header, cancellationToken).ConfigureAwait(false);
+        await CModeAsync(command, static (data, h) => ExpectEmpty(data, h), command.Header, cancellationToken).ConfigureAwait(false);
     }
 
     private async ValueTask<bool[]> ReadCompletionFlagsAsync(PlcAddress address, int count, CancellationToken cancellationToken)
@@ -242,8 +236,6 @@ public partial class HostLinkUnit
         var command = new AreaReadCommand(CModeArea.TimerCounterStatus, begin, count);
         return await CModeAsync(
             command,
-            2 + count,
-            retryable: true,
             static (data, n) =>
             {
                 var flags = new bool[n];

@@ -10,6 +10,13 @@ public sealed class HostLinkTimeoutException : HostLinkException
         Timeout = timeout;
     }
 
+    /// <summary>Creates the exception with the failure it restates.</summary>
+    internal HostLinkTimeoutException(string message, TimeSpan timeout, Exception? innerException)
+        : base(message, innerException)
+    {
+        Timeout = timeout;
+    }
+
     /// <summary>The deadline that passed.</summary>
     public TimeSpan Timeout { get; }
 

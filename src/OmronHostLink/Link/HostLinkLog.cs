@@ -15,7 +15,7 @@ internal static partial class HostLinkLog
     public static partial void Retry(ILogger logger, int unit, string header, string reason, int attempt, int retries);
 
     [LoggerMessage(EventId = 4, Level = LogLevel.Debug, Message = "Resynchronising the link after a failed exchange with unit {Unit:D2}: discarded {Discarded} bytes, fence {Outcome}")]
-    public static partial void Resync(ILogger logger, int unit, long discarded, string outcome);
+    public static partial void Resync(ILogger logger, int unit, long discarded, ResyncOutcome outcome);
 
     [LoggerMessage(EventId = 5, Level = LogLevel.Information, Message = "Opened {Transport}")]
     public static partial void Opened(ILogger logger, string transport);

@@ -162,13 +162,13 @@ public sealed class ReadPlan
 /// <summary>Turns characters and exchanges into time for a line.</summary>
 internal readonly struct LineTimingCost
 {
-    public LineTimingCost(Link.LineTiming timing, TimeSpan turnaround)
+    public LineTimingCost(Transports.LineTiming timing, TimeSpan turnaround)
     {
         Timing = timing;
         Turnaround = turnaround;
     }
 
-    public Link.LineTiming Timing { get; }
+    public Transports.LineTiming Timing { get; }
 
     public TimeSpan Turnaround { get; }
 

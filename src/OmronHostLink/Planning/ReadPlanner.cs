@@ -1,4 +1,4 @@
-using OmronHostLink.Link;
+using OmronHostLink.Transports;
 using OmronHostLink.Protocol;
 using OmronHostLink.Protocol.CMode;
 using OmronHostLink.Protocol.Fins;

@@ -10,7 +10,7 @@ public interface IHostLinkTransport : IAsyncDisposable
     string Description { get; }
 
     /// <summary>The line's character timing when the transport knows it (a serial port); null to use the client's option.</summary>
-    Link.LineTiming? LineTiming { get; }
+    LineTiming? LineTiming { get; }
 
     /// <summary>Opens (or reopens) the stream.</summary>
     /// <exception cref="HostLinkConnectionException">The stream cannot be opened; the message names the port or host and the reason.</exception>

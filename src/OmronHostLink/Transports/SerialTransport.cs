@@ -34,14 +34,14 @@ public sealed class SerialTransport : IHostLinkTransport
         settings.Validate();
         _settings = settings.Clone();
         _createPort = createPort;
-        LineTiming = new Link.LineTiming(settings.BaudRate, settings.BitsPerCharacter);
+        LineTiming = new LineTiming(settings.BaudRate, settings.BitsPerCharacter);
     }
 
     /// <inheritdoc/>
     public string Description => _settings.ToString();
 
     /// <inheritdoc/>
-    public Link.LineTiming? LineTiming { get; }
+    public LineTiming? LineTiming { get; }
 
     /// <summary>True when the open port is a pseudo-terminal, opened with its own 8-bit framing (see the remarks).</summary>
     internal bool IsPseudoTerminal { get; private set; }

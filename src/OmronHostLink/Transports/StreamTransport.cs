@@ -10,7 +10,7 @@ public sealed class StreamTransport : IHostLinkTransport
     /// <param name="stream">A readable and writable stream.</param>
     /// <param name="leaveOpen">True to leave the stream open when the transport is disposed.</param>
     /// <param name="lineTiming">The line's character timing, when known.</param>
-    public StreamTransport(Stream stream, bool leaveOpen = false, Link.LineTiming? lineTiming = null)
+    public StreamTransport(Stream stream, bool leaveOpen = false, LineTiming? lineTiming = null)
     {
         _stream = Guard.NotNull(stream);
         if (!stream.CanRead || !stream.CanWrite)
@@ -26,7 +26,7 @@ public sealed class StreamTransport : IHostLinkTransport
     public string Description => "stream";
 
     /// <inheritdoc/>
-    public Link.LineTiming? LineTiming { get; }
+    public LineTiming? LineTiming { get; }
 
     /// <inheritdoc/>
     public ValueTask<Stream> OpenAsync(CancellationToken cancellationToken)
@@ -41,7 +41,7 @@ public sealed class StreamTransport : IHostLinkTransport
         _stream = null;
         if (s is not null && !_leaveOpen)
         {
-            await Link.StreamCompat.DisposeAsync(s).ConfigureAwait(false);
+            await StreamCompat.DisposeAsync(s).ConfigureAwait(false);
         }
     }
 

@@ -11,7 +11,7 @@ public sealed class TcpTransport : IHostLinkTransport
     private TcpClient? _client;
 
     /// <summary>Creates the transport; nothing connects until the first exchange.</summary>
-    public TcpTransport(string host, int port, TimeSpan? connectTimeout = null, Link.LineTiming? lineTiming = null)
+    public TcpTransport(string host, int port, TimeSpan? connectTimeout = null, LineTiming? lineTiming = null)
     {
         if (string.IsNullOrWhiteSpace(host))
         {
@@ -38,7 +38,7 @@ public sealed class TcpTransport : IHostLinkTransport
     public string Description => $"{Host}:{Port}";
 
     /// <inheritdoc/>
-    public Link.LineTiming? LineTiming { get; }
+    public LineTiming? LineTiming { get; }
 
     /// <summary>Parses <c>host:port</c>.</summary>
     /// <exception cref="FormatException">The text is not host:port with a port 1-65535.</exception>

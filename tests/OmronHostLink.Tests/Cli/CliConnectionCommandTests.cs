@@ -38,7 +38,7 @@ public sealed class CliConnectionCommandTests
         sim.Plc.SetError(0x8000, 0x0001);
 
         CliResult human = await sim.RunAsync("errors");
-        human.ExitCode.Should().Be(0, human.ToString());
+        human.ExitCode.Should().Be(5, "error bits are on: {0}", human);
         human.Out.Should().Contain("word 1 bit 15").And.Contain("word 2 bit 00");
 
         JsonElement j = (await sim.RunAsync("errors", "--clear", "--json")).Json();

@@ -42,7 +42,7 @@ public sealed class CliExitCodeTests
     [InlineData("status", "--baud", "fast", "--tcp", "127.0.0.1:1")]
     [InlineData("status", "--parity", "mark", "--tcp", "127.0.0.1:1")]
     [InlineData("status", "--data-bits", "6", "--tcp", "127.0.0.1:1")]
-    [InlineData("read", "D1", "--as", "double", "--tcp", "127.0.0.1:1")]
+    [InlineData("read", "D1", "--as", "quad", "--tcp", "127.0.0.1:1")]
     [InlineData("mode", "stop", "--yes", "--tcp", "127.0.0.1:1")]
     [InlineData("status", "--tcp", "127.0.0.1:1", "--bogus")]
     [InlineData("simulate", "--fault-drop", "2")]

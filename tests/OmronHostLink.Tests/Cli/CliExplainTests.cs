@@ -149,4 +149,108 @@ public sealed class CliExplainTests
         j.GetProperty("fields").GetProperty("responseCode").GetString().Should().Be("1103");
         j.GetProperty("fields").GetProperty("command").GetString().Should().Be("0101");
     }
+
+    [Fact]
+    public async Task Explain_calls_an_fcs_that_differs_only_in_case_a_lowercase_fcs()
+    {
+        string frame = GoldenFrames.Frames("c_ic_resp")[0]; // @00IC4A*
+        string lower = frame.Replace("4A*", "4a*", StringComparison.Ordinal);
+
+        CliResult human = await Cli.RunAsync("explain", lower, "--response");
+        CliResult json = await Cli.RunAsync("explain", lower, "--response", "--json");
+
+        human.ExitCode.Should().Be(2, "the link refuses a lowercase FCS as it refuses any changed character: {0}", human);
+        human.Out.Should().Contain("lowercase FCS").And.NotContain("MISMATCH");
+        human.Err.Should().Contain("lowercase FCS").And.Contain("4a").And.NotContain("FCS error");
+        JsonElement fcs = json.Json().GetProperty("fcs");
+        fcs.GetProperty("ok").GetBoolean().Should().BeFalse();
+        fcs.GetProperty("lowercase").GetBoolean().Should().BeTrue();
+    }
+
+    [Fact]
+    public async Task Explain_still_calls_a_wrong_lowercase_fcs_wrong()
+    {
+        string frame = GoldenFrames.Frames("c_ic_resp")[0].Replace("4A*", "4b*", StringComparison.Ordinal);
+
+        CliResult r = await Cli.RunAsync("explain", frame, "--response");
+
+        r.ExitCode.Should().Be(2, r.ToString());
+        r.Out.Should().Contain("MISMATCH").And.NotContain("lowercase");
+    }
+
+    [Fact]
+    public async Task Explain_reports_a_frame_over_131_characters_as_end_code_18()
+    {
+        // 30 words of WD: 9 + 120 + FCS + '*' + CR = 133 characters; a CS/CJ answers 18 (frame length error).
+        string frame = Framed("@00WD0000" + string.Concat(Enumerable.Repeat("1234", 30)));
+
+        CliResult r = await Cli.RunAsync("explain", frame, "--json");
+
+        r.ExitCode.Should().Be(2, r.ToString());
+        JsonElement j = r.Json();
+        j.GetProperty("fields").GetProperty("wouldAnswer").GetString().Should().Be("18");
+        string problem = j.GetProperty("problems")[0].GetString()!;
+        problem.Should().Contain("133").And.Contain("131").And.Contain("end code 18").And.Contain("frame length error");
+        r.Err.Should().Contain("end code 18");
+    }
+
+    [Fact]
+    public async Task Explain_takes_a_frame_of_exactly_131_characters()
+    {
+        // 29 words of WD: 9 + 116 + FCS + '*' + CR = 131 characters.
+        string frame = Framed("@00WD0000" + string.Concat(Enumerable.Repeat("1234", 29)));
+
+        CliResult r = await Cli.RunAsync("explain", frame, "--json");
+
+        r.ExitCode.Should().Be(0, r.ToString());
+        r.Json().GetProperty("problems").GetArrayLength().Should().Be(0);
+    }
+
+    [Fact]
+    public async Task Explain_reports_an_answer_over_131_characters_as_one_no_plc_sends()
+    {
+        // An RD answer of 31 words in one frame: 7 + 124 + FCS + '*' + CR = 135 characters.
+        string frame = Framed("@00RD00" + string.Concat(Enumerable.Repeat("ABCD", 31)));
+
+        JsonElement j = (await Cli.RunAsync("explain", frame, "--response", "--json")).Json();
+
+        j.GetProperty("valid").GetBoolean().Should().BeFalse();
+        j.GetProperty("problems")[0].GetString().Should().Contain("135").And.Contain("131");
+    }
+
+    [Fact]
+    public async Task Explain_reports_a_later_frame_over_128_characters_as_end_code_A8()
+    {
+        // A continuation frame of 32 words: 128 + FCS + '*' + CR = 132 characters; a later frame holds at most 128.
+        string frame = Framed(string.Concat(Enumerable.Repeat("0F0F", 32)));
+
+        JsonElement j = (await Cli.RunAsync("explain", frame, "--json")).Json();
+
+        j.GetProperty("fields").GetProperty("wouldAnswer").GetString().Should().Be("A8");
+        j.GetProperty("problems")[0].GetString().Should().Contain("128").And.Contain("A8");
+    }
+
+    /// <summary>The text with its FCS (XOR of every character, two upper-case hex digits) and <c>*</c>.</summary>
+    internal static string Framed(string text)
+    {
+        int fcs = 0;
+        foreach (char c in text)
+        {
+            fcs ^= c;
+        }
+
+        return $"{text}{fcs:X2}*";
+    }
+
+    [Fact]
+    public async Task Explain_holds_fa_frames_to_their_own_limit_not_131()
+    {
+        // FINS 0102 writing 60 words to D0: an FA frame of 274 characters, within the 1,115 an FA frame may hold.
+        string frame = Framed("@00FA000000000010282000000003C" + string.Concat(Enumerable.Repeat("1234", 60)));
+
+        CliResult r = await Cli.RunAsync("explain", frame, "--json");
+
+        r.ExitCode.Should().Be(0, r.ToString());
+        r.Json().GetProperty("fields").GetProperty("count").GetInt32().Should().Be(60);
+    }
 }

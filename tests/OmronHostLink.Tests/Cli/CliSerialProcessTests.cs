@@ -6,6 +6,7 @@ namespace OmronHostLink.Tests.Cli;
 /// <c>hostlink</c> on a socat pty pair as a new user tries it: the simulator on one end and reads on the other, each a
 /// separate process, all with the default 9600 7E2 settings.
 /// </summary>
+[Trait("Category", "Slow")]
 public sealed class CliSerialProcessTests
 {
     private static readonly TimeSpan ProcessTimeout = TimeSpan.FromSeconds(60);

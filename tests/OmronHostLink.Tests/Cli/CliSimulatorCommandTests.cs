@@ -90,7 +90,7 @@ public sealed class CliSimulatorCommandTests
         r.Json().GetProperty("ports").ValueKind.Should().Be(System.Text.Json.JsonValueKind.Array);
     }
 
-    private static async Task<string> WaitForEndpointAsync(Func<string> output)
+    internal static async Task<string> WaitForEndpointAsync(Func<string> output)
     {
         var deadline = DateTime.UtcNow.AddSeconds(10);
         while (DateTime.UtcNow < deadline)

@@ -1,9 +1,10 @@
 using System.Net;
 using OmronHostLink.Link;
 using OmronHostLink.Planning;
-using OmronHostLink.Simulator;
 using OmronHostLink.Simulator.Hosting;
+using OmronHostLink.Simulator;
 using OmronHostLink.Tests.Infrastructure;
+using OmronHostLink.Transports;
 
 namespace OmronHostLink.Tests.Client;
 

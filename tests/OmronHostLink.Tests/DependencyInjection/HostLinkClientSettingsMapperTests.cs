@@ -65,7 +65,7 @@ public sealed class HostLinkClientSettingsMapperTests
         settings.Tcp.Port = 9;
 
         HostLinkClientSettingsMapper.ToClientOptions(settings).Should().BeEquivalentTo(new HostLinkClientOptions(), o => o.Excluding(x => x.LineTiming));
-        HostLinkClientSettingsMapper.ToClientOptions(settings).LineTiming.Should().BeEquivalentTo(OmronHostLink.Link.LineTiming.Default);
+        HostLinkClientSettingsMapper.ToClientOptions(settings).LineTiming.Should().BeEquivalentTo(OmronHostLink.Transports.LineTiming.Default);
         HostLinkClientSettingsMapper.ToSerialLineSettings(settings).Should().BeEquivalentTo(new SerialLineSettings());
     }
 }

@@ -1,6 +1,7 @@
 using OmronHostLink.Link;
-using OmronHostLink.Simulator;
 using OmronHostLink.Simulator.Hosting;
+using OmronHostLink.Simulator;
+using OmronHostLink.Transports;
 
 namespace OmronHostLink.Tests.Infrastructure;
 

@@ -81,6 +81,10 @@ internal sealed class ScriptedPlc : IAsyncDisposable
         catch (IOException)
         {
         }
+        catch (InvalidOperationException)
+        {
+            // The far end closed the in-memory link under a pending read.
+        }
     }
 
     private async Task SendAsync(Reply reply)
@@ -105,8 +109,8 @@ internal sealed class ScriptedPlc : IAsyncDisposable
 
     public async ValueTask DisposeAsync()
     {
+        // The loop ends on the cancellation before the stream goes: a read racing the stream's disposal fails untyped.
         _stop.Cancel();
-        await _stream.DisposeAsync();
         try
         {
             await _loop;
@@ -114,5 +118,7 @@ internal sealed class ScriptedPlc : IAsyncDisposable
         catch (OperationCanceledException)
         {
         }
+
+        await _stream.DisposeAsync();
     }
 }

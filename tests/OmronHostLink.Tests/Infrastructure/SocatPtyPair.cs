@@ -79,10 +79,10 @@ public sealed class SocatPtyPair : IAsyncDisposable
     public static async Task<SocatPtyPair> StartAsync(string pathA, string pathB)
     {
 
+        // socat writes nothing to stdout; its log (-d -d) goes to stderr.
         var startInfo = new ProcessStartInfo("socat")
         {
             RedirectStandardError = true,
-            RedirectStandardOutput = true,
             UseShellExecute = false,
         };
         foreach (string argument in new[] { "-d", "-d", $"pty,raw,echo=0,link={pathA}", $"pty,raw,echo=0,link={pathB}" })
@@ -93,9 +93,9 @@ public sealed class SocatPtyPair : IAsyncDisposable
         var log = new StringBuilder();
         var ready = new TaskCompletionSource(TaskCreationOptions.RunContinuationsAsynchronously);
         var process = new Process { StartInfo = startInfo, EnableRaisingEvents = true };
-        process.ErrorDataReceived += (_, e) =>
+        void OnLogLine(string? line)
         {
-            if (e.Data is null)
+            if (line is null)
             {
                 ready.TrySetException(new InvalidOperationException("socat closed its log before it was ready."));
                 return;
@@ -103,16 +103,16 @@ public sealed class SocatPtyPair : IAsyncDisposable
 
             lock (log)
             {
-                log.AppendLine(e.Data);
+                log.AppendLine(line);
             }
 
             // Logged (with -d -d) once both ptys exist and their links are made.
-            if (e.Data.Contains("starting data transfer loop", StringComparison.Ordinal))
+            if (line.Contains("starting data transfer loop", StringComparison.Ordinal))
             {
                 ready.TrySetResult();
             }
-        };
-        process.OutputDataReceived += (_, _) => { };
+        }
+
         process.Exited += (_, _) => ready.TrySetException(new InvalidOperationException($"socat exited with code {SafeExitCode(process)} before it was ready."));
 
         try
@@ -127,8 +127,29 @@ public sealed class SocatPtyPair : IAsyncDisposable
                 ex);
         }
 
-        process.BeginErrorReadLine();
-        process.BeginOutputReadLine();
+        // The log is read on a thread of its own for as long as socat runs: Process.BeginErrorReadLine reads a pipe
+        // with a blocking read on a thread-pool thread, which on a 2-core machine is half the pool's minimum.
+        var reader = new Thread(() =>
+        {
+            try
+            {
+                string? line;
+                while ((line = process.StandardError.ReadLine()) is not null)
+                {
+                    OnLogLine(line);
+                }
+            }
+            catch (Exception e) when (e is IOException or ObjectDisposedException or InvalidOperationException)
+            {
+            }
+
+            OnLogLine(null);
+        })
+        {
+            IsBackground = true,
+            Name = "socat log",
+        };
+        reader.Start();
         var pair = new SocatPtyPair(process, log, pathA, pathB);
         try
         {

@@ -1,5 +1,4 @@
 using System.Net;
-using OmronHostLink.Link;
 using OmronHostLink.Simulator;
 using OmronHostLink.Simulator.Hosting;
 using OmronHostLink.Tests.Infrastructure;

@@ -6,6 +6,7 @@ using Microsoft.Extensions.Logging;
 using OmronHostLink.Link;
 using OmronHostLink.Simulator;
 using OmronHostLink.Simulator.Hosting;
+using OmronHostLink.Transports;
 
 namespace OmronHostLink.Tests.Link;
 

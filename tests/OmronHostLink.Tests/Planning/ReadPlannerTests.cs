@@ -1,4 +1,4 @@
-using OmronHostLink.Link;
+using OmronHostLink.Transports;
 using OmronHostLink.Planning;
 using OmronHostLink.Protocol.Fins;
 

@@ -1,4 +1,4 @@
-using OmronHostLink.Link;
+using OmronHostLink.Transports;
 using OmronHostLink.Planning;
 using OmronHostLink.Simulator;
 using OmronHostLink.Simulator.Hosting;

@@ -2,6 +2,7 @@ using OmronHostLink.Link;
 using OmronHostLink.Protocol.Fins;
 using OmronHostLink.Simulator.Hosting;
 using OmronHostLink.Tests.Infrastructure;
+using OmronHostLink.Transports;
 
 namespace OmronHostLink.Tests.Protocol;
 

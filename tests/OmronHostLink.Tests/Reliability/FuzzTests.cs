@@ -117,7 +117,7 @@ public sealed class FuzzTests(ITestOutputHelper output)
         var flood = new FloodStream(withAt ? (byte)'@' : (byte)'x');
         await using var client = HostLinkClient.ForStream(flood, new HostLinkClientOptions
         {
-            LineTiming = new OmronHostLink.Link.LineTiming(1_000_000, 10),
+            LineTiming = new OmronHostLink.Transports.LineTiming(1_000_000, 10),
             TurnaroundAllowance = TimeSpan.FromMilliseconds(100),
             ReadRetries = 0,
         });

@@ -1,7 +1,6 @@
 using System.Net;
 using System.Net.Sockets;
 using System.Text;
-using OmronHostLink.Link;
 using OmronHostLink.Protocol;
 using OmronHostLink.Simulator;
 using OmronHostLink.Simulator.Hosting;
@@ -68,6 +67,7 @@ public sealed class LinkLossTests
     }
 
     [Fact]
+    [Trait("Category", "Slow")]
     public async Task Serial_pty_vanishing_mid_exchange_is_a_connection_error_and_the_port_reopens_when_it_is_back()
     {
         SocatPtyPair pty = await SocatPtyPair.StartAsync();

@@ -10,7 +10,7 @@ namespace OmronHostLink.Tests.Simulator;
 public class FaultInjectionTests
 {
     private static readonly string Ms = RawHost.Command("@00MS");
-    private static readonly string MsAnswer = RawHost.Command("@00MS000000");
+    private static readonly string MsAnswer = RawHost.Command("@00MS0000B0");
 
     private static RawHost Start(FaultOptions faults) => RawHost.Start(new VirtualPlcOptions { Faults = faults });
 

@@ -152,7 +152,7 @@ public class FinsSimulatorTests
         status.Mode.Should().Be(FinsCpuMode.Run);
         status.IsRunning.Should().BeTrue();
         status.ErrorMessage.Should().Be("HELLO");
-        (await host.TransactAsync(RawHost.Command("@00MS"))).Should().StartWith("@00MS000200");
+        (await host.TransactAsync(RawHost.Command("@00MS"))).Should().StartWith("@00MS0002B0");
 
         (await TransactAsync(host, new RunCommand(FinsCpuMode.Monitor))).EndCode.Raw.Should().Be(0);
         plc.Mode.Should().Be(PlcMode.Monitor);

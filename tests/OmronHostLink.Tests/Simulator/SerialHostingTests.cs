@@ -7,6 +7,7 @@ using OmronHostLink.Transports;
 namespace OmronHostLink.Tests.Simulator;
 
 /// <summary>The simulator's serial host by port name, over real socat ptys: restarted on the same pty, and outliving its line.</summary>
+[Trait("Category", "Slow")]
 public sealed class SerialHostingTests
 {
     private static readonly TimeSpan Patience = TimeSpan.FromSeconds(10);

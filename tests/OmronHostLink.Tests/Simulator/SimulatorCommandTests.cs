@@ -91,9 +91,9 @@ public class SimulatorCommandTests
     }
 
     [Theory]
-    [InlineData(PlcMode.Program, "0000")]
-    [InlineData(PlcMode.Run, "0200")]
-    [InlineData(PlcMode.Monitor, "0300")]
+    [InlineData(PlcMode.Program, "00B0")]
+    [InlineData(PlcMode.Run, "02B0")]
+    [InlineData(PlcMode.Monitor, "03B0")]
     public async Task MS_reports_the_mode_in_status_bits_9_and_8(PlcMode mode, string status)
     {
         await using RawHost host = RawHost.Start(new VirtualPlcOptions { InitialMode = mode });
@@ -105,7 +105,10 @@ public class SimulatorCommandTests
     {
         var plc = new VirtualPlc(new VirtualPlcOptions { InitialMode = PlcMode.Run }) { FalMessage = "FAL MESSAGE 01" };
         await using RawHost host = RawHost.Start(plc);
-        (await host.TransactAsync(Cmd("@00MS"))).Should().Be(SimVectors.Get("c_ms_resp_run_msg").Frames[0]);
+        // The vector's status low byte is 00, which names no program area; a CS/CJ with writable UM and a 30K-step
+        // program area sends B0 there (W342 4-3-23). Everything else is the vector's.
+        string vector = SimVectors.Get("c_ms_resp_run_msg").Frames[0];
+        (await host.TransactAsync(Cmd("@00MS"))).Should().Be(Cmd(vector[..9] + "B0" + vector[11..^4]));
     }
 
     [Fact]
@@ -333,12 +336,12 @@ public class SimulatorCommandTests
         (await host.TransactAsync(Cmd("@00RD00000070"))).Should().StartWith("@00RD00");
         await host.SendAsync(Cmd("@00XZ"));
         await host.ExpectSilenceAsync();
-        (await host.TransactAsync(Cmd("@00MS"))).Should().Be(Cmd("@00MS000000"));
+        (await host.TransactAsync(Cmd("@00MS"))).Should().Be(Cmd("@00MS0000B0"));
 
         (await host.TransactAsync(Cmd("@00RD00000070"))).Should().StartWith("@00RD00");
         await host.SendAsync("@**\r");
         await host.ExpectSilenceAsync();
-        (await host.TransactAsync(Cmd("@00MS"))).Should().Be(Cmd("@00MS000000"));
+        (await host.TransactAsync(Cmd("@00MS"))).Should().Be(Cmd("@00MS0000B0"));
     }
 
     [Fact]
@@ -371,7 +374,7 @@ public class SimulatorCommandTests
         await using RawHost host = RawHost.Start();
         await host.SendAsync(new byte[] { 0x00, 0xFF, (byte)'x', (byte)'*', 0x13 });
         await host.SendAsync("junk without a frame\r");
-        (await host.TransactAsync("zz\x01" + Cmd("@00MS"))).Should().Be(Cmd("@00MS000000"));
+        (await host.TransactAsync("zz\x01" + Cmd("@00MS"))).Should().Be(Cmd("@00MS0000B0"));
         await host.SendAsync(new string('z', 1500));
         (await host.TransactAsync("\r" + Cmd("@00MM"))).Should().Be(Cmd("@00MM0030"));
     }

@@ -4,8 +4,9 @@ using Xunit.Abstractions;
 
 namespace OmronHostLink.Tests.Simulator;
 
-/// <summary>Wire-time emulation and PLC turnaround.</summary>
+/// <summary>Wire-time emulation and PLC turnaround, measured on the real clock (the pacer's schedule itself: <see cref="WirePacerScheduleTests"/>).</summary>
 [Collection(TimingCollection.Name)]
+[Trait("Category", "Slow")]
 public class WireTimeTests(ITestOutputHelper output)
 {
     [Fact]

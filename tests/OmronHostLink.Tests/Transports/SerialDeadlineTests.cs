@@ -11,6 +11,7 @@ namespace OmronHostLink.Tests.Transports;
 /// made to ignore cancellation the same way, the link's deadlines still hold (its pump never cancels a read), and
 /// closing the client closes the port, which ends the read left pending.
 /// </summary>
+[Trait("Category", "Slow")]
 public sealed class SerialDeadlineTests
 {
     // The read left pending never completes by itself (the line is silent and it ignores its token): finishing at all

@@ -5,6 +5,7 @@ using OmronHostLink.Transports;
 namespace OmronHostLink.Tests.Transports;
 
 /// <summary>The serial transport (System.IO.Ports) over real pseudo-terminal pairs made by socat.</summary>
+[Trait("Category", "Slow")]
 public sealed class SerialTransportTests
 {
     // Upper bound for anything that should happen at once; a hang fails the test instead of the run.

@@ -13,6 +13,10 @@ public sealed record LogEntry(DateTimeOffset Time, string Category, LogLevel Lev
 public sealed class CapturingLoggerProvider : ILoggerProvider
 {
     private readonly ConcurrentQueue<LogEntry> _entries = new();
+    private TaskCompletionSource _next = new(TaskCreationOptions.RunContinuationsAsynchronously);
+
+    /// <summary>Completes when the next entry is logged.</summary>
+    public Task NextEntry => Volatile.Read(ref _next).Task;
 
     public IReadOnlyList<LogEntry> Entries => _entries.ToArray();
 
@@ -45,6 +49,7 @@ public sealed class CapturingLoggerProvider : ILoggerProvider
             }
 
             owner._entries.Enqueue(new LogEntry(DateTimeOffset.Now, category, logLevel, eventId, formatter(state, exception), fields));
+            Interlocked.Exchange(ref owner._next, new TaskCompletionSource(TaskCreationOptions.RunContinuationsAsynchronously)).TrySetResult();
         }
     }
 }

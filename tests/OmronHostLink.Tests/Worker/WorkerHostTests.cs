@@ -69,17 +69,23 @@ public sealed class WorkerHostTests(ITestOutputHelper output) : IDisposable
         return builder.Build();
     }
 
+    /// <summary>Waits until <paramref name="condition"/> (about the log) holds, looking again at each new log entry.</summary>
     private static async Task Eventually(Func<bool> condition, string what, CapturingLoggerProvider logs)
     {
         var clock = Stopwatch.StartNew();
-        while (!condition())
+        while (true)
         {
-            if (clock.Elapsed > Patience)
+            Task next = logs.NextEntry;
+            if (condition())
+            {
+                return;
+            }
+
+            TimeSpan left = Patience - clock.Elapsed;
+            if (left <= TimeSpan.Zero || !await next.WaitAsync(left).ContinueWith(t => t.IsCompletedSuccessfully, TaskScheduler.Default))
             {
                 throw new Xunit.Sdk.XunitException($"Timed out waiting until {what}. Log:{Environment.NewLine}{logs.Dump()}");
             }
-
-            await Task.Delay(20);
         }
     }
 
@@ -119,7 +125,8 @@ public sealed class WorkerHostTests(ITestOutputHelper output) : IDisposable
             // The PLC goes away: one warning, however many poll intervals and retries pass.
             await simulator.StopAsync();
             await Eventually(() => logs.WithEvent(WorkerLog.Events.UnitDown).Count == 1, "the outage is reported", logs);
-            await Task.Delay(TimeSpan.FromSeconds(1.2)); // 24 poll intervals, 6+ backoff periods
+            // Several backoff periods: the worker keeps retrying (each a "still down" entry) and warns only once.
+            await Eventually(() => logs.WithEvent(WorkerLog.Events.UnitStillDown).Count >= 4, "the worker has retried several times", logs);
             logs.WithEvent(WorkerLog.Events.UnitDown).Should().ContainSingle().Which.Level.Should().Be(LogLevel.Warning);
             logs.WithEvent(WorkerLog.Events.UnitDown)[0].Message.Should().StartWith("link plc: PLC unit 0 not answering (");
             logs.WithEvent(WorkerLog.Events.UnitStillDown).Should().NotBeEmpty("the worker keeps trying in the background");
@@ -166,7 +173,10 @@ public sealed class WorkerHostTests(ITestOutputHelper output) : IDisposable
         {
             await Eventually(() => logs.WithEvent(WorkerLog.Events.UnitDown).Count == 1, "the silent unit is reported", logs);
             int before = Values(logs, "present").Count();
-            await Task.Delay(TimeSpan.FromSeconds(2.5));
+            await Eventually(
+                () => Values(logs, "present").Count() > before + 5 && logs.WithEvent(WorkerLog.Events.UnitStillDown).Count >= 2,
+                "unit 0 is polled several times while unit 5 is retried",
+                logs);
             LogEntry down = logs.WithEvent(WorkerLog.Events.UnitDown).Should().ContainSingle().Subject;
             down["Unit"].Should().Be(5);
             down["Reason"].Should().Be("timeout");

@@ -39,6 +39,22 @@ internal sealed class AreaReadCommand : CModeCommand
     public int ResponseDataLength => Count * ResponseAtomLength;
 
     /// <inheritdoc/>
+    internal override int MaxAnswerTextLength => CModeResponse.EndCodeLength + ResponseDataLength;
+
+    /// <inheritdoc/>
+    internal override CommandEffect Effect => CommandEffect.ReadOnly;
+
+    /// <summary>How a read of <paramref name="count"/> entries of <paramref name="area"/> travels, without a command object (the hot path).</summary>
+    internal static ExchangeShape GetExchange(CModeArea area, int count)
+        => ExchangeShape.CMode(
+            GetMessageLength(area),
+            atomLength: 1,
+            multiFrameCommand: false,
+            expectsAnswer: true,
+            CModeResponse.EndCodeLength + (count * CModeAreaInfo.CharactersPerEntry(area)),
+            answerCanEqualCommand: false);
+
+    /// <inheritdoc/>
     public override void WriteText(Span<byte> destination) => Write(Area, Begin, Count, Bank, destination);
 
     /// <summary>The length of the unframed message (<c>@</c>, unit, header, text) of a read of <paramref name="area"/>.</summary>

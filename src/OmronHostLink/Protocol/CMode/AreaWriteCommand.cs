@@ -41,6 +41,9 @@ internal sealed class AreaWriteCommand : CModeCommand
     public override int TextLength => FixedTextLength + (_words.Length * 4);
 
     /// <inheritdoc/>
+    internal override CommandEffect Effect => CommandEffect.Idempotent;
+
+    /// <inheritdoc/>
     public override int AtomLength => 4;
 
     /// <inheritdoc/>

@@ -30,6 +30,28 @@ internal abstract class CModeCommand
     /// <summary>Characters a response spends on one data entry, for cutting a multi-frame response.</summary>
     public virtual int ResponseAtomLength => 4;
 
+    /// <summary>The most answer text (end code and data, every frame joined) a correct answer holds. Default: an end code alone.</summary>
+    internal virtual int MaxAnswerTextLength => CModeResponse.EndCodeLength;
+
+    /// <summary>What repeating the command would do. Default: not repeatable.</summary>
+    internal virtual CommandEffect Effect => CommandEffect.NotRepeatable;
+
+    /// <summary>How the command travels and is answered.</summary>
+    internal ExchangeShape Exchange => ExchangeShape.CMode(
+        PrefixLength + FixedTextLength,
+        AtomLength,
+        MayUseSeveralFrames,
+        ExpectsResponse,
+        MaxAnswerTextLength,
+        AnswerCanEqualCommand(Header, TextLength));
+
+    /// <summary>
+    /// Whether a correct answer can be the very characters of a command: TS echoes it, and a two-character text (SC 00,
+    /// MF 01) reads the same as an answer carrying only an end code.
+    /// </summary>
+    internal static bool AnswerCanEqualCommand(string header, int textLength)
+        => header == CModeHeaders.Test || textLength == CModeResponse.EndCodeLength;
+
     /// <summary>Length of the unframed message: prefix and text.</summary>
     public int MessageLength => PrefixLength + TextLength;
 

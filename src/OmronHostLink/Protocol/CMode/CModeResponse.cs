@@ -14,6 +14,37 @@ internal static class CModeResponse
     /// <summary>Length of the end code.</summary>
     public const int EndCodeLength = 2;
 
+    /// <summary>
+    /// Checks that a validated first answer frame answers the command: the unit it was sent to and the header it
+    /// carried. An IC answer (the PLC does not know the header) carries no text and means end code
+    /// <see cref="EndCode.UndefinedHeader"/>.
+    /// </summary>
+    /// <exception cref="HostLinkFrameException">Another unit or header answered, or an IC answer carries text.</exception>
+    /// <exception cref="HostLinkEndCodeException">The PLC answered IC.</exception>
+    internal static void CheckAnswerHeader(ReadOnlySpan<byte> frame, FrameInfo info, int unit, string header)
+    {
+        if (info.Unit != unit)
+        {
+            throw new HostLinkFrameException(FrameError.WrongUnit, $"Unit {info.Unit:D2} answered a command sent to unit {unit:D2}.", frame.Slice(0, Math.Min(frame.Length, 16)));
+        }
+
+        ReadOnlySpan<byte> answered = info.Header(frame);
+        if (answered[0] == (byte)'I' && answered[1] == (byte)'C' && header != "IC")
+        {
+            if (!info.IsFinal || info.TextLength != 0)
+            {
+                throw new HostLinkFrameException(FrameError.Malformed, "An IC answer carries no text.");
+            }
+
+            throw new HostLinkEndCodeException(EndCode.UndefinedHeader, header, unit);
+        }
+
+        if (answered[0] != (byte)header[0] || answered[1] != (byte)header[1])
+        {
+            throw new HostLinkFrameException(FrameError.WrongHeader, $"The answer's header {FrameText.Printable(answered)} does not echo the command's {header}.");
+        }
+    }
+
     /// <summary>Reads the end code at the start of <paramref name="text"/>.</summary>
     /// <exception cref="HostLinkFrameException">There is no valid end code.</exception>
     public static EndCode ReadEndCode(ReadOnlySpan<byte> text)

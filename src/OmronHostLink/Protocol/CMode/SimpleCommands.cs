@@ -12,6 +12,12 @@ internal sealed class StatusReadCommand : CModeCommand
     /// <inheritdoc/>
     public override int TextLength => 0;
 
+    /// <summary>End code, status word (4) and the FAL/FALS message (16).</summary>
+    internal override int MaxAnswerTextLength => CModeResponse.EndCodeLength + 4 + 16;
+
+    /// <inheritdoc/>
+    internal override CommandEffect Effect => CommandEffect.ReadOnly;
+
     /// <inheritdoc/>
     public override void WriteText(Span<byte> destination)
     {
@@ -29,6 +35,12 @@ internal sealed class ModelReadCommand : CModeCommand
 
     /// <inheritdoc/>
     public override int TextLength => 0;
+
+    /// <summary>End code and the model code (2).</summary>
+    internal override int MaxAnswerTextLength => CModeResponse.EndCodeLength + 2;
+
+    /// <inheritdoc/>
+    internal override CommandEffect Effect => CommandEffect.ReadOnly;
 
     /// <inheritdoc/>
     public override void WriteText(Span<byte> destination)
@@ -68,6 +80,9 @@ internal sealed class AbortCommand : CModeCommand
 
     /// <inheritdoc/>
     public override bool ExpectsResponse => false;
+
+    /// <inheritdoc/>
+    internal override int MaxAnswerTextLength => 0;
 
     /// <inheritdoc/>
     public override void WriteText(Span<byte> destination)
@@ -141,6 +156,12 @@ internal sealed class ErrorReadCommand : CModeCommand
     /// <inheritdoc/>
     public override int TextLength => 2;
 
+    /// <summary>End code and two error words (8).</summary>
+    internal override int MaxAnswerTextLength => CModeResponse.EndCodeLength + 8;
+
+    /// <summary>Reading without clearing changes nothing; clearing does.</summary>
+    internal override CommandEffect Effect => Clear ? CommandEffect.NotRepeatable : CommandEffect.ReadOnly;
+
     /// <inheritdoc/>
     public override void WriteText(Span<byte> destination) => HexAscii.WriteDecimal(Clear ? 1 : 0, destination.Slice(0, 2));
 }
@@ -179,6 +200,21 @@ internal sealed class TestCommand : CModeCommand
     /// <inheritdoc/>
     public override int ResponseAtomLength => 1;
 
+    /// <summary>The echo carries no end code; any text up to the longest a TS may carry.</summary>
+    internal override int MaxAnswerTextLength => MaxTextLength;
+
+    /// <inheritdoc/>
+    internal override CommandEffect Effect => CommandEffect.ReadOnly;
+
     /// <inheritdoc/>
     public override void WriteText(Span<byte> destination) => _text.CopyTo(destination);
+
+    /// <summary>Writes the unframed message of a TS carrying <paramref name="text"/> without a command object (the link's resynchronisation fence).</summary>
+    /// <returns>The number of characters written.</returns>
+    internal static int WriteMessage(int unit, ReadOnlySpan<byte> text, Span<byte> destination)
+    {
+        MessagePrefix.Write(destination, unit, CModeHeaders.Test);
+        text.CopyTo(destination.Slice(PrefixLength));
+        return PrefixLength + text.Length;
+    }
 }

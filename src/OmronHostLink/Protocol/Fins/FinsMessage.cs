@@ -23,6 +23,17 @@ internal static class FinsMessage
     /// <summary>Characters of <c>@</c> + unit + <c>FA</c>.</summary>
     private const int Prefix = MessagePrefix.Length;
 
+    /// <summary>
+    /// The most answer text an FA exchange holds: the Host Link end code, then the header, the command code, the end
+    /// code and <paramref name="maxResponseData"/> data bytes, two characters a byte.
+    /// </summary>
+    internal static int GetMaxAnswerTextLength(FinsHeader header, int maxResponseData)
+        => 2 + (2 * (header.Length + 4 + maxResponseData));
+
+    /// <summary>How an FA command of <paramref name="messageLength"/> characters travels and is answered.</summary>
+    internal static ExchangeShape GetExchange(int messageLength, FinsHeader header, int maxResponseData)
+        => ExchangeShape.Fins(messageLength, GetMaxAnswerTextLength(header, maxResponseData));
+
     /// <summary>Characters of the unframed command message for <paramref name="header"/> and <paramref name="command"/>.</summary>
     public static int GetCommandLength(FinsHeader header, FinsCommand command)
         => Prefix + 1 + (2 * (header.Length + 2 + Guard.NotNull(command).ParameterLength));

@@ -1,6 +1,6 @@
 using System.Runtime.InteropServices;
 
-namespace OmronHostLink.Link;
+namespace OmronHostLink.Transports;
 
 /// <summary>Memory-based stream calls on every target (netstandard2.0 has only the array overloads).</summary>
 internal static class StreamCompat

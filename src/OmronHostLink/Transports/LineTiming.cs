@@ -1,4 +1,4 @@
-namespace OmronHostLink.Link;
+namespace OmronHostLink.Transports;
 
 /// <summary>
 /// The character rate of the serial line the PLC sits on, from which every frame deadline is derived. Over a TCP

@@ -1,0 +1,85 @@
+using OmronHostLink.Protocol;
+using OmronHostLink.Protocol.CMode;
+using OmronHostLink.Protocol.Fins;
+
+namespace OmronHostLink;
+
+/// <summary>Runs of consecutive bits read or written as one command.</summary>
+public partial class HostLinkUnit
+{
+    /// <summary>
+    /// Reads <paramref name="count"/> consecutive bits from <paramref name="address"/> in one command: bits of a word
+    /// area (<c>CIO100.14</c>, continuing across word boundaries) from one read of the words they cover, or timer/counter
+    /// completion flags (<c>T0</c>, <c>C10</c>: that flag and the next ones) from one C-mode RG or FINS 0101 (split only
+    /// beyond one answer frame's bits).
+    /// </summary>
+    /// <exception cref="ArgumentException">The address names a word of a word area, or the range does not fit the area or the protocol (nothing is sent).</exception>
+    public async ValueTask<bool[]> ReadBitsAsync(PlcAddress address, int count, CancellationToken cancellationToken = default)
+    {
+        Guard.InRange(count, 1, 10000, nameof(count));
+        if (address.Area is PlcArea.Timer or PlcArea.Counter)
+        {
+            return await ReadCompletionFlagsAsync(address, count, cancellationToken).ConfigureAwait(false);
+        }
+
+        EnsureBitAddress(address);
+        ushort[] words = await ReadWordsAsync(address.AsWord(), WordsCovered(address, count), cancellationToken).ConfigureAwait(false);
+        var bits = new bool[count];
+        for (int i = 0; i < count; i++)
+        {
+            int n = address.Bit + i;
+            bits[i] = PlcWords.GetBit(words[n / 16], n % 16);
+        }
+
+        return bits;
+    }
+
+    /// <summary>
+    /// Writes consecutive bits from <paramref name="address"/> (continuing across word boundaries) as one command: FINS
+    /// 0102 on the bits (split only beyond one frame's <see cref="MemoryAreaWriteCommand.MaxDataBytes"/> bits). With
+    /// <see cref="HostLinkClientOptions.AllowReadModifyWriteBits"/> and C-mode: one read of the words the bits cover and
+    /// one write of them back, so anything the PLC program writes to those words in between is lost.
+    /// </summary>
+    /// <exception cref="ArgumentException">The address names a word, or the range does not fit the area or the protocol (nothing is sent).</exception>
+    public async ValueTask WriteBitsAsync(PlcAddress address, ReadOnlyMemory<bool> values, CancellationToken cancellationToken = default)
+    {
+        EnsureBitAddress(address);
+        Guard.InRange(values.Length, 1, 10000, nameof(values));
+        PlcAddress first = address.AsWord();
+        int words = WordsCovered(address, values.Length);
+        if (Options.AllowReadModifyWriteBits && Options.CommandSet == HostLinkCommandSet.CMode)
+        {
+            first.EnsureRange(words, HostLinkCommandSet.CMode, forWrite: true);
+            ushort[] current = await ReadWordsAsync(first, words, cancellationToken).ConfigureAwait(false);
+            for (int i = 0; i < values.Length; i++)
+            {
+                int n = address.Bit + i;
+                current[n / 16] = PlcWords.SetBit(current[n / 16], n % 16, values.Span[i]);
+            }
+
+            await WriteWordsAsync(first, current, cancellationToken).ConfigureAwait(false);
+            return;
+        }
+
+        first.EnsureRange(words, HostLinkCommandSet.Fins, forWrite: true);
+        for (int done = 0; done < values.Length;)
+        {
+            int n = Math.Min(MemoryAreaWriteCommand.MaxDataBytes, values.Length - done);
+            int bit = address.Bit + done;
+            PlcAddress from = first.Offset(bit / 16).WithBit(bit % 16);
+            var command = MemoryAreaWriteCommand.Bits(FinsAddressing.Bit(from), values.Span.Slice(done, n));
+            await FinsAsync(command, 0, CommandEffect.Idempotent, ExpectNoData, "0102", cancellationToken).ConfigureAwait(false);
+            done += n;
+        }
+    }
+
+    private static int WordsCovered(PlcAddress address, int bits) => (address.Bit + bits + 15) / 16;
+
+    private static void EnsureBitAddress(PlcAddress address)
+    {
+        if (!address.IsBit)
+        {
+            throw new ArgumentException($"{address} names a word; a bit address has a bit number, as in {address}.05.", nameof(address));
+        }
+    }
+}

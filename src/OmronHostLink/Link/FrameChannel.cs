@@ -1,0 +1,629 @@
+using System.Buffers;
+using System.Runtime.CompilerServices;
+using System.Threading.Tasks.Sources;
+using Microsoft.Extensions.Logging;
+using OmronHostLink.Protocol;
+using OmronHostLink.Transports;
+
+namespace OmronHostLink.Link;
+
+/// <summary>
+/// The bytes of one open stream, cut into frames: a receive loop that keeps one read pending on the stream at all
+/// times and buffers what arrives, frame reads with a per-frame deadline, and writes.
+/// </summary>
+/// <remarks>
+/// The stream read is never cancelled (no transport has to support cancelling a pending read), and bytes that arrive
+/// between transactions are kept until resynchronisation discards them. The receive loop is a chain of read
+/// completions, not a thread: when bytes complete a read, the next read is issued first and then the waiting frame
+/// read is resumed on that same thread, so the caller resumes with one thread hand-off (the stream's own completion)
+/// and anything the caller then blocks on cannot stall the reception of later bytes. The buffer is bounded: past
+/// 64 KiB without a frame being taken the loop stops reading until the buffer drains.
+/// <para>
+/// One transaction at a time (the connection's gate): <see cref="Begin"/>, frame reads and writes, <see cref="End"/>.
+/// The deadline is one timer from the <see cref="TimeProvider"/>, re-armed for each frame, so a transaction allocates
+/// nothing for it.
+/// </para>
+/// </remarks>
+internal sealed class FrameChannel : IValueTaskSource<bool>
+{
+    private const int PauseThreshold = 64 * 1024;
+    private const int ResumeThreshold = 32 * 1024;
+
+    private readonly object _lock = new();
+    private readonly Stream _stream;
+    private readonly string _description;
+    private readonly ILogger _logger;
+    private readonly TimeProvider _time;
+    private readonly ITimer _deadline;
+    private readonly Action _onReadCompleted;
+    private readonly byte[] _readBuffer = new byte[512];
+    private readonly byte[] _frame = new byte[FrameReader.MaxFrameLength + 2];
+    private readonly CancellationTokenSource _stopReading = new();
+    private readonly TaskCompletionSource<bool> _readingStopped = new(TaskCreationOptions.RunContinuationsAsynchronously);
+
+    // Guarded by _lock.
+    private byte[] _buffer = new byte[4096];
+    private int _start;
+    private int _end;
+    private bool _reading;
+    private bool _closed;
+    private HostLinkConnectionException? _closedReason;
+    private bool _waiting;
+    private bool _deadlinePassed;
+    private bool _cancelled;
+    private long _deadlineArmedAt;
+    private TimeSpan _deadlineTimeout;
+
+    private ManualResetValueTaskSourceCore<bool> _waiter;
+    private ConfiguredValueTaskAwaitable<int>.ConfiguredValueTaskAwaiter _pendingRead;
+    private CancellationToken _callerToken;
+    private CancellationTokenRegistration _callerRegistration;
+    private CancellationTokenSource _writeAbort = new();
+
+    public FrameChannel(Stream stream, string description, ILogger logger, TimeProvider time)
+    {
+        _stream = stream;
+        _description = description;
+        _logger = logger;
+        _time = time;
+        _onReadCompleted = OnReadCompleted;
+        _waiter.RunContinuationsAsynchronously = false;
+
+        // The timer's callbacks need nothing from the caller's execution context (and must not keep its async locals alive).
+        using (ExecutionContext.SuppressFlow())
+        {
+            _deadline = time.CreateTimer(static s => ((FrameChannel)s!).OnDeadline(), this, Timeout.InfiniteTimeSpan, Timeout.InfiniteTimeSpan);
+        }
+    }
+
+    /// <summary>Observes every frame sent and received (for the console's --verbose).</summary>
+    public Action<bool, ReadOnlyMemory<byte>>? FrameObserver { get; set; }
+
+    /// <summary>The last frame read by <see cref="ReadFrameAsync"/>.</summary>
+    public ReadOnlySpan<byte> Frame(int length) => _frame.AsSpan(0, length);
+
+    /// <summary>Starts the receive loop.</summary>
+    public void Start()
+    {
+        lock (_lock)
+        {
+            _reading = true;
+        }
+
+        ReadLoop();
+    }
+
+    /// <summary>Starts a transaction: the caller's token now cancels frame reads and writes.</summary>
+    public void Begin(CancellationToken cancellationToken)
+    {
+        lock (_lock)
+        {
+            _cancelled = false;
+            _deadlinePassed = false;
+        }
+
+        _callerToken = cancellationToken;
+        if (cancellationToken.CanBeCanceled)
+        {
+#if NET
+            _callerRegistration = cancellationToken.UnsafeRegister(static s => ((FrameChannel)s!).OnCallerCancelled(), this);
+#else
+            _callerRegistration = cancellationToken.Register(static s => ((FrameChannel)s!).OnCallerCancelled(), this);
+#endif
+        }
+    }
+
+    /// <summary>Ends the transaction: the deadline is disarmed and the caller's token let go.</summary>
+    public void End()
+    {
+        _deadline.Change(Timeout.InfiniteTimeSpan, Timeout.InfiniteTimeSpan);
+        _callerRegistration.Dispose();
+        _callerRegistration = default;
+        _callerToken = default;
+        CancellationTokenSource? spent = null;
+        lock (_lock)
+        {
+            _deadlineTimeout = Timeout.InfiniteTimeSpan;
+            if (_writeAbort.IsCancellationRequested)
+            {
+                // Only a cancelled source needs replacing: one that never fired is reused as it is.
+                spent = _writeAbort;
+                _writeAbort = new CancellationTokenSource();
+            }
+        }
+
+        spent?.Dispose();
+    }
+
+    /// <summary>Sends bytes as they are.</summary>
+    /// <exception cref="HostLinkConnectionException">The stream failed.</exception>
+    /// <exception cref="OperationCanceledException">The caller cancelled, or the frame's deadline passed (<see cref="DeadlinePassed"/>).</exception>
+    public async ValueTask WriteAsync(ReadOnlyMemory<byte> bytes)
+    {
+        FrameObserver?.Invoke(true, bytes);
+        if (_logger.IsEnabled(LogLevel.Trace))
+        {
+            HostLinkLog.Frame(_logger, _description, ">>", FrameText.Printable(bytes.Span));
+        }
+
+        CancellationToken token;
+        CancellationTokenSource? spent = null;
+        lock (_lock)
+        {
+            if (_writeAbort.IsCancellationRequested && !_cancelled)
+            {
+                // The last frame's deadline passed and the transaction goes on (a second fence): this write is a new frame.
+                spent = _writeAbort;
+                _writeAbort = new CancellationTokenSource();
+            }
+
+            token = _writeAbort.Token;
+        }
+
+        spent?.Dispose();
+
+        try
+        {
+            await StreamCompat.WriteAsync(_stream, bytes, token).ConfigureAwait(false);
+            await _stream.FlushAsync(token).ConfigureAwait(false);
+        }
+        catch (OperationCanceledException) when (_callerToken.IsCancellationRequested)
+        {
+            throw new OperationCanceledException(_callerToken);
+        }
+        catch (OperationCanceledException) when (DeadlinePassed)
+        {
+            throw new HostLinkTimeoutException($"Could not send to {_description} within {_deadlineTimeout.TotalMilliseconds:0} ms.", _deadlineTimeout);
+        }
+        catch (Exception e) when (e is IOException or ObjectDisposedException or System.Net.Sockets.SocketException or InvalidOperationException)
+        {
+            throw new HostLinkConnectionException($"Lost {_description} while sending: {e.Message}", e);
+        }
+    }
+
+    /// <summary>Whether the current frame's deadline has passed.</summary>
+    public bool DeadlinePassed
+    {
+        get
+        {
+            lock (_lock)
+            {
+                return _deadlinePassed;
+            }
+        }
+    }
+
+    /// <summary>Waits for the next CR-terminated frame within <paramref name="timeout"/>; <see cref="Frame"/> then holds it.</summary>
+    /// <param name="expectStart">True where a frame starts with <c>@</c> (noise before it is skipped).</param>
+    /// <param name="timeout">The frame's deadline from now.</param>
+    /// <returns>The frame's length, CR included.</returns>
+    /// <exception cref="HostLinkTimeoutException">No frame within the deadline.</exception>
+    /// <exception cref="HostLinkFrameException">More than <see cref="FrameReader.MaxFrameLength"/> characters without a CR.</exception>
+    /// <exception cref="HostLinkConnectionException">The stream ended or failed.</exception>
+    /// <exception cref="OperationCanceledException">The caller cancelled.</exception>
+#if NET
+    [AsyncMethodBuilder(typeof(PoolingAsyncValueTaskMethodBuilder<>))]
+#endif
+    public async ValueTask<int> ReadFrameAsync(bool expectStart, TimeSpan timeout)
+    {
+        ArmDeadline(timeout);
+        while (true)
+        {
+            int length = 0;
+            bool resume;
+            Exception? error = null;
+            lock (_lock)
+            {
+                ThrowIfCancelledLocked();
+                int held = _end - _start;
+                var buffer = new ReadOnlySequence<byte>(_buffer, _start, held);
+                FrameScanResult scan = FrameReader.TryReadFrame(ref buffer, expectStart, out ReadOnlySequence<byte> frame, out _);
+                if (scan == FrameScanResult.Frame)
+                {
+                    length = (int)frame.Length;
+                    frame.CopyTo(_frame);
+                    _start += held - (int)buffer.Length;
+                }
+                else if (scan == FrameScanResult.Overflow)
+                {
+                    _start = _end;
+                    error = new HostLinkFrameException(FrameError.TooLong, $"More than {FrameReader.MaxFrameLength} characters arrived without a CR.");
+                }
+                else
+                {
+                    // Noise skipped before a frame's start is gone for good.
+                    _start += held - (int)buffer.Length;
+                    if (_deadlinePassed)
+                    {
+                        error = new HostLinkTimeoutException($"No answer from {_description} within {timeout.TotalMilliseconds:0} ms.", timeout);
+                    }
+                    else if (_closed)
+                    {
+                        error = _closedReason is { } reason
+                            ? new HostLinkConnectionException(reason.Message, reason.InnerException)
+                            : new HostLinkConnectionException($"{_description} closed the connection in the middle of an answer.");
+                    }
+                    else
+                    {
+                        _waiter.Reset();
+                        _waiting = true;
+                    }
+                }
+
+                resume = ConsumedLocked();
+            }
+
+            ResumeReading(resume);
+            if (error is not null)
+            {
+                throw error;
+            }
+
+            if (length > 0)
+            {
+                Observe(length);
+                return length;
+            }
+
+            await new ValueTask<bool>(this, _waiter.Version).ConfigureAwait(false);
+        }
+    }
+
+    /// <summary>Reads back our own transmission from a line that echoes it, and checks it.</summary>
+    /// <exception cref="HostLinkTimeoutException">The echo did not come within its deadline.</exception>
+    /// <exception cref="HostLinkFrameException">The echo differs from what was sent.</exception>
+#if NET
+    [AsyncMethodBuilder(typeof(PoolingAsyncValueTaskMethodBuilder))]
+#endif
+    public async ValueTask ReadEchoAsync(ReadOnlyMemory<byte> sent, TimeSpan timeout)
+    {
+        ArmDeadline(timeout);
+        int length = sent.Length;
+        while (true)
+        {
+            bool resume = false;
+            bool done = false;
+            Exception? error = null;
+            lock (_lock)
+            {
+                ThrowIfCancelledLocked();
+                if (_end - _start >= length)
+                {
+                    bool same = _buffer.AsSpan(_start, length).SequenceEqual(sent.Span);
+                    _start += length;
+                    resume = ConsumedLocked();
+                    done = true;
+                    if (!same)
+                    {
+                        error = new HostLinkFrameException(FrameError.Unexpected, "The line's echo of our frame differs from what was sent.");
+                    }
+                }
+                else if (_deadlinePassed)
+                {
+                    error = new HostLinkTimeoutException($"The line did not echo our frame (LocalEcho is on) within {timeout.TotalMilliseconds:0} ms.", timeout);
+                }
+                else if (_closed)
+                {
+                    error = new HostLinkConnectionException($"{_description} closed the connection.");
+                }
+                else
+                {
+                    _waiter.Reset();
+                    _waiting = true;
+                }
+            }
+
+            ResumeReading(resume);
+            if (error is not null)
+            {
+                throw error;
+            }
+
+            if (done)
+            {
+                return;
+            }
+
+            await new ValueTask<bool>(this, _waiter.Version).ConfigureAwait(false);
+        }
+    }
+
+    /// <summary>Throws away everything received and not yet read.</summary>
+    /// <returns>The number of bytes discarded.</returns>
+    public int Discard()
+    {
+        int discarded;
+        bool resume;
+        lock (_lock)
+        {
+            discarded = _end - _start;
+            _start = _end = 0;
+            resume = ConsumedLocked();
+        }
+
+        ResumeReading(resume);
+        return discarded;
+    }
+
+    /// <summary>Asks the receive loop to stop; a read still pending ends when the stream is closed or honours the request.</summary>
+    public void RequestStop()
+    {
+        _stopReading.Cancel();
+        lock (_lock)
+        {
+            _closed = true;
+            if (!_reading)
+            {
+                _readingStopped.TrySetResult(true);
+            }
+        }
+    }
+
+    /// <summary>Waits until the receive loop has stopped (after <see cref="RequestStop"/> and closing the stream), and lets go of the timer.</summary>
+    public async ValueTask WaitStoppedAsync()
+    {
+        await _readingStopped.Task.ConfigureAwait(false);
+        _deadline.Dispose();
+        lock (_lock)
+        {
+            _writeAbort.Dispose();
+        }
+    }
+
+    bool IValueTaskSource<bool>.GetResult(short token) => _waiter.GetResult(token);
+
+    ValueTaskSourceStatus IValueTaskSource<bool>.GetStatus(short token) => _waiter.GetStatus(token);
+
+    void IValueTaskSource<bool>.OnCompleted(Action<object?> continuation, object? state, short token, ValueTaskSourceOnCompletedFlags flags)
+        => _waiter.OnCompleted(continuation, state, token, flags);
+
+    private void ArmDeadline(TimeSpan timeout)
+    {
+        lock (_lock)
+        {
+            _deadlinePassed = false;
+            _deadlineArmedAt = _time.GetTimestamp();
+            _deadlineTimeout = timeout;
+        }
+
+        _deadline.Change(timeout, Timeout.InfiniteTimeSpan);
+    }
+
+    private void ThrowIfCancelledLocked()
+    {
+        if (_cancelled)
+        {
+            throw new OperationCanceledException(_callerToken);
+        }
+    }
+
+    private void OnDeadline()
+    {
+        bool wake;
+        lock (_lock)
+        {
+            if (_deadlineTimeout == Timeout.InfiniteTimeSpan)
+            {
+                return;
+            }
+
+            // Early (timer granularity) or left over from the previous frame's arming: wait for what is left.
+            TimeSpan left = _deadlineTimeout - _time.GetElapsedTime(_deadlineArmedAt);
+            if (left > TimeSpan.Zero)
+            {
+                _deadline.Change(left, Timeout.InfiniteTimeSpan);
+                return;
+            }
+
+            _deadlinePassed = true;
+            CancelWritesLocked();
+            wake = TakeWaiterLocked();
+        }
+
+        Wake(wake);
+    }
+
+    private void OnCallerCancelled()
+    {
+        bool wake;
+        lock (_lock)
+        {
+            _cancelled = true;
+            CancelWritesLocked();
+            wake = TakeWaiterLocked();
+        }
+
+        Wake(wake);
+    }
+
+    private void CancelWritesLocked()
+    {
+        try
+        {
+            _writeAbort.Cancel();
+        }
+        catch (ObjectDisposedException)
+        {
+        }
+    }
+
+    private bool TakeWaiterLocked()
+    {
+        if (!_waiting)
+        {
+            return false;
+        }
+
+        _waiting = false;
+        return true;
+    }
+
+    private void Wake(bool wake)
+    {
+        if (wake)
+        {
+            _waiter.SetResult(true);
+        }
+    }
+
+    /// <summary>After bytes were taken: whether a paused receive loop should read again.</summary>
+    private bool ConsumedLocked()
+    {
+        if (_start == _end)
+        {
+            _start = _end = 0;
+        }
+
+        if (!_reading && !_closed && _end - _start < ResumeThreshold)
+        {
+            _reading = true;
+            return true;
+        }
+
+        return false;
+    }
+
+    private void ResumeReading(bool resume)
+    {
+        if (resume)
+        {
+            ReadLoop();
+        }
+    }
+
+    /// <summary>Issues reads until one is pending (its completion continues the loop), the buffer is full, or the stream ends.</summary>
+    private void ReadLoop()
+    {
+        bool wake = false;
+        try
+        {
+            while (true)
+            {
+                ValueTask<int> read;
+                try
+                {
+                    read = StreamCompat.ReadAsync(_stream, _readBuffer, _stopReading.Token);
+                }
+                catch (Exception e)
+                {
+                    wake |= Closed(e);
+                    return;
+                }
+
+                // Without the caller's synchronization context: the loop must never wait for a test runner's or UI thread.
+                ConfiguredValueTaskAwaitable<int>.ConfiguredValueTaskAwaiter awaiter = read.ConfigureAwait(false).GetAwaiter();
+                if (!awaiter.IsCompleted)
+                {
+                    _pendingRead = awaiter;
+                    awaiter.UnsafeOnCompleted(_onReadCompleted);
+                    return;
+                }
+
+                if (!Deliver(awaiter, ref wake))
+                {
+                    return;
+                }
+            }
+        }
+        finally
+        {
+            Wake(wake);
+        }
+    }
+
+    private void OnReadCompleted()
+    {
+        ConfiguredValueTaskAwaitable<int>.ConfiguredValueTaskAwaiter completed = _pendingRead;
+        _pendingRead = default;
+        bool wake = false;
+        bool more = Deliver(completed, ref wake);
+
+        // The next read is pending before the frame reader resumes on this thread.
+        if (more)
+        {
+            ReadLoop();
+        }
+
+        Wake(wake);
+    }
+
+    /// <summary>Takes a completed read's bytes into the buffer.</summary>
+    /// <returns>Whether the loop should read again.</returns>
+    private bool Deliver(ConfiguredValueTaskAwaitable<int>.ConfiguredValueTaskAwaiter completed, ref bool wake)
+    {
+        int n;
+        try
+        {
+            n = completed.GetResult();
+        }
+        catch (Exception e)
+        {
+            wake |= Closed(e);
+            return false;
+        }
+
+        if (n == 0)
+        {
+            wake |= Closed(new HostLinkConnectionException($"{_description} closed the connection."));
+            return false;
+        }
+
+        lock (_lock)
+        {
+            if (_end + n > _buffer.Length)
+            {
+                int held = _end - _start;
+                if (held + n > _buffer.Length)
+                {
+                    Array.Resize(ref _buffer, Math.Max(_buffer.Length * 2, held + n));
+                }
+
+                Buffer.BlockCopy(_buffer, _start, _buffer, 0, held);
+                _start = 0;
+                _end = held;
+            }
+
+            Buffer.BlockCopy(_readBuffer, 0, _buffer, _end, n);
+            _end += n;
+            wake |= TakeWaiterLocked();
+            if (_stopReading.IsCancellationRequested || _end - _start >= PauseThreshold)
+            {
+                // Held back until a reader drains the buffer (or for good, when stopping).
+                _reading = false;
+                if (_stopReading.IsCancellationRequested)
+                {
+                    _readingStopped.TrySetResult(true);
+                }
+
+                return false;
+            }
+        }
+
+        return true;
+    }
+
+    private bool Closed(Exception e)
+    {
+        lock (_lock)
+        {
+            if (!_stopReading.IsCancellationRequested && !_closed)
+            {
+                _closedReason = e as HostLinkConnectionException ?? new HostLinkConnectionException($"Lost {_description}: {e.Message}", e);
+            }
+
+            _closed = true;
+            _reading = false;
+            _readingStopped.TrySetResult(true);
+            return TakeWaiterLocked();
+        }
+    }
+
+    private void Observe(int length)
+    {
+        FrameObserver?.Invoke(false, _frame.AsMemory(0, length).ToArray());
+        if (_logger.IsEnabled(LogLevel.Trace))
+        {
+            HostLinkLog.Frame(_logger, _description, "<<", FrameText.Printable(_frame.AsSpan(0, length)));
+        }
+    }
+}

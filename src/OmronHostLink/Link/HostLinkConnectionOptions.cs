@@ -1,0 +1,23 @@
+using Microsoft.Extensions.Logging;
+using OmronHostLink.Transports;
+
+namespace OmronHostLink.Link;
+
+/// <summary>What the link needs to know about the line: timing, the PLC's turnaround, echo, logging and the clock.</summary>
+internal sealed class HostLinkConnectionOptions
+{
+    /// <summary>The line's character timing, used when the transport does not know it (TCP, streams).</summary>
+    public LineTiming LineTiming { get; init; } = LineTiming.Default;
+
+    /// <summary>The time the PLC (and anything between) may take to start answering a frame, on top of its wire time.</summary>
+    public TimeSpan TurnaroundAllowance { get; init; } = TimeSpan.FromMilliseconds(300);
+
+    /// <summary>The line echoes what we send (2-wire RS-485): read and check our own frames back before each answer.</summary>
+    public bool LocalEcho { get; init; }
+
+    /// <summary>Where the link logs; null for nowhere.</summary>
+    public ILoggerFactory? LoggerFactory { get; init; }
+
+    /// <summary>The clock deadlines run on.</summary>
+    public TimeProvider TimeProvider { get; init; } = TimeProvider.System;
+}

@@ -1,0 +1,197 @@
+using System.Runtime.CompilerServices;
+using OmronHostLink.Protocol;
+using OmronHostLink.Protocol.CMode;
+using OmronHostLink.Transports;
+
+namespace OmronHostLink.Link;
+
+/// <summary>
+/// One attempt at one exchange over a <see cref="FrameChannel"/>: the command frame by frame (with the PLC's CR between
+/// command frames), then the answer frame by frame (asking for each next one with a bare CR), every frame checked, the
+/// text joined and decoded. Keeps track of whether the line is inside a multi-frame exchange, so that a failure can be
+/// told apart: <see cref="Classify"/>. One instance per connection, reused: an attempt allocates nothing of its own.
+/// </summary>
+internal sealed class TransactionAttempt
+{
+    private static readonly ReadOnlyMemory<byte> Delimiter = new byte[] { (byte)'\r' };
+
+    private readonly LineTiming _timing;
+    private readonly TimeSpan _turnaround;
+    private readonly bool _localEcho;
+    private readonly byte[] _tx = new byte[FrameReader.MaxFrameLength + 8];
+    private byte[] _text = new byte[256];
+    private int _textLength;
+    private bool _cut;
+
+    public TransactionAttempt(LineTiming timing, TimeSpan turnaround, bool localEcho)
+    {
+        _timing = timing;
+        _turnaround = turnaround;
+        _localEcho = localEcho;
+    }
+
+    /// <summary>Frames sent and received by the last attempt.</summary>
+    public int Frames { get; private set; }
+
+    /// <summary>
+    /// The deadline for a frame: the characters still to cross the line (what we sent and the longest answer) at the
+    /// line's character rate, plus the PLC's turnaround allowance.
+    /// </summary>
+    public TimeSpan FrameTimeout(int charactersSent, int charactersExpected)
+        => _timing.WireTime(charactersSent + charactersExpected) + _turnaround;
+
+    /// <summary>The deadline for a frame with a turnaround allowance of its own (a presence probe's).</summary>
+    public TimeSpan FrameTimeout(int charactersSent, int charactersExpected, TimeSpan turnaround)
+        => _timing.WireTime(charactersSent + charactersExpected) + turnaround;
+
+    /// <summary>How the failure of the last attempt left the line.</summary>
+    public AttemptFailure Classify(Exception failure) => failure switch
+    {
+        HostLinkConnectionException => AttemptFailure.Lost,
+        _ when _cut => AttemptFailure.Cut,
+        HostLinkEndCodeException or FinsEndCodeException => AttemptFailure.InStep,
+        _ => AttemptFailure.OutOfStep,
+    };
+
+    /// <summary>Carries <paramref name="request"/> once and decodes its answer.</summary>
+#if NET
+    [AsyncMethodBuilder(typeof(PoolingAsyncValueTaskMethodBuilder<>))]
+#endif
+    public async ValueTask<TResult> RunAsync<TState, TResult>(FrameChannel channel, HostLinkRequest request, ResponseDecoder<TState, TResult> decode, TState state)
+    {
+        ExchangeShape shape = request.Shape;
+        _cut = false;
+        Frames = 0;
+
+        // Send: frame by frame; between command frames the PLC answers a bare CR (or an error at once).
+        int offset = 0;
+        int sentChars = 0;
+        bool first = true;
+        bool final;
+        int preReadAt = 0;
+        int preReadEnd = 0;
+        do
+        {
+            int remaining = request.Message.Length - offset;
+            int length;
+            if (shape.SingleFrameOnly)
+            {
+                length = remaining;
+                final = true;
+            }
+            else
+            {
+                length = FrameWriter.NextSegmentLength(remaining, first, shape.FixedLength, shape.AtomLength, out final);
+            }
+
+            int frameLength = FrameWriter.WriteFrame(request.Message.Span.Slice(offset, length), final, _tx);
+            _cut = !final;
+            await channel.WriteAsync(_tx.AsMemory(0, frameLength)).ConfigureAwait(false);
+            sentChars = frameLength;
+            Frames++;
+            if (_localEcho)
+            {
+                await channel.ReadEchoAsync(_tx.AsMemory(0, frameLength), FrameTimeout(frameLength, 0)).ConfigureAwait(false);
+            }
+
+            offset += length;
+            first = false;
+            if (!final)
+            {
+                int n = await channel.ReadFrameAsync(expectStart: false, FrameTimeout(frameLength, 1)).ConfigureAwait(false);
+                int at = channel.Frame(n).IndexOf((byte)'@');
+                if (at >= 0)
+                {
+                    // The PLC answered before the last frame: an error for what it has seen so far.
+                    preReadAt = at;
+                    preReadEnd = n;
+                    _cut = false;
+                    break;
+                }
+            }
+        }
+        while (!final);
+
+        if (!shape.ExpectsAnswer)
+        {
+            _cut = false;
+            return decode(ReadOnlySpan<byte>.Empty, state);
+        }
+
+        // Receive: the first frame, then each continuation after our bare CR. An answer that may span frames is cut if
+        // its first frame is lost or damaged: the PLC then holds the rest and takes any command, a TS fence included,
+        // as the delimiter asking for it; only INITIALIZE ends that.
+        _textLength = 0;
+        _cut = preReadEnd == 0 && shape.AnswerMaySpanFrames;
+        if (preReadEnd == 0)
+        {
+            TimeSpan firstTimeout = FrameTimeout(sentChars, shape.MaxFirstAnswerFrame);
+            preReadEnd = await channel.ReadFrameAsync(expectStart: true, firstTimeout).ConfigureAwait(false);
+            if (IsOwnEcho(channel, request, preReadEnd, sentChars))
+            {
+                // A line that echoes (2-wire RS-485) with LocalEcho off: our own frame is not the answer.
+                preReadEnd = await channel.ReadFrameAsync(expectStart: true, firstTimeout).ConfigureAwait(false);
+            }
+        }
+
+        FrameInfo info = FirstFrame(channel.Frame(preReadEnd).Slice(preReadAt), request);
+        Frames++;
+        while (!info.IsFinal)
+        {
+            _cut = true;
+            await channel.WriteAsync(Delimiter).ConfigureAwait(false);
+            if (_localEcho)
+            {
+                await channel.ReadEchoAsync(Delimiter, FrameTimeout(1, 0)).ConfigureAwait(false);
+            }
+
+            int len = await channel.ReadFrameAsync(expectStart: false, FrameTimeout(1, FrameWriter.MaxContinuationFrameLength)).ConfigureAwait(false);
+            info = Continuation(channel, len, request);
+            Frames++;
+        }
+
+        _cut = false;
+        return decode(_text.AsSpan(0, _textLength), state);
+    }
+
+    /// <summary>Checks a first answer frame and takes its text.</summary>
+    private FrameInfo FirstFrame(ReadOnlySpan<byte> frame, HostLinkRequest request)
+    {
+        FrameInfo info = FrameParser.ParseFirst(frame);
+        _cut = !info.IsFinal;
+        CModeResponse.CheckAnswerHeader(frame, info, request.Unit, request.Header);
+        AppendText(info.Text(frame), request);
+        return info;
+    }
+
+    private FrameInfo Continuation(FrameChannel channel, int length, HostLinkRequest request)
+    {
+        ReadOnlySpan<byte> frame = channel.Frame(length);
+        FrameInfo info = FrameParser.ParseContinuation(frame);
+        AppendText(info.Text(frame), request);
+        return info;
+    }
+
+    /// <summary>Whether the frame just read is our own last frame coming back, where no correct answer can equal the command.</summary>
+    private bool IsOwnEcho(FrameChannel channel, HostLinkRequest request, int length, int sentLength)
+        => !_localEcho
+            && !request.Shape.AnswerCanEqualCommand
+            && length == sentLength
+            && channel.Frame(length).SequenceEqual(_tx.AsSpan(0, sentLength));
+
+    private void AppendText(ReadOnlySpan<byte> text, HostLinkRequest request)
+    {
+        if (_textLength + text.Length > request.Shape.MaxAnswerText)
+        {
+            throw new HostLinkFrameException(FrameError.WrongLength, $"The answer to {request.Header} is longer than the {request.Shape.MaxAnswerText} characters it can hold.");
+        }
+
+        if (_textLength + text.Length > _text.Length)
+        {
+            Array.Resize(ref _text, Math.Max(_text.Length * 2, _textLength + text.Length));
+        }
+
+        text.CopyTo(_text.AsSpan(_textLength));
+        _textLength += text.Length;
+    }
+}
