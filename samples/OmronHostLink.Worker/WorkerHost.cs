@@ -8,10 +8,11 @@ using OmronHostLink.Worker.Configuration;
 using OmronHostLink.Worker.Mqtt;
 using OmronHostLink.Worker.Polling;
 using OmronHostLink.Worker.Simulation;
+using OmronHostLink.Worker.Telemetry;
 
 namespace OmronHostLink.Worker;
 
-/// <summary>Builds the worker's generic host: options, validation, the optional simulator and the link pollers.</summary>
+/// <summary>Builds the worker's generic host: options, validation, a client per link, the optional simulator and the link pollers.</summary>
 public static class WorkerHost
 {
     /// <summary>The Windows service name (deploy/install-service.ps1 registers the service under it).</summary>
@@ -56,6 +57,7 @@ public static class WorkerHost
             .Configure(options => BindLeniently(hostLink, options))
             .ValidateOnStart();
         services.AddSingleton<IValidateOptions<WorkerOptions>, WorkerOptionsValidator>();
+        services.AddLinkClients(builder.Configuration);
 
         IConfigurationSection simulator = builder.Configuration.GetSection(SimulatorOptions.SectionName);
         services.AddOptions<SimulatorOptions>()
@@ -78,6 +80,7 @@ public static class WorkerHost
         services.AddMqttOutput(builder.Configuration);
         services.AddSingleton<PollingHostedService>();
         services.AddHostedService(sp => sp.GetRequiredService<PollingHostedService>());
+        services.AddTelemetryExport(builder.Configuration);
 
         // Each is a no-op unless its service manager started the process. Windows: reports SERVICE_RUNNING/STOPPED to
         // the service control manager, turns a service stop into a graceful shutdown and logs to the event log.

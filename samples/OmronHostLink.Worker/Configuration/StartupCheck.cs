@@ -25,6 +25,7 @@ internal static class StartupCheck
             var sim = new SimulatorOptions();
             simulator.Bind(sim);
             return new WorkerOptionsValidator().Validate(null, worker).Succeeded
+                && new LinkClients.LineSpeedValidator().Validate(null, worker).Succeeded
                 && new SimulatorOptionsValidator().Validate(null, sim).Succeeded
                 && Validator.TryValidateObject(sim, new ValidationContext(sim), null, validateAllProperties: true);
         }

@@ -1,11 +1,17 @@
+using OmronHostLink.Planning;
 using OmronHostLink.Worker.Configuration;
 using OmronHostLink.Worker.Mqtt;
 
 namespace OmronHostLink.Worker.Polling;
 
-/// <summary>A configured poll group bound to its unit view on the link's client.</summary>
+/// <summary>
+/// A configured poll group on its unit view: the tags its watch reads (the group's words, or its completion flag) and
+/// the words last read, decoded as the group's type only when they are logged or published.
+/// </summary>
 internal sealed class PollGroup
 {
+    private readonly ushort[] _words;
+
     public PollGroup(string name, PollGroupOptions options, HostLinkUnit unit, WordOrder wordOrder)
     {
         Name = name;
@@ -18,8 +24,14 @@ internal sealed class PollGroup
         PollValueTypes.TryParse(options.Type, out PlcValueType type);
         Type = type;
         Mode = Enum.Parse<PollLogMode>(options.Log, ignoreCase: true);
-        Words = PollValueTypes.WordCount(type, Address, Count);
         AddressText = Address.ToString();
+
+        // Raw words rather than typed tags: the watch plans them into one read, reports the words that changed, and the
+        // group's values (text, bits across words, BCD that may not decode) are formatted here as the console does.
+        Tags = PollValueTypes.IsCompletionFlag(type, Address)
+            ? [new PlcTag(Address, PlcValueType.Bit)]
+            : Enumerable.Range(0, PollValueTypes.WordCount(type, Address, Count)).Select(i => new PlcTag(Address.AsWord().Offset(i))).ToArray();
+        _words = new ushort[Tags.Count];
     }
 
     public string Name { get; }
@@ -34,8 +46,6 @@ internal sealed class PollGroup
 
     public int Count { get; }
 
-    public int Words { get; }
-
     public TimeSpan Interval { get; }
 
     public PlcValueType Type { get; }
@@ -44,32 +54,26 @@ internal sealed class PollGroup
 
     public WordOrder WordOrder { get; }
 
+    /// <summary>What the group's watch reads: one word tag a word, or the completion flag.</summary>
+    public IReadOnlyList<PlcTag> Tags { get; }
+
     /// <summary>The values last logged (OnChange compares with them).</summary>
     public string? LastLogged { get; set; }
 
     /// <summary>The failure last reported for this group while its PLC answered; null when it reads.</summary>
     public string? Failure { get; set; }
 
-    /// <summary>The words of the last successful read (a completion flag as one word, 0 or 1), for a tag sink.</summary>
-    public ushort[]? LastWords { get; private set; }
+    /// <summary>Takes a changed word (a completion flag as 0 or 1) from the watch.</summary>
+    public void Update(WatchEvent change)
+        => _words[change.TagIndex] = change.NewValue.Type == PlcValueType.Bit ? (ushort)(change.NewValue.ToBoolean() ? 1 : 0) : change.NewValue.ToUInt16();
 
-    /// <summary>Reads the group and formats its values.</summary>
-    public async ValueTask<string> ReadAsync(CancellationToken cancellationToken)
-    {
-        if (PollValueTypes.IsCompletionFlag(Type, Address))
-        {
-            bool flag = await Unit.ReadBitAsync(Address, cancellationToken).ConfigureAwait(false);
-            LastWords = [flag ? (ushort)1 : (ushort)0];
-            return flag ? "1" : "0";
-        }
+    /// <summary>The values, formatted: <c>1234</c>, <c>[1, 2, 3]</c>, <c>"TEXT"</c>.</summary>
+    /// <exception cref="FormatException">A BCD word holds a nibble above 9, or text a byte above 0x7F.</exception>
+    public string Format() => Tags[0].IsCompletionFlag
+        ? (_words[0] != 0 ? "1" : "0")
+        : PollValueTypes.Format(Type, Address, Count, _words, WordOrder);
 
-        ushort[] words = await Unit.ReadWordsAsync(Address.AsWord(), Words, cancellationToken).ConfigureAwait(false);
-        string text = PollValueTypes.Format(Type, Address, Count, words, WordOrder);
-        LastWords = words;
-        return text;
-    }
-
-    /// <summary>The outcome for a tag sink: the last value read when <paramref name="quality"/> is good.</summary>
+    /// <summary>The outcome for a tag sink: the values last read when <paramref name="quality"/> is good.</summary>
     public TagChange Change(string link, TagQuality quality, DateTimeOffset time, string? error = null)
-        => new(link, UnitNumber, Name, AddressText, Type, quality == TagQuality.Good ? TagValueCodec.Decode(Type, Address, Count, LastWords, WordOrder) : null, quality, time, error);
+        => new(link, UnitNumber, Name, AddressText, Type, quality == TagQuality.Good ? TagValueCodec.Decode(Type, Address, Count, _words, WordOrder) : null, quality, time, error);
 }

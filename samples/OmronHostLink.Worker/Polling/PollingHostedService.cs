@@ -1,3 +1,4 @@
+using Microsoft.Extensions.DependencyInjection;
 using Microsoft.Extensions.Hosting;
 using Microsoft.Extensions.Logging;
 using Microsoft.Extensions.Options;
@@ -7,58 +8,27 @@ using OmronHostLink.Worker.Mqtt;
 namespace OmronHostLink.Worker.Polling;
 
 /// <summary>
-/// Starts one <see cref="LinkPollingService"/> (a <see cref="BackgroundService"/>) per enabled link in the validated
-/// options, and stops them all together. Links come from configuration, so they cannot be registered one by one
-/// before the configuration is complete; this keeps the host's registration independent of it.
+/// Polls every enabled link of the validated options, each through its client (the keyed <see cref="HostLinkClient"/>
+/// named after the link, see <see cref="LinkClients"/>), all together until the host stops.
 /// </summary>
-public sealed class PollingHostedService : IHostedService, IDisposable
+/// <param name="options">The validated <c>HostLink</c> section.</param>
+/// <param name="services">Where the links' clients are.</param>
+/// <param name="loggerFactory">For the links' logs.</param>
+/// <param name="timeProvider">The clock of intervals, backoff and timestamps.</param>
+/// <param name="sink">The MQTT output when configured: it receives what the links read.</param>
+public sealed class PollingHostedService(IOptions<WorkerOptions> options, IServiceProvider services, ILoggerFactory loggerFactory, TimeProvider timeProvider, ITagSink? sink = null)
+    : BackgroundService
 {
-    private readonly IOptions<WorkerOptions> _options;
-    private readonly ILoggerFactory _loggerFactory;
-    private readonly TimeProvider _time;
-    private readonly List<LinkPollingService> _links = new();
-    private readonly ITagSink? _sink;
-
-    /// <summary>Creates the service; <paramref name="sink"/> (the MQTT output, when configured) receives what the links read.</summary>
-    public PollingHostedService(IOptions<WorkerOptions> options, ILoggerFactory loggerFactory, TimeProvider timeProvider, ITagSink? sink = null)
-    {
-        _options = options;
-        _loggerFactory = loggerFactory;
-        _time = timeProvider;
-        _sink = sink;
-    }
-
-    /// <summary>The links being polled.</summary>
-    public IReadOnlyList<LinkPollingService> Links => _links;
-
     /// <inheritdoc/>
-    public async Task StartAsync(CancellationToken cancellationToken)
+    protected override async Task ExecuteAsync(CancellationToken stoppingToken)
     {
-        // Reading Value validates the options (it throws OptionsValidationException naming the bad fields).
-        WorkerOptions options = _options.Value;
-        foreach ((string name, LinkOptions link) in options.Links.OrderBy(l => l.Key, StringComparer.OrdinalIgnoreCase))
-        {
-            if (!link.Enabled)
-            {
-                continue;
-            }
-
-            var service = new LinkPollingService(name, link, _loggerFactory, _time, _sink);
-            _links.Add(service);
-            await service.StartAsync(cancellationToken).ConfigureAwait(false);
-        }
-    }
-
-    /// <inheritdoc/>
-    public Task StopAsync(CancellationToken cancellationToken)
-        => Task.WhenAll(_links.Select(l => l.StopAsync(cancellationToken)));
-
-    /// <inheritdoc/>
-    public void Dispose()
-    {
-        foreach (LinkPollingService link in _links)
-        {
-            link.Dispose();
-        }
+        // Let the host's start return at once: opening a serial port may block.
+        await Task.Yield();
+        ILogger logger = loggerFactory.CreateLogger<LinkPoller>();
+        await Task.WhenAll(options.Value.Links
+            .Where(l => l.Value.Enabled)
+            .OrderBy(l => l.Key, StringComparer.OrdinalIgnoreCase)
+            .Select(l => new LinkPoller(l.Key, l.Value, () => services.GetRequiredKeyedService<HostLinkClient>(l.Key), logger, timeProvider, sink).RunAsync(stoppingToken)))
+            .ConfigureAwait(false);
     }
 }

@@ -72,6 +72,11 @@ public partial class HostLinkUnit
         {
             case PlannedReadKind.FinsMultiple:
                 return ReadScatteredWordsAsync(read.Items, cancellationToken);
+            case PlannedReadKind.CModeCompletionFlags:
+                return FlagWordsAsync(CModeReadCompletionFlagsAsync(read.Start, read.Count, cancellationToken));
+            case PlannedReadKind.FinsCompletionFlags:
+                read.Start.EnsureRange(read.Count, HostLinkCommandSet.Fins, forWrite: false);
+                return FlagWordsAsync(FinsReadCompletionFlagsAsync(read.Start, read.Count, cancellationToken));
             case PlannedReadKind.FinsArea:
                 read.Start.EnsureRange(read.Count, HostLinkCommandSet.Fins, forWrite: false);
                 return FinsReadWordsAsync(read.Start, read.Count, cancellationToken);
@@ -79,6 +84,12 @@ public partial class HostLinkUnit
                 read.Start.EnsureRange(read.Count, HostLinkCommandSet.CMode, forWrite: false);
                 return CModeReadWordsAsync(read.Start, read.Count, cancellationToken);
         }
+    }
+
+    private static async ValueTask<ushort[]> FlagWordsAsync(ValueTask<bool[]> reading)
+    {
+        bool[] flags = await reading.ConfigureAwait(false);
+        return Array.ConvertAll(flags, f => f ? (ushort)1 : (ushort)0);
     }
 
     private ValueTask<ushort[]> ReadScatteredWordsAsync(IReadOnlyList<PlcAddress> words, CancellationToken cancellationToken)

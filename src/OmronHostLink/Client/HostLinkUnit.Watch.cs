@@ -21,9 +21,12 @@ public partial class HostLinkUnit
     /// <see cref="ReadPlanner"/> (the fewest transactions, as <see cref="ReadTagsAsync(ReadPlan, CancellationToken)"/>), and
     /// reports each tag whose value differs from the one reported before. The first successful cycle reports every tag
     /// (with no old value). A failed cycle is reported once as <see cref="WatchEventKind.Outage"/> and the watch keeps
-    /// trying every <see cref="WatchOptions.RetryInterval"/>; the first cycle that succeeds again is reported as
+    /// trying every <see cref="WatchOptions.RetryInterval"/> (doubling up to <see cref="WatchOptions.MaxRetryInterval"/>
+    /// when that is set); the first cycle that succeeds again is reported as
     /// <see cref="WatchEventKind.Resumed"/>, followed by the changes since. A cycle longer than the interval is reported
-    /// as <see cref="WatchEventKind.Overrun"/>, and the next starts at once.
+    /// as <see cref="WatchEventKind.Overrun"/>, and the next starts at once. With <see cref="WatchOptions.ReportEveryCycle"/>
+    /// every successful cycle also ends with <see cref="WatchEventKind.Polled"/>, and every further failed try of an
+    /// outage is <see cref="WatchEventKind.RetryFailed"/>.
     /// </summary>
     /// <remarks>
     /// The watch runs while it is enumerated (<c>await foreach</c>): cycles are not read ahead, so a slow subscriber
@@ -50,6 +53,16 @@ public partial class HostLinkUnit
         }
 
         ReadPlan plan = Plan(tags.ToArray());
-        return TagWatch.RunAsync(this, plan, options.Interval, options.EffectiveRetryInterval, options.TimeProvider, cancellationToken);
+
+        // A copy: the caller may change or reuse its options while the watch runs.
+        var settings = new WatchOptions
+        {
+            Interval = options.Interval,
+            RetryInterval = options.RetryInterval,
+            MaxRetryInterval = options.MaxRetryInterval,
+            ReportEveryCycle = options.ReportEveryCycle,
+            TimeProvider = options.TimeProvider,
+        };
+        return TagWatch.RunAsync(this, plan, settings, cancellationToken);
     }
 }

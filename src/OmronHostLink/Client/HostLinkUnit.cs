@@ -226,6 +226,12 @@ public partial class HostLinkUnit
             return await FinsReadCompletionFlagsAsync(address, count, cancellationToken).ConfigureAwait(false);
         }
 
+        return await CModeReadCompletionFlagsAsync(address, count, cancellationToken).ConfigureAwait(false);
+    }
+
+    private async ValueTask<bool[]> CModeReadCompletionFlagsAsync(PlcAddress address, int count, CancellationToken cancellationToken)
+    {
+        address.EnsureRange(count, HostLinkCommandSet.CMode, forWrite: false);
         (_, int begin) = CModeAddressing.Map(address);
         var command = new AreaReadCommand(CModeArea.TimerCounterStatus, begin, count);
         return await CModeAsync(

@@ -5,7 +5,7 @@ namespace OmronHostLink;
 
 /// <summary>
 /// The polling engine behind <c>WatchAsync</c>: one execution of a read plan per cycle, changes against the values
-/// reported before, outages and overruns as events.
+/// reported before, outages and overruns as events, retries after a fixed or a capped doubling delay.
 /// </summary>
 /// <remarks>
 /// Cycles are scheduled from their start: the next is due one interval after this one began. When the subscriber
@@ -17,11 +17,13 @@ internal static class TagWatch
     public static async IAsyncEnumerable<WatchEvent> RunAsync(
         HostLinkUnit unit,
         ReadPlan plan,
-        TimeSpan interval,
-        TimeSpan retryInterval,
-        TimeProvider time,
+        WatchOptions options,
         [EnumeratorCancellation] CancellationToken cancellationToken)
     {
+        TimeSpan interval = options.Interval;
+        TimeProvider time = options.TimeProvider;
+        bool everyCycle = options.ReportEveryCycle;
+        TimeSpan retryDelay = options.EffectiveRetryInterval;
         IReadOnlyList<PlcTag> tags = plan.Tags;
         var reported = new PlcValue?[tags.Count];
         long origin = time.GetTimestamp();
@@ -60,11 +62,21 @@ internal static class TagWatch
             if (failure is not null)
             {
                 succeeded = false;
-                due = end + retryInterval;
                 if (outageStart is null)
                 {
                     outageStart = end;
-                    yield return WatchEvent.Outage(failure, readTime);
+                    retryDelay = options.EffectiveRetryInterval;
+                    due = end + retryDelay;
+                    yield return WatchEvent.Outage(failure, readTime, retryDelay);
+                }
+                else
+                {
+                    retryDelay = options.NextRetryDelay(retryDelay);
+                    due = end + retryDelay;
+                    if (everyCycle)
+                    {
+                        yield return WatchEvent.RetryFailed(failure, readTime, retryDelay);
+                    }
                 }
 
                 continue;
@@ -89,6 +101,11 @@ internal static class TagWatch
                 PlcValue? previous = reported[i];
                 reported[i] = value;
                 yield return WatchEvent.Changed(i, tags[i], previous, value, readTime);
+            }
+
+            if (everyCycle)
+            {
+                yield return WatchEvent.Polled(end - cycleStart, readTime);
             }
         }
     }

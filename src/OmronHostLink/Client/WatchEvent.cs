@@ -10,8 +10,9 @@ namespace OmronHostLink;
 /// </summary>
 public sealed class WatchEvent
 {
-    private WatchEvent(WatchEventKind kind, DateTimeOffset timestamp, int tagIndex = -1, PlcTag? tag = null, PlcValue? oldValue = null, PlcValue newValue = default, Exception? exception = null, TimeSpan duration = default)
+    private WatchEvent(WatchEventKind kind, DateTimeOffset timestamp, int tagIndex = -1, PlcTag? tag = null, PlcValue? oldValue = null, PlcValue newValue = default, Exception? exception = null, TimeSpan duration = default, TimeSpan retryDelay = default)
     {
+        RetryDelay = retryDelay;
         Kind = kind;
         Timestamp = timestamp;
         TagIndex = tagIndex;
@@ -43,14 +44,23 @@ public sealed class WatchEvent
     /// <summary>The tag's new value, decoded as its <see cref="PlcTag.Type"/>; <c>default</c> for events that are not about a tag.</summary>
     public PlcValue NewValue { get; }
 
-    /// <summary>For <see cref="WatchEventKind.Outage"/>: why the cycle failed (see <see cref="HostLinkException.IsTransient"/>). Null otherwise.</summary>
+    /// <summary>
+    /// For <see cref="WatchEventKind.Outage"/> and <see cref="WatchEventKind.RetryFailed"/>: why the cycle failed (see
+    /// <see cref="HostLinkException.IsTransient"/>). Null otherwise.
+    /// </summary>
     public Exception? Exception { get; }
 
     /// <summary>
-    /// For <see cref="WatchEventKind.Overrun"/>: how long the cycle took; for <see cref="WatchEventKind.Resumed"/>: how
-    /// long the outage lasted. Zero otherwise.
+    /// For <see cref="WatchEventKind.Overrun"/>: how long the cycle took; for <see cref="WatchEventKind.Polled"/>: how
+    /// long its read took; for <see cref="WatchEventKind.Resumed"/>: how long the outage lasted. Zero otherwise.
     /// </summary>
     public TimeSpan Duration { get; }
+
+    /// <summary>
+    /// For <see cref="WatchEventKind.Outage"/> and <see cref="WatchEventKind.RetryFailed"/>: how long the watch waits
+    /// before its next try (see <see cref="WatchOptions.MaxRetryInterval"/>). Zero otherwise.
+    /// </summary>
+    public TimeSpan RetryDelay { get; }
 
     /// <summary>Whether this is the first report of a tag's value (a change with no old value).</summary>
     public bool IsInitial => Kind == WatchEventKind.Changed && OldValue is null;
@@ -80,6 +90,22 @@ public sealed class WatchEvent
     public static WatchEvent Outage(Exception exception, DateTimeOffset timestamp)
         => new(WatchEventKind.Outage, timestamp, exception: Guard.NotNull(exception));
 
+    /// <summary>The start of an outage: a cycle failed with <paramref name="exception"/>; the next try is in <paramref name="retryDelay"/>.</summary>
+    /// <exception cref="ArgumentNullException"><paramref name="exception"/> is null.</exception>
+    /// <exception cref="ArgumentOutOfRangeException"><paramref name="retryDelay"/> is negative.</exception>
+    public static WatchEvent Outage(Exception exception, DateTimeOffset timestamp, TimeSpan retryDelay)
+        => new(WatchEventKind.Outage, timestamp, exception: Guard.NotNull(exception), retryDelay: NotNegative(retryDelay, nameof(retryDelay)));
+
+    /// <summary>Another failed try during an outage, with <paramref name="exception"/>; the next try is in <paramref name="retryDelay"/>.</summary>
+    /// <exception cref="ArgumentNullException"><paramref name="exception"/> is null.</exception>
+    /// <exception cref="ArgumentOutOfRangeException"><paramref name="retryDelay"/> is negative.</exception>
+    public static WatchEvent RetryFailed(Exception exception, DateTimeOffset timestamp, TimeSpan retryDelay)
+        => new(WatchEventKind.RetryFailed, timestamp, exception: Guard.NotNull(exception), retryDelay: NotNegative(retryDelay, nameof(retryDelay)));
+
+    /// <summary>A successful cycle whose read took <paramref name="readTime"/>.</summary>
+    public static WatchEvent Polled(TimeSpan readTime, DateTimeOffset timestamp)
+        => new(WatchEventKind.Polled, timestamp, duration: readTime);
+
     /// <summary>The end of an outage that lasted <paramref name="outage"/>.</summary>
     public static WatchEvent Resumed(TimeSpan outage, DateTimeOffset timestamp)
         => new(WatchEventKind.Resumed, timestamp, duration: outage);
@@ -88,7 +114,10 @@ public sealed class WatchEvent
     public static WatchEvent Overrun(TimeSpan cycleTime, DateTimeOffset timestamp)
         => new(WatchEventKind.Overrun, timestamp, duration: cycleTime);
 
-    /// <summary>One line for logs: <c>D100 (Float): 1.5 → 2.5</c>, <c>outage: …</c>, <c>resumed after 3 s</c>, <c>overrun: cycle took 1.2 s</c>.</summary>
+    /// <summary>
+    /// One line for logs: <c>D100 (Float): 1.5 → 2.5</c>, <c>outage: …</c>, <c>resumed after 3 s</c>, <c>overrun: cycle
+    /// took 1.2 s</c>, <c>polled in 0.012 s</c>, <c>still failing: …; next try in 4 s</c>.
+    /// </summary>
     public override string ToString()
     {
         string at = Timestamp.ToString("O", CultureInfo.InvariantCulture);
@@ -96,8 +125,15 @@ public sealed class WatchEvent
         {
             WatchEventKind.Changed => OldValue is { } old ? $"{at} {Tag}: {old} → {NewValue}" : $"{at} {Tag}: {NewValue}",
             WatchEventKind.Outage => $"{at} outage: {Exception!.Message}",
-            WatchEventKind.Resumed => $"{at} resumed after {Duration.TotalSeconds.ToString("0.###", CultureInfo.InvariantCulture)} s",
-            _ => $"{at} overrun: cycle took {Duration.TotalSeconds.ToString("0.###", CultureInfo.InvariantCulture)} s",
+            WatchEventKind.Resumed => $"{at} resumed after {Seconds(Duration)} s",
+            WatchEventKind.Polled => $"{at} polled in {Seconds(Duration)} s",
+            WatchEventKind.RetryFailed => $"{at} still failing: {Exception!.Message}; next try in {Seconds(RetryDelay)} s",
+            _ => $"{at} overrun: cycle took {Seconds(Duration)} s",
         };
     }
+
+    private static string Seconds(TimeSpan time) => time.TotalSeconds.ToString("0.###", CultureInfo.InvariantCulture);
+
+    private static TimeSpan NotNegative(TimeSpan value, string name)
+        => value >= TimeSpan.Zero ? value : throw new ArgumentOutOfRangeException(name, value, "A delay cannot be negative.");
 }

@@ -23,4 +23,16 @@ public enum WatchEventKind
     /// starts at once; missed cycles are not made up.
     /// </summary>
     Overrun,
+
+    /// <summary>
+    /// A cycle read every tag (only with <see cref="WatchOptions.ReportEveryCycle"/>): reported after the cycle's
+    /// changes, whether or not there were any, with the time the read took.
+    /// </summary>
+    Polled,
+
+    /// <summary>
+    /// Another failed try during an outage (only with <see cref="WatchOptions.ReportEveryCycle"/>; the first failure is
+    /// the <see cref="Outage"/>), with the exception and the wait before the next try.
+    /// </summary>
+    RetryFailed,
 }

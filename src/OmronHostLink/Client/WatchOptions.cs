@@ -17,6 +17,21 @@ public sealed class WatchOptions
     /// </summary>
     public TimeSpan? RetryInterval { get; set; }
 
+    /// <summary>
+    /// The longest wait between tries during an outage. Null (the default): every try waits the retry interval in force.
+    /// Set: the wait starts at the retry interval in force and doubles after each failed try, up to this (capped
+    /// exponential backoff), so a PLC that stays away costs the line less and less. At least the retry interval in
+    /// force; at most 1 day.
+    /// </summary>
+    public TimeSpan? MaxRetryInterval { get; set; }
+
+    /// <summary>
+    /// Also report what changes nothing: <see cref="WatchEventKind.Polled"/> after every successful cycle (after the
+    /// cycle's changes) and <see cref="WatchEventKind.RetryFailed"/> for every failed try of an outage after the first.
+    /// Default false. For subscribers that log, count or time every poll.
+    /// </summary>
+    public bool ReportEveryCycle { get; set; }
+
     /// <summary>The clock for intervals and event timestamps. Default <see cref="TimeProvider.System"/>; tests pass a fake one.</summary>
     public TimeProvider TimeProvider { get; set; } = TimeProvider.System;
 
@@ -24,8 +39,12 @@ public sealed class WatchOptions
     internal TimeSpan EffectiveRetryInterval
         => RetryInterval ?? (Interval > TimeSpan.FromSeconds(1) ? Interval : TimeSpan.FromSeconds(1));
 
+    /// <summary>The wait after a failed try that followed a wait of <paramref name="previous"/>: doubled up to <see cref="MaxRetryInterval"/>, or the same.</summary>
+    internal TimeSpan NextRetryDelay(TimeSpan previous)
+        => MaxRetryInterval is { } max ? TimeSpan.FromTicks(Math.Min(previous.Ticks * 2, max.Ticks)) : previous;
+
     /// <summary>Checks the options and says which is wrong.</summary>
-    /// <exception cref="ArgumentOutOfRangeException"><see cref="Interval"/> or <see cref="RetryInterval"/> is out of range.</exception>
+    /// <exception cref="ArgumentOutOfRangeException"><see cref="Interval"/>, <see cref="RetryInterval"/> or <see cref="MaxRetryInterval"/> is out of range.</exception>
     /// <exception cref="ArgumentNullException"><see cref="TimeProvider"/> is null.</exception>
     public void Validate()
     {
@@ -33,6 +52,11 @@ public sealed class WatchOptions
         if (RetryInterval is { } retry && (retry <= TimeSpan.Zero || retry > MaxInterval))
         {
             throw new ArgumentOutOfRangeException(nameof(RetryInterval), retry, $"RetryInterval must be more than 0 and at most 1 day; it was {retry}.");
+        }
+
+        if (MaxRetryInterval is { } max && (max > MaxInterval || max < EffectiveRetryInterval))
+        {
+            throw new ArgumentOutOfRangeException(nameof(MaxRetryInterval), max, $"MaxRetryInterval must be at least the retry interval ({EffectiveRetryInterval}) and at most 1 day; it was {max}.");
         }
 
         if (TimeProvider is null)

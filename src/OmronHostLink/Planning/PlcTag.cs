@@ -17,7 +17,7 @@ public sealed class PlcTag
     {
     }
 
-    /// <summary>Creates a tag.</summary>
+    /// <summary>Creates a tag. A <see cref="PlcValueType.Bit"/> tag on a timer or counter number (<c>T5</c>, <c>C7</c>) is its completion flag.</summary>
     /// <param name="address">The address.</param>
     /// <param name="type">How the words are read.</param>
     /// <param name="unit">The unit number 0-31, or null for the unit of the client (or view) that reads it.</param>
@@ -35,9 +35,9 @@ public sealed class PlcTag
             throw new ArgumentException("A tag holds one value of a fixed size; read text with ReadStringAsync, which takes its length.", nameof(type));
         }
 
-        if (type == PlcValueType.Bit && !address.IsBit)
+        if (type == PlcValueType.Bit && !address.IsBit && !IsTimerOrCounter(address))
         {
-            throw new ArgumentException($"{address} names a word; a Bit tag needs a bit address such as {address.AsWord()}.00.", nameof(type));
+            throw new ArgumentException($"{address} names a word; a Bit tag needs a bit address such as {address.AsWord()}.00, or a timer/counter number for its completion flag.", nameof(type));
         }
 
         if (type != PlcValueType.Bit && address.IsBit)
@@ -63,7 +63,8 @@ public sealed class PlcTag
 
     /// <summary>
     /// Parses tag text: an address, optionally followed by a colon and a type name — <c>D100</c> (a word),
-    /// <c>D100:float</c>, <c>E1_200:int32</c>, <c>CIO10.03</c> (a bit address is a bit), <c>D20:bcd32</c>. Type names
+    /// <c>D100:float</c>, <c>E1_200:int32</c>, <c>CIO10.03</c> (a bit address is a bit), <c>D20:bcd32</c>,
+    /// <c>T5:bit</c> (a timer's completion flag; <c>T5</c> alone is its present value). Type names
     /// are <see cref="PlcValueTypes.Names"/> but <c>string</c>, in any case; spaces around the parts are ignored.
     /// </summary>
     /// <remarks>
@@ -112,7 +113,7 @@ public sealed class PlcTag
             }
         }
 
-        if (type == PlcValueType.Bit != address.IsBit)
+        if (type == PlcValueType.Bit != address.IsBit && !(type == PlcValueType.Bit && IsTimerOrCounter(address)))
         {
             throw new FormatException(type == PlcValueType.Bit
                 ? $"'{text}' is not a tag: a bit tag needs a bit address such as {address}.00."
@@ -136,11 +137,16 @@ public sealed class PlcTag
     /// <summary>The unit, or null for the reading client's own unit.</summary>
     public int? Unit { get; }
 
-    /// <summary>The number of words the value occupies (1, 2 or 4).</summary>
+    /// <summary>The number of words the value occupies (1, 2 or 4; 1 for a completion flag).</summary>
     public int WordCount { get; }
+
+    /// <summary>Whether the tag is a timer's or counter's completion flag (a <see cref="PlcValueType.Bit"/> tag on <c>T5</c> or <c>C7</c>).</summary>
+    public bool IsCompletionFlag => Type == PlcValueType.Bit && !Address.IsBit;
 
     /// <inheritdoc/>
     public override string ToString() => Unit is { } u ? $"{u:D2}:{Address} ({Type})" : $"{Address} ({Type})";
+
+    private static bool IsTimerOrCounter(PlcAddress address) => address.Area is PlcArea.Timer or PlcArea.Counter;
 }
 
 /// <summary>The value read for one <see cref="PlcTag"/>.</summary>

@@ -11,6 +11,12 @@ public enum PlannedReadKind
 
     /// <summary>One FINS 0104 MULTIPLE MEMORY AREA READ of scattered words.</summary>
     FinsMultiple,
+
+    /// <summary>One C-mode RG read of timer/counter completion flags, one character a flag; each flag is returned as a word 0 or 1.</summary>
+    CModeCompletionFlags,
+
+    /// <summary>One FINS 0101 read of timer/counter completion flags (bit access); each flag is returned as a word 0 or 1.</summary>
+    FinsCompletionFlags,
 }
 
 /// <summary>One transaction of a <see cref="ReadPlan"/>.</summary>
@@ -33,11 +39,14 @@ public sealed class PlannedRead
     /// <summary>The unit the command goes to.</summary>
     public int Unit { get; }
 
-    /// <summary>The first word of an area read (unused for <see cref="PlannedReadKind.FinsMultiple"/>).</summary>
+    /// <summary>The first word of an area read, or the first timer/counter of a completion flag read (unused for <see cref="PlannedReadKind.FinsMultiple"/>).</summary>
     public PlcAddress Start { get; }
 
-    /// <summary>The number of words read.</summary>
+    /// <summary>The number of words (or completion flags) read.</summary>
     public int Count { get; }
+
+    /// <summary>Whether the read returns timer/counter completion flags (as words 0 or 1) rather than words.</summary>
+    public bool IsCompletionFlags => Kind is PlannedReadKind.CModeCompletionFlags or PlannedReadKind.FinsCompletionFlags;
 
     /// <summary>The words of a <see cref="PlannedReadKind.FinsMultiple"/> read, in order; empty for area reads.</summary>
     public IReadOnlyList<PlcAddress> Items { get; }
@@ -52,9 +61,13 @@ public sealed class PlannedRead
     public PlcAddress WordAt(int index) => Kind == PlannedReadKind.FinsMultiple ? Items[index] : Start.Offset(index);
 
     /// <inheritdoc/>
-    public override string ToString() => Kind == PlannedReadKind.FinsMultiple
-        ? $"unit {Unit:D2} 0104 × {Count}"
-        : $"unit {Unit:D2} {(Kind == PlannedReadKind.CModeArea ? "C-mode" : "0101")} {Start} × {Count}";
+    public override string ToString() => Kind switch
+    {
+        PlannedReadKind.FinsMultiple => $"unit {Unit:D2} 0104 × {Count}",
+        PlannedReadKind.CModeCompletionFlags => $"unit {Unit:D2} C-mode RG {Start} × {Count} flags",
+        PlannedReadKind.FinsCompletionFlags => $"unit {Unit:D2} 0101 {Start} × {Count} flags",
+        _ => $"unit {Unit:D2} {(Kind == PlannedReadKind.CModeArea ? "C-mode" : "0101")} {Start} × {Count}",
+    };
 }
 
 /// <summary>
@@ -95,7 +108,7 @@ public sealed class ReadPlan
     internal LineTimingCost Cost { get; }
 
     /// <summary>Turns the words of every read (in <see cref="Reads"/> order) into one value per tag (in <see cref="Tags"/> order).</summary>
-    /// <param name="results">The words each read returned.</param>
+    /// <param name="results">The words each read returned (for a completion flag read, one word 0 or 1 a flag).</param>
     /// <param name="order">How 32-bit values lie in two words.</param>
     /// <exception cref="ArgumentException">The results do not match the reads.</exception>
     public PlcTagValue[] Resolve(IReadOnlyList<ushort[]> results, WordOrder order = WordOrder.LowWordFirst)
@@ -118,7 +131,7 @@ public sealed class ReadPlan
 
             for (int i = 0; i < data.Length; i++)
             {
-                words[Key(read.Unit, read.WordAt(i))] = data[i];
+                words[Key(read.Unit, read.WordAt(i), read.IsCompletionFlags)] = data[i];
             }
         }
 
@@ -129,7 +142,7 @@ public sealed class ReadPlan
             var raw = new ushort[tag.WordCount];
             for (int i = 0; i < raw.Length; i++)
             {
-                raw[i] = words[Key(TagUnits[t], tag.Address.AsWord().Offset(i))];
+                raw[i] = words[Key(TagUnits[t], tag.Address.AsWord().Offset(i), tag.IsCompletionFlag)];
             }
 
             values[t] = new PlcTagValue(tag, raw, Decode(tag, raw, order));
@@ -138,8 +151,9 @@ public sealed class ReadPlan
         return values;
     }
 
-    internal static long Key(int unit, PlcAddress word)
-        => ((long)unit << 40) | ((long)word.Area << 32) | ((long)word.Bank << 24) | (uint)word.Word;
+    // A timer's completion flag and its present value share an address; the flag bit keeps them apart.
+    internal static long Key(int unit, PlcAddress word, bool completionFlag = false)
+        => (completionFlag ? 1L << 48 : 0) | ((long)unit << 40) | ((long)word.Area << 32) | ((long)word.Bank << 24) | (uint)word.Word;
 
     private static object Decode(PlcTag tag, ushort[] raw, WordOrder order)
         => PlcValueCodec.Decode(tag.Type, raw, order, tag.Address.IsBit ? tag.Address.Bit : 0).ToObject();

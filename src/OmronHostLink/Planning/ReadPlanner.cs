@@ -16,7 +16,8 @@ namespace OmronHostLink.Planning;
 /// turnaround, more with a turnaround). C-mode reads are one command however long (the answer spans frames); FINS
 /// 0101 reads are cut at 269 words (what one FA answer frame holds). With FINS, words that are cheaper as
 /// items of a 0104 MULTIPLE MEMORY AREA READ (isolated words, in any area) go into as few 0104 commands as the limit of
-/// 135 items (what one FA command frame holds) allows.
+/// 135 items (what one FA command frame holds) allows. Timer and counter completion flags (bit tags on <c>T5</c>,
+/// <c>C7</c>) are read by their own commands (C-mode RG, FINS 0101 with bit access), apart from the present values.
 /// </remarks>
 public sealed class ReadPlanner
 {
@@ -79,6 +80,7 @@ public sealed class ReadPlanner
         Guard.Unit(defaultUnit);
         var units = new int[tags.Count];
         var spaces = new SortedDictionary<(int Unit, PlcArea Area, int Bank), List<(int Start, int End)>>();
+        var flagSpaces = new SortedDictionary<(int Unit, PlcArea Area, int Bank), List<(int Start, int End)>>();
         for (int t = 0; t < tags.Count; t++)
         {
             PlcTag tag = tags[t] ?? throw new ArgumentException($"Tag {t} is null.", nameof(tags));
@@ -86,6 +88,17 @@ public sealed class ReadPlanner
             word.EnsureRange(tag.WordCount, CommandSet, forWrite: false);
             units[t] = tag.Unit ?? defaultUnit;
             var key = (units[t], word.Area, word.Bank);
+            if (tag.IsCompletionFlag)
+            {
+                if (!flagSpaces.TryGetValue(key, out List<(int, int)>? flags))
+                {
+                    flagSpaces[key] = flags = new List<(int, int)>();
+                }
+
+                flags.Add((word.Word, word.Word + 1));
+                continue;
+            }
+
             if (!spaces.TryGetValue(key, out List<(int, int)>? spans))
             {
                 spaces[key] = spans = new List<(int, int)>();
@@ -100,6 +113,11 @@ public sealed class ReadPlanner
         {
             List<(int Start, int End)> clusters = Clusters(space.Value);
             PlanSpace(space.Key.Unit, space.Key.Area, space.Key.Bank, clusters, reads, multiple);
+        }
+
+        foreach (KeyValuePair<(int Unit, PlcArea Area, int Bank), List<(int Start, int End)>> space in flagSpaces)
+        {
+            PlanFlags(space.Key.Unit, space.Key.Area, Clusters(space.Value), reads);
         }
 
         foreach (KeyValuePair<int, List<PlcAddress>> unitItems in multiple)
@@ -123,6 +141,18 @@ public sealed class ReadPlanner
         exchanges = FrameWriter.CountFrames(message, CModeResponseFixed, 4);
         return command + FrameWriter.WireLength(message, CModeResponseFixed, 4) + (exchanges - 1);
     }
+
+    /// <summary>Characters (both ways) of one C-mode RG read of <paramref name="flags"/> completion flags, and its frame exchanges.</summary>
+    internal static int CModeFlagCharacters(int flags, out int exchanges)
+    {
+        int message = CModeResponseFixed + flags;
+        exchanges = FrameWriter.CountFrames(message, CModeResponseFixed, 1);
+        return CModeCommandChars + FrameWriter.WireLength(message, CModeResponseFixed, 1) + (exchanges - 1);
+    }
+
+    /// <summary>Characters (both ways) of one FINS 0101 read of <paramref name="flags"/> completion flags (one byte each).</summary>
+    internal static int FinsFlagCharacters(int flags)
+        => FinsCommandFixed + FinsAreaParameterChars + FinsResponseFixed + (2 * flags);
 
     /// <summary>Characters (both ways) of one FINS 0101 read of <paramref name="words"/> words (at most 269).</summary>
     public static int FinsReadCharacters(int words)
@@ -252,6 +282,41 @@ public sealed class ReadPlanner
             }
 
             list.AddRange(itemWords);
+        }
+    }
+
+    /// <summary>
+    /// Completion flags: runs of timers (or counters) read with one command each, a gap read through while its flags
+    /// cost fewer characters than another command would.
+    /// </summary>
+    private void PlanFlags(int unit, PlcArea area, List<(int Start, int End)> clusters, List<PlannedRead> reads)
+    {
+        bool cmode = CommandSet == HostLinkCommandSet.CMode;
+        double command = (cmode ? CModeFlagCharacters(0, out _) : FinsFlagCharacters(0)) + _turnaroundChars;
+        int perFlag = cmode ? 1 : 2;
+        (int start, int end) = clusters[0];
+        for (int i = 1; i <= clusters.Count; i++)
+        {
+            if (i < clusters.Count && (clusters[i].Start - end) * perFlag < command)
+            {
+                end = clusters[i].End;
+                continue;
+            }
+
+            for (int done = start; done < end;)
+            {
+                int n = cmode ? end - done : Math.Min(MemoryAreaReadCommand.MaxBits, end - done);
+                PlcAddress first = PlcAddress.WordOf(area, done);
+                int exchanges = 1;
+                int chars = cmode ? CModeFlagCharacters(n, out exchanges) : FinsFlagCharacters(n);
+                reads.Add(new PlannedRead(cmode ? PlannedReadKind.CModeCompletionFlags : PlannedReadKind.FinsCompletionFlags, unit, first, n, Array.Empty<PlcAddress>(), chars, exchanges));
+                done += n;
+            }
+
+            if (i < clusters.Count)
+            {
+                (start, end) = clusters[i];
+            }
         }
     }
 

@@ -270,6 +270,104 @@ public sealed class WatchTests
     }
 
     [Fact]
+    public async Task Retries_back_off_doubling_up_to_the_cap_and_every_cycle_is_reported_when_asked()
+    {
+        await using InProcessLine line = InProcessLine.Start();
+        line.Plc.WriteWord(PlcArea.Dm, 200, 0x00A1); // not BCD: every cycle fails at once, without timeouts
+        var clock = new SteppingClock();
+        var options = new WatchOptions { Interval = Second, RetryInterval = Second, MaxRetryInterval = TimeSpan.FromSeconds(4), ReportEveryCycle = true, TimeProvider = clock };
+        await using IAsyncEnumerator<WatchEvent> watch = line.Client
+            .WatchAsync(new[] { PlcTag.Parse("D200:bcd") }, options, CancellationToken.None)
+            .GetAsyncEnumerator();
+
+        WatchEvent outage = await Next(watch);
+        outage.Kind.Should().Be(WatchEventKind.Outage);
+        outage.RetryDelay.Should().Be(Second);
+
+        // Each wait is exactly the delay announced: a tick less does not start the next try.
+        TimeSpan waited = TimeSpan.Zero;
+        TimeSpan delay = outage.RetryDelay;
+        var announced = new List<TimeSpan>();
+        for (int retry = 0; retry < 4; retry++)
+        {
+            ValueTask<bool> pending = watch.MoveNextAsync();
+            await clock.NextTimerAsync();
+            clock.Advance(delay - TimeSpan.FromTicks(1));
+            pending.IsCompleted.Should().BeFalse($"retry {retry + 1} waits {delay}");
+            clock.Advance(TimeSpan.FromTicks(1));
+            WatchEvent failed = await Completed(pending, watch);
+            failed.Kind.Should().Be(WatchEventKind.RetryFailed);
+            failed.Exception.Should().BeOfType<FormatException>();
+            waited += delay;
+            delay = failed.RetryDelay;
+            announced.Add(delay);
+        }
+
+        announced.Should().Equal(TimeSpan.FromSeconds(2), TimeSpan.FromSeconds(4), TimeSpan.FromSeconds(4), TimeSpan.FromSeconds(4));
+        line.FramesSent.Should().Be(5);
+
+        // Back: resumed, the value, then the cycle itself.
+        ValueTask<bool> next = watch.MoveNextAsync();
+        await clock.NextTimerAsync();
+        line.Plc.WriteWord(PlcArea.Dm, 200, 0x0421);
+        clock.Advance(delay);
+        WatchEvent resumed = await Completed(next, watch);
+        resumed.Kind.Should().Be(WatchEventKind.Resumed);
+        resumed.Duration.Should().Be(waited + delay);
+        (await Next(watch)).NewValue.Should().Be(PlcValue.FromBcd(421));
+        WatchEvent polled = await Next(watch);
+        polled.Kind.Should().Be(WatchEventKind.Polled);
+        polled.Timestamp.Should().Be(clock.GetUtcNow());
+
+        // A cycle that changes nothing is still reported; the next outage starts again from the first delay.
+        next = watch.MoveNextAsync();
+        await clock.StepAsync(Second);
+        (await Completed(next, watch)).Kind.Should().Be(WatchEventKind.Polled);
+        next = watch.MoveNextAsync();
+        await clock.NextTimerAsync();
+        line.Plc.WriteWord(PlcArea.Dm, 200, 0x00A1);
+        clock.Advance(Second);
+        WatchEvent again = await Completed(next, watch);
+        again.Kind.Should().Be(WatchEventKind.Outage);
+        again.RetryDelay.Should().Be(Second);
+        again.ToString().Should().Contain("outage: ");
+        WatchEvent.RetryFailed(again.Exception!, again.Timestamp, TimeSpan.FromSeconds(4)).ToString().Should().EndWith("; next try in 4 s");
+    }
+
+    [Fact]
+    public async Task A_timer_completion_flag_is_watched_apart_from_its_present_value()
+    {
+        await using InProcessLine line = InProcessLine.Start();
+        var clock = new SteppingClock();
+        PlcTag[] tags = [PlcTag.Parse("T5:bit"), PlcTag.Parse("T5")];
+        await using IAsyncEnumerator<WatchEvent> watch = line.Client
+            .WatchAsync(tags, new WatchOptions { Interval = Second, TimeProvider = clock })
+            .GetAsyncEnumerator();
+        (await Next(watch)).NewValue.Should().Be(PlcValue.FromBit(false));
+        (await Next(watch)).NewValue.Should().Be(PlcValue.FromWord(0));
+
+        ValueTask<bool> pending = watch.MoveNextAsync();
+        await clock.NextTimerAsync();
+        line.Plc.SetFlag(PlcArea.Timer, 5, true);
+        clock.Advance(Second);
+        WatchEvent change = await Completed(pending, watch);
+        change.Tag.Should().BeSameAs(tags[0]);
+        change.NewValue.Should().Be(PlcValue.FromBit(true));
+        line.FramesSent.Should().Be(4, "each cycle reads the flag (RG) and the present value (RC)");
+    }
+
+    [Fact]
+    public async Task A_cap_below_the_retry_interval_is_refused()
+    {
+        await using InProcessLine line = InProcessLine.Start();
+        FluentActions.Invoking(() => line.Client.WatchAsync(new[] { PlcTag.Parse("D0") }, new WatchOptions { RetryInterval = TimeSpan.FromSeconds(5), MaxRetryInterval = TimeSpan.FromSeconds(2) }))
+            .Should().Throw<ArgumentOutOfRangeException>().WithParameterName("MaxRetryInterval").WithMessage("*at least the retry interval (00:00:05)*");
+        FluentActions.Invoking(() => line.Client.WatchAsync(new[] { PlcTag.Parse("D0") }, new WatchOptions { Interval = TimeSpan.FromSeconds(3), MaxRetryInterval = TimeSpan.FromSeconds(2) }))
+            .Should().Throw<ArgumentOutOfRangeException>("the retry interval in force is the interval, 3 s");
+        line.FramesSent.Should().Be(0);
+    }
+
+    [Fact]
     public async Task Bad_arguments_are_refused_by_the_call_before_anything_is_sent()
     {
         await using InProcessLine line = InProcessLine.Start();

@@ -97,6 +97,37 @@ public class ReadPlannerTests
     }
 
     [Fact]
+    public void Completion_flags_are_read_apart_from_present_values_in_runs_a_short_gap_read_through()
+    {
+        PlcTag[] tags = [PlcTag.Parse("T5:bit"), PlcTag.Parse("T6:bit"), PlcTag.Parse("T5"), PlcTag.Parse("T9:bit"), PlcTag.Parse("T1500:bit"), PlcTag.Parse("C7:bit")];
+        tags[0].IsCompletionFlag.Should().BeTrue();
+        tags[2].IsCompletionFlag.Should().BeFalse("T5 without a type is the present value");
+
+        ReadPlan plan = CMode.Plan(tags);
+        plan.Reads.Select(r => (r.Kind, r.Start.ToString(), r.Count)).Should().BeEquivalentTo(new[]
+        {
+            (PlannedReadKind.CModeArea, "T5", 1),
+            (PlannedReadKind.CModeCompletionFlags, "T5", 5), // T5-T9: three flags read through cost less than another RG
+            (PlannedReadKind.CModeCompletionFlags, "T1500", 1),
+            (PlannedReadKind.CModeCompletionFlags, "C7", 1),
+        });
+        plan.Reads.Where(r => r.Kind == PlannedReadKind.CModeCompletionFlags).Should().OnlyContain(r => r.IsCompletionFlags);
+        // RG of 5: 17-character command; answer of 7 + 5 flags + FCS, *, CR = 16 (as RD: 7 + 4n + 4).
+        plan.Reads.Single(r => r.Count == 5).Characters.Should().Be(17 + 16);
+
+        ReadPlan fins = new ReadPlanner(HostLinkCommandSet.Fins, useMultipleRead: false).Plan(tags);
+        fins.Reads.Where(r => r.IsCompletionFlags).Should().OnlyContain(r => r.Kind == PlannedReadKind.FinsCompletionFlags);
+        fins.Reads.Should().Contain(r => r.Kind == PlannedReadKind.FinsArea && r.Start.ToString() == "T5");
+    }
+
+    [Fact]
+    public void A_bit_tag_on_a_word_that_is_not_a_timer_or_counter_is_refused()
+    {
+        FluentActions.Invoking(() => new PlcTag("D100", PlcValueType.Bit)).Should().Throw<ArgumentException>().WithMessage("*bit address such as D100.00, or a timer/counter number*");
+        new PlcTag("C7", PlcValueType.Bit).IsCompletionFlag.Should().BeTrue();
+    }
+
+    [Fact]
     public void Fins_gathers_isolated_words_of_every_area_into_one_0104()
     {
         ReadPlan plan = Fins.Plan(Tags("D0", "D500", "H10", "W3", "CIO2000", "T5", "C7", "E3_100"));

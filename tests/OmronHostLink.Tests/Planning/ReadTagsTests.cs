@@ -44,6 +44,29 @@ public sealed class ReadTagsTests
         await session;
     }
 
+    [Theory]
+    [InlineData(HostLinkCommandSet.CMode)]
+    [InlineData(HostLinkCommandSet.Fins)]
+    public async Task Completion_flags_and_present_values_of_the_same_timers_are_told_apart(HostLinkCommandSet protocol)
+    {
+        var plc = new VirtualPlc();
+        plc.WriteWord(PlcArea.Timer, 5, 0x0123);
+        plc.SetFlag(PlcArea.Timer, 5, true);
+        plc.SetFlag(PlcArea.Timer, 8, true);
+        plc.SetFlag(PlcArea.Counter, 7, true);
+
+        (Stream host, Stream plcEnd) = InMemoryLink.CreatePair();
+        using var stop = new CancellationTokenSource();
+        Task session = plc.RunAsync(plcEnd, stop.Token);
+        await using HostLinkClient client = HostLinkClient.ForStream(host, new HostLinkClientOptions { CommandSet = protocol, LineTiming = new LineTiming(115200, 11) });
+
+        PlcTagValue[] values = await client.ReadTagsAsync(new[] { "T5:bit", "T5", "T6:bit", "T8:bit", "C7:bit", "C8:bit" });
+        values.Select(v => v.Value).Should().Equal(true, (ushort)0x0123, false, true, true, false);
+
+        stop.Cancel();
+        await session;
+    }
+
     [Fact]
     public async Task A_plan_is_made_once_and_executed_many_times()
     {

@@ -221,21 +221,55 @@ public sealed class WorkerHostTests(ITestOutputHelper output) : IDisposable
     }
 
     [Fact]
-    public async Task Groups_on_one_link_share_it_fairly()
+    public async Task A_group_whose_words_do_not_decode_fails_alone_and_a_timer_flag_reads_as_a_bit()
     {
         var plc = new VirtualPlc();
+        plc.WriteWords("D100", [0x00A1]); // not BCD
+        plc.SetFlag(PlcArea.Timer, 5, true);
         await using TcpSimulatorHost simulator = await StartSimulator(plc);
         Dictionary<string, string?> config = Link(simulator.EndPoint.Port);
-        // Two groups that want the link all the time (1 ms) and one at 100 ms: the link is saturated.
-        Group(config, "big", "D0", type: "word", count: 400, intervalMs: 1);
-        Group(config, "small", "D1000", type: "word", intervalMs: 1);
-        Group(config, "slow", "D2000", type: "word", intervalMs: 100);
+        Group(config, "code", "D100", type: "bcd");
+        Group(config, "done", "T5", type: "bit", log: "OnChange");
         var logs = new CapturingLoggerProvider();
         using IHost host = BuildHost(config, logs);
         await host.StartAsync();
         try
         {
-            await Eventually(() => Values(logs, "slow").Count() >= 5, "the 100 ms group runs repeatedly", logs);
+            await Eventually(() => logs.WithEvent(WorkerLog.Events.GroupFailed).Count == 1 && Values(logs, "done").Any(), "the failure and the flag are logged", logs);
+            await Task.Delay(300); // six more polls of each
+            LogEntry failed = logs.WithEvent(WorkerLog.Events.GroupFailed).Should().ContainSingle("once per distinct failure").Subject;
+            failed.Message.Should().StartWith("plc/code: unit 0 D100 cannot be read: ").And.Contain("0x00A1");
+            Values(logs, "done").Single()["Values"].Should().Be("1");
+            logs.WithEvent(WorkerLog.Events.UnitDown).Should().BeEmpty("the PLC answers");
+
+            plc.WriteWords("D100", [0x0421]);
+            await Eventually(() => Values(logs, "code").Any(e => (string?)e["Values"] == "421"), "the group reads again", logs);
+            logs.WithEvent(WorkerLog.Events.GroupRecovered).Should().ContainSingle().Which.Message.Should().Be("plc/code: unit 0 D100 reads again");
+        }
+        finally
+        {
+            await host.StopAsync();
+        }
+    }
+
+    [Fact]
+    public async Task Groups_on_one_link_share_it_fairly()
+    {
+        // Every answer frame waits for a PLC turnaround, as on a real line: the link, not the worker's handling of what
+        // it read, is what the groups share.
+        var plc = new VirtualPlc(new VirtualPlcOptions { Turnaround = TimeSpan.FromMilliseconds(5) });
+        await using TcpSimulatorHost simulator = await StartSimulator(plc);
+        Dictionary<string, string?> config = Link(simulator.EndPoint.Port);
+        // Two groups that want the link all the time (1 ms) and one at 500 ms: the link is saturated.
+        Group(config, "big", "D0", type: "word", count: 400, intervalMs: 1);
+        Group(config, "small", "D1000", type: "word", intervalMs: 1);
+        Group(config, "slow", "D2000", type: "word", intervalMs: 500);
+        var logs = new CapturingLoggerProvider();
+        using IHost host = BuildHost(config, logs);
+        await host.StartAsync();
+        try
+        {
+            await Eventually(() => Values(logs, "slow").Count() >= 5, "the 500 ms group runs repeatedly", logs);
         }
         finally
         {
