@@ -19,7 +19,7 @@ namespace Microsoft.Extensions.DependencyInjection;
 /// // appsettings.json: { "HostLink": { "Clients": { "line1": { "Serial": { "PortName": "/dev/ttyUSB0" } } } } }
 /// builder.Services.AddHostLinkClients(builder.Configuration.GetSection("HostLink:Clients"));
 /// // or one at a time:
-/// builder.Services.AddHostLinkClient("line2", o => o.Tcp.Host = "10.0.0.5");
+/// builder.Services.AddHostLinkClient("line2", o => o.Tcp.Host = "192.0.2.10");
 /// </code>
 /// </example>
 public static class HostLinkServiceCollectionExtensions

@@ -2,7 +2,7 @@ namespace OmronHostLink.DependencyInjection;
 
 /// <summary>
 /// A serial-device server (or the simulator) that carries the Host Link line over TCP. In configuration either a
-/// section (<c>"Tcp": { "Host": "10.0.0.5", "Port": 4001 }</c>) or the short form <c>"Tcp": "10.0.0.5:4001"</c>.
+/// section (<c>"Tcp": { "Host": "192.0.2.10", "Port": 4001 }</c>) or the short form <c>"Tcp": "192.0.2.10:4001"</c>.
 /// </summary>
 public sealed class HostLinkTcpSettings
 {

@@ -100,7 +100,7 @@ internal static class HostLinkSettingsReader
 
         if (host.Length == 0 || port.Length == 0)
         {
-            value.Problem($"'{text}' is not host:port (e.g. 10.0.0.5:4001), or write a section with Host and Port");
+            value.Problem($"'{text}' is not host:port (e.g. 192.0.2.10:4001), or write a section with Host and Port");
             return;
         }
 

@@ -132,7 +132,7 @@ public sealed class HostLinkConfigurationValidationTests
             OneClient("""  "Serial": { "PortName": "/dev/ttyUSB0" }, "Tcp": "plc" """), AllClients);
 
         failures.Should().BeEquivalentTo(
-            $"{Line1}:Tcp: 'plc' is not host:port (e.g. 10.0.0.5:4001), or write a section with Host and Port",
+            $"{Line1}:Tcp: 'plc' is not host:port (e.g. 192.0.2.10:4001), or write a section with Host and Port",
             $"{Line1}:Tcp: cannot be combined with Serial:PortName; a client uses either a local serial port or a serial-device server");
     }
 
@@ -146,7 +146,7 @@ public sealed class HostLinkConfigurationValidationTests
     }
 
     [Theory]
-    [InlineData("\"Tcp\": \"plc\"", "Tcp: 'plc' is not host:port (e.g. 10.0.0.5:4001), or write a section with Host and Port")]
+    [InlineData("\"Tcp\": \"plc\"", "Tcp: 'plc' is not host:port (e.g. 192.0.2.10:4001), or write a section with Host and Port")]
     [InlineData("\"Tcp\": \"plc:70000\"", "Tcp: 'plc:70000': the port '70000' is not a number 1-65535")]
     [InlineData("\"Tcp\": \"fd00::5:4001\"", "Tcp: 'fd00::5:4001': write an IPv6 address in brackets, e.g. [fd00::5]:4001")]
     [InlineData("\"Tcp\": { \"Host\": \"plc\" }", "Tcp:Port: is missing; write the serial-device server's TCP port (1-65535)")]
