@@ -11,6 +11,9 @@ namespace OmronHostLink.Worker.Configuration;
 /// </summary>
 public sealed class WorkerOptionsValidator : IValidateOptions<WorkerOptions>
 {
+    /// <summary>The longest poll interval or retry wait the library's watch accepts.</summary>
+    private static readonly TimeSpan LongestWait = TimeSpan.FromDays(1);
+
     private readonly IConfiguration? _configuration;
 
     /// <summary>Checks the bound options only.</summary>
@@ -120,14 +123,18 @@ public sealed class WorkerOptionsValidator : IValidateOptions<WorkerOptions>
         }
         else
         {
-            if (link.Backoff.Initial <= TimeSpan.Zero)
+            if (link.Backoff.Initial <= TimeSpan.Zero || link.Backoff.Initial > LongestWait)
             {
-                failures.Add($"{path}:Backoff:Initial must be more than 0; it is {link.Backoff.Initial}.");
+                failures.Add($"{path}:Backoff:Initial must be more than 0 and at most 1 day; it is {link.Backoff.Initial}.");
             }
 
             if (link.Backoff.Max < link.Backoff.Initial)
             {
                 failures.Add($"{path}:Backoff:Max ({link.Backoff.Max}) must be at least Backoff:Initial ({link.Backoff.Initial}).");
+            }
+            else if (link.Backoff.Max > LongestWait)
+            {
+                failures.Add($"{path}:Backoff:Max must be at most 1 day; it is {link.Backoff.Max}.");
             }
         }
 
@@ -152,9 +159,9 @@ public sealed class WorkerOptionsValidator : IValidateOptions<WorkerOptions>
             failures.Add($"{path}:Unit must be 0-31; it is {group.Unit}.");
         }
 
-        if (group.Interval <= TimeSpan.Zero)
+        if (group.Interval <= TimeSpan.Zero || group.Interval > LongestWait)
         {
-            failures.Add($"{path}:Interval must be more than 0; it is {group.Interval}.");
+            failures.Add($"{path}:Interval must be more than 0 and at most 1 day; it is {group.Interval}.");
         }
 
         if (!Enum.TryParse(group.Log, ignoreCase: true, out PollLogMode mode) || !Enum.IsDefined(mode) || int.TryParse(group.Log, out _))

@@ -366,6 +366,8 @@ public sealed class WorkerHostTests(ITestOutputHelper output) : IDisposable
         { "HostLink:Links:plc:Groups:g:Type", "flot", "HostLink:Links:plc:Groups:g:Type 'flot' is not one of word, bcd" },
         { "HostLink:Links:plc:Groups:g:Unit", "32", "HostLink:Links:plc:Groups:g:Unit must be 0-31" },
         { "HostLink:Links:plc:Groups:g:Interval", "00:00:00", "HostLink:Links:plc:Groups:g:Interval must be more than 0" },
+        { "HostLink:Links:plc:Groups:g:Interval", "2.00:00:00", "HostLink:Links:plc:Groups:g:Interval must be more than 0 and at most 1 day; it is 2.00:00:00" },
+        { "HostLink:Links:plc:Backoff:Max", "3.00:00:00", "HostLink:Links:plc:Backoff:Max must be at most 1 day; it is 3.00:00:00" },
         { "HostLink:Links:plc:Groups:g:Log", "Sometimes", "HostLink:Links:plc:Groups:g:Log 'Sometimes' is not EveryPoll or OnChange" },
         { "HostLink:Links:plc:Serial:PortName", "/dev/ttyS0", "HostLink:Links:plc: set exactly one of Serial and Tcp (both are set)" },
         { "HostLink:Links:plc:Tcp", "", "HostLink:Links:plc: set exactly one of Serial and Tcp (neither is set)" },
