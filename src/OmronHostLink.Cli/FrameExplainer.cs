@@ -378,8 +378,8 @@ internal static class FrameExplainer
             case CModeHeaders.StatusRead:
                 PlcStatus status = CModeResponse.ReadStatus(data);
                 x.Field("mode", status.Mode.ToString().ToUpperInvariant());
-                x.Field("statusWord", (long)status.StatusWord);
-                x.Field("userMemoryWritable", status.UserMemoryWritable);
+                x.Field("statusWord", (long)status.StatusWord!.Value);
+                x.Field("userMemoryWritable", status.UserMemoryWritable == true);
                 x.Field("message", status.Message);
                 break;
             case CModeHeaders.ErrorRead:

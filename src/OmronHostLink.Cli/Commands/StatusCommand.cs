@@ -29,8 +29,17 @@ internal static class StatusCommand
     {
         w.WriteLine($"Unit {unit:D2}");
         w.WriteLine($"  Mode:                 {ModeName(status.Mode)}");
-        w.WriteLine($"  Status word:          {Numbers.Hex(status.StatusWord)} ({status.StatusWord})");
-        w.WriteLine($"  User memory writable: {(status.UserMemoryWritable ? "yes" : "no (write-protected)")}");
+        if (status.StatusWord is { } word)
+        {
+            w.WriteLine($"  Status word:          {Numbers.Hex(word)} ({word})");
+            w.WriteLine($"  User memory writable: {(status.UserMemoryWritable == true ? "yes" : "no (write-protected)")}");
+        }
+        else
+        {
+            w.WriteLine("  Status word:          not reported (FINS CONTROLLER STATUS READ has none)");
+            w.WriteLine("  User memory writable: not reported");
+        }
+
         w.WriteLine($"  FAL/FALS message:     {(string.IsNullOrEmpty(status.Message) ? "(none)" : status.Message)}");
     }
 
@@ -39,8 +48,17 @@ internal static class StatusCommand
         j.WriteStartObject();
         j.WriteNumber("unit", unit);
         j.WriteString("mode", ModeName(status.Mode));
-        j.WriteNumber("statusWord", status.StatusWord);
-        j.WriteBoolean("userMemoryWritable", status.UserMemoryWritable);
+        if (status.StatusWord is { } word)
+        {
+            j.WriteNumber("statusWord", word);
+            j.WriteBoolean("userMemoryWritable", status.UserMemoryWritable == true);
+        }
+        else
+        {
+            // Not reported by the FINS status read: null, not a guess.
+            j.WriteNull("statusWord");
+            j.WriteNull("userMemoryWritable");
+        }
         if (string.IsNullOrEmpty(status.Message))
         {
             j.WriteNull("message");

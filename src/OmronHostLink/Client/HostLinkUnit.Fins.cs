@@ -188,7 +188,9 @@ public partial class HostLinkUnit
             _ => PlcMode.Program,
         };
         string message = status.ErrorMessage.Trim();
-        return new PlcStatus(mode, CModeResponse.StatusWord(mode), message.Length == 0 ? null : message);
+
+        // CONTROLLER STATUS READ has no MS status word: its bits (UM protection, program area) are not reported.
+        return new PlcStatus(mode, statusWord: null, message.Length == 0 ? null : message);
     }
 
     private static bool ExpectNoData(ReadOnlySpan<byte> data, string command)

@@ -22,6 +22,24 @@ public sealed class CliFinsTests
     }
 
     [Fact]
+    public async Task Status_with_fins_says_the_status_word_is_not_reported_rather_than_guessing_it()
+    {
+        await using var sim = await SimulatedPlc.StartAsync(PlcMode.Run);
+
+        // UM is writable: the MS status word says so (bit 7); the FINS status read has no such bit.
+        CliResult cmode = await sim.RunAsync("status");
+        CliResult fins = await sim.RunAsync("status", "--fins");
+        JsonElement j = (await sim.RunAsync("status", "--fins", "--json")).Json();
+
+        cmode.Out.Should().Contain("User memory writable: yes");
+        fins.ExitCode.Should().Be(0, fins.ToString());
+        fins.Out.Should().Contain("RUN").And.Contain("User memory writable: not reported").And.NotContain("write-protected");
+        j.GetProperty("mode").GetString().Should().Be("RUN");
+        j.GetProperty("statusWord").ValueKind.Should().Be(JsonValueKind.Null);
+        j.GetProperty("userMemoryWritable").ValueKind.Should().Be(JsonValueKind.Null);
+    }
+
+    [Fact]
     public async Task Write_bit_with_fins_writes_the_bit_directly()
     {
         await using var sim = await SimulatedPlc.StartAsync(PlcMode.Run);

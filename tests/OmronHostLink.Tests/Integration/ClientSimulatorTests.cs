@@ -121,6 +121,21 @@ public sealed class ClientSimulatorTests
 
         await rig.Client.SetModeAsync(PlcMode.Program);
         rig.Plc.Mode.Should().Be(PlcMode.Program);
+
+        // MS reports UM protection in its status word; FINS CONTROLLER STATUS READ has no status word to report it.
+        rig.Plc.UserMemoryWriteProtected = true;
+        PlcStatus status = await rig.Client.ReadStatusAsync();
+        if (protocol == HostLinkCommandSet.Fins)
+        {
+            status.StatusWord.Should().BeNull();
+            status.UserMemoryWritable.Should().BeNull();
+        }
+        else
+        {
+            status.UserMemoryWritable.Should().BeFalse();
+            rig.Plc.UserMemoryWriteProtected = false;
+            (await rig.Client.ReadStatusAsync()).UserMemoryWritable.Should().BeTrue();
+        }
     }
 
     [Theory]
