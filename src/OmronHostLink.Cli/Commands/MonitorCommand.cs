@@ -18,7 +18,7 @@ internal static class MonitorCommand
         Option<TimeSpan?> interval = Durations.Option("--interval", "Time from the start of one poll to the start of the next; 0 polls back to back.", TimeSpan.FromSeconds(1), TimeSpan.Zero, TimeSpan.FromDays(1));
         Option<int?> polls = OptionValues.OptionalInteger("--count", "Stop after this many polls.", 1, int.MaxValue, "N");
         var all = new Option<bool>("--all") { Description = "Print every poll, not only the values that changed." };
-        Option<bool> json = CliContext.JsonOption("Print one JSON document per line for each poll that saw a change (every poll with --all), and a status line when the PLC is lost or answers again, or a poll overruns the interval.");
+        Option<bool> json = CliContext.JsonOption("Print one JSON document per line for each poll that saw a change (every poll with --all), and a status line when the PLC is lost or answers again (with --verbose also when a poll overruns the interval).");
         command.Add(address);
         command.Add(count);
         command.Add(kind);
@@ -169,13 +169,14 @@ internal static class MonitorCommand
         }
 
         /// <summary>
-        /// A poll that took longer than the interval (the next starts at once): a status line in JSON, a note with
-        /// --verbose (as frames are: when the interval is shorter than the line allows, every poll overruns). Not for
-        /// the poll that opened the connection (the first, or the first after an outage): connecting is not polling.
+        /// A poll that took longer than the interval (the next starts at once), with --verbose: a diagnostic like the
+        /// frames, since a stalled machine overruns a short interval now and then and a line too slow for the interval
+        /// overruns every poll; without it the output has only values, outages and resumptions. Not for the poll that
+        /// opened the connection (the first, or the first after an outage): connecting is not polling.
         /// </summary>
         public void Overran(WatchEvent e)
         {
-            if (_lastPollConnected || !(output.IsJson || output.Verbose))
+            if (_lastPollConnected || !output.Verbose)
             {
                 return;
             }

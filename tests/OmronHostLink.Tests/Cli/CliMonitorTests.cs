@@ -137,12 +137,13 @@ public sealed class CliMonitorTests
     }
 
     [Fact]
-    public async Task A_poll_longer_than_the_interval_is_a_status_line_in_json_but_not_the_poll_that_connected()
+    public async Task A_poll_longer_than_the_interval_is_a_status_line_in_json_with_verbose_but_not_the_poll_that_connected()
     {
         // Every answer takes 60 ms: every poll overruns a 20 ms interval; the first also opened the connection.
         await using var sim = await SimulatedPlc.StartAsync(turnaround: TimeSpan.FromMilliseconds(60));
 
-        CliResult r = await sim.RunAsync("monitor", "D0", "--interval", "20ms", "--count", "3", "--json");
+        CliResult r = await sim.RunAsync("monitor", "D0", "--interval", "20ms", "--count", "3", "--json", "--verbose");
+        CliResult quiet = await sim.RunAsync("monitor", "D0", "--interval", "20ms", "--count", "3", "--json");
 
         r.ExitCode.Should().Be(0, r.ToString());
         JsonElement[] lines = r.Lines().Select(l => JsonDocument.Parse(l).RootElement.Clone()).ToArray();
@@ -154,7 +155,9 @@ public sealed class CliMonitorTests
         overruns[0].TryGetProperty("time", out _).Should().BeTrue();
         lines.Where(l => l.TryGetProperty("values", out _)).Should().ContainSingle("the value did not change after the first poll");
         lines[0].GetProperty("values")[0].GetInt32().Should().Be(0, "the values come first, as the poll that overran ends before its overrun is known");
-        r.Err.Should().BeEmpty();
+        quiet.ExitCode.Should().Be(0, quiet.ToString());
+        quiet.Lines().Should().ContainSingle("without --verbose only values (and outages) are printed: {0}", quiet)
+            .Which.Should().Contain("\"values\":[0]");
     }
 
     [Fact]
