@@ -123,7 +123,6 @@ internal static class MonitorCommand
     /// <summary>What the watch says about the link rather than values: each outage once, its end, and overruns.</summary>
     private sealed class LinkReports(OutputWriter output, int unit, TimeSpan every)
     {
-        private bool _lost;
         private bool _connecting = true;
         private bool _lastPollConnected;
 
@@ -138,7 +137,11 @@ internal static class MonitorCommand
             _connecting = false;
         }
 
-        /// <summary>A failed poll: the first of an outage is reported; a failure that is not the link's ends the watch.</summary>
+        /// <summary>
+        /// A failed poll (<see cref="WatchEventKind.Outage"/>, then <see cref="WatchEventKind.RetryFailed"/> while it
+        /// lasts): the watch outlives the PLC, so the outage is reported once and tried again (the client reconnects
+        /// by itself). A failure that is not the link's ends the watch.
+        /// </summary>
         public void Failed(WatchEvent e)
         {
             Exception failure = e.Exception!;
@@ -150,29 +153,23 @@ internal static class MonitorCommand
 
             LastFailure = failure;
             _connecting = true;
-            if (_lost)
+            if (e.Kind == WatchEventKind.Outage)
             {
-                return;
+                string message = CliContext.Describe(failure);
+                Report(e.Timestamp, "lost", CliContext.KindOf(failure), message, $"lost: {message} Trying again until it answers (Ctrl+C stops).");
             }
-
-            // The watch outlives the PLC: reported once, tried again; the client reconnects by itself.
-            _lost = true;
-            string message = CliContext.Describe(failure);
-            Report(e.Timestamp, "lost", CliContext.KindOf(failure), message, $"lost: {message} Trying again until it answers (Ctrl+C stops).");
         }
 
         public void Resumed(WatchEvent e)
         {
-            _lost = false;
             string after = Durations.Format(e.Duration);
             Report(e.Timestamp, "resumed", null, $"Unit {unit:D2} answers again after {after}.", $"answers again after {after}.");
         }
 
         /// <summary>
-        /// A poll that took longer than the interval (the next starts at once), with --verbose: a diagnostic like the
-        /// frames, since a stalled machine overruns a short interval now and then and a line too slow for the interval
-        /// overruns every poll; without it the output has only values, outages and resumptions. Not for the poll that
-        /// opened the connection (the first, or the first after an outage): connecting is not polling.
+        /// A poll longer than the interval (the next starts at once): a diagnostic, with --verbose only, since a
+        /// stalled machine overruns a short interval now and then. Not for the poll that opened the connection (the
+        /// first, or the first after an outage): connecting is not polling.
         /// </summary>
         public void Overran(WatchEvent e)
         {
