@@ -17,12 +17,12 @@ internal sealed record ErrorInfo(string Kind, string? EndCode, string Message);
 /// <summary>What <c>write --json</c> prints: where, what was written (as values and, for word writes, as words), and that the PLC accepted it.</summary>
 internal sealed record WriteDocument(int Unit, string Address, string As, JsonArray Values, ushort[]? Words, bool Ok);
 
-/// <summary>A <c>monitor --json</c> line about the link rather than values: the watch lost or regained the PLC.</summary>
+/// <summary>A <c>monitor --json</c> line about the link rather than values: the watch lost or regained the PLC, or a poll overran the interval.</summary>
 /// <param name="Time">When it happened.</param>
-/// <param name="Status"><c>lost</c> or <c>resumed</c>.</param>
+/// <param name="Status"><c>lost</c>, <c>resumed</c> or <c>overrun</c>.</param>
 /// <param name="Unit">The unit polled.</param>
 /// <param name="Kind">For <c>lost</c>: the failure's kind, as in <see cref="ErrorInfo.Kind"/>.</param>
-/// <param name="Message">For <c>lost</c>: what failed; for <c>resumed</c>: how long the outage lasted.</param>
+/// <param name="Message">For <c>lost</c>: what failed; for <c>resumed</c>: how long the outage lasted; for <c>overrun</c>: how long the poll took.</param>
 internal sealed record MonitorStatusDocument(DateTimeOffset Time, string Status, int Unit, string? Kind, string Message);
 
 /// <summary>Source-generated serialisation of the console's JSON documents (no reflection).</summary>

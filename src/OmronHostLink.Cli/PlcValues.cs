@@ -95,7 +95,7 @@ internal sealed class ReadRequest
     }
 
     /// <summary>The values in the words; null where the words hold no value of the type (not BCD, not ASCII text).</summary>
-    private PlcValue?[] Decode(ushort[] words)
+    public PlcValue?[] Decode(ushort[] words)
     {
         if (Kind == PlcValueType.String)
         {
@@ -160,28 +160,6 @@ internal sealed class Snapshot
         }
 
         return Kind == PlcValueType.String ? a : a.Offset(i * Kind.WordsPerValue());
-    }
-
-    /// <summary>Whether value <paramref name="i"/> differs from the same value in <paramref name="other"/>.</summary>
-    public bool Differs(Snapshot? other, int i)
-    {
-        if (other is null)
-        {
-            return true;
-        }
-
-        if (Kind == PlcValueType.Bit)
-        {
-            return Values[i] != other.Values[i];
-        }
-
-        if (Kind == PlcValueType.String)
-        {
-            return !Words.AsSpan().SequenceEqual(other.Words);
-        }
-
-        int per = Kind.WordsPerValue();
-        return !Words.AsSpan(i * per, per).SequenceEqual(other.Words.AsSpan(i * per, per));
     }
 
     /// <summary>The value in words for people, with hex and decimal where both say something.</summary>

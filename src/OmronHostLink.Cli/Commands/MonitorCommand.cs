@@ -1,5 +1,6 @@
 using System.CommandLine;
 using System.Globalization;
+using System.Runtime.ExceptionServices;
 
 namespace OmronHostLink.Cli.Commands;
 
@@ -14,10 +15,10 @@ internal static class MonitorCommand
         var address = new Argument<string>("address") { Description = "D100, CIO100.05, W30, H10, A448, T5, C7, E1_100." };
         var count = new Argument<string?>("count") { Description = "Number of values (default 1).", Arity = ArgumentArity.ZeroOrOne };
         Option<string?> kind = ReadCommand.AsOption();
-        Option<TimeSpan?> interval = Durations.Option("--interval", "Time between polls; 0 polls back to back.", TimeSpan.FromSeconds(1), TimeSpan.Zero, TimeSpan.FromDays(1));
+        Option<TimeSpan?> interval = Durations.Option("--interval", "Time from the start of one poll to the start of the next; 0 polls back to back.", TimeSpan.FromSeconds(1), TimeSpan.Zero, TimeSpan.FromDays(1));
         Option<int?> polls = OptionValues.OptionalInteger("--count", "Stop after this many polls.", 1, int.MaxValue, "N");
         var all = new Option<bool>("--all") { Description = "Print every poll, not only the values that changed." };
-        Option<bool> json = CliContext.JsonOption("Print one JSON document per line for each poll that saw a change (every poll with --all), and a status line when the PLC is lost or answers again.");
+        Option<bool> json = CliContext.JsonOption("Print one JSON document per line for each poll that saw a change (every poll with --all), and a status line when the PLC is lost or answers again (with --verbose also when a poll overruns the interval).");
         command.Add(address);
         command.Add(count);
         command.Add(kind);
@@ -30,38 +31,48 @@ internal static class MonitorCommand
             ReadRequest request = ReadCommand.Request(parse, address, count, kind, connection);
             TimeSpan every = parse.GetValue(interval) ?? TimeSpan.FromSeconds(1);
             int? limit = parse.GetValue(polls);
-
             bool everyPoll = parse.GetValue(all);
+            var values = new WatchedValues(request);
+
+            // Every poll is reported (Polled, or a failure), so --count counts failed polls too.
+            var options = new WatchOptions { Interval = every, RetryInterval = every > RetryFloor ? every : RetryFloor, ReportEveryCycle = true };
             await using HostLinkClient client = connection.CreateClient(parse, output);
-            var watch = new Watch(output, client.UnitNumber);
+            var link = new LinkReports(output, client.UnitNumber, every);
+            int done = 0;
             try
             {
-                for (int done = 0; limit is null || done < limit; done++)
+                await foreach (WatchEvent e in client.WatchAsync(values.Tags, options, ct).ConfigureAwait(false))
                 {
-                    TimeSpan wait = done == 0 ? TimeSpan.Zero : watch.IsLost ? Max(every, RetryFloor) : every;
-                    if (wait > TimeSpan.Zero)
+                    switch (e.Kind)
                     {
-                        await Task.Delay(wait, ct).ConfigureAwait(false);
+                        case WatchEventKind.Changed:
+                            values.Apply(e);
+                            continue;
+                        case WatchEventKind.Resumed:
+                            link.Resumed(e);
+                            continue;
+                        case WatchEventKind.Overrun:
+                            link.Overran(e);
+                            continue;
+                        case WatchEventKind.Polled:
+                            link.Polled();
+                            List<int> changed = values.EndPoll();
+                            if (changed.Count > 0 || everyPoll)
+                            {
+                                Print(output, client.UnitNumber, values.Current, changed, everyPoll, e.Timestamp);
+                            }
+
+                            break;
+                        default:
+                            // A failure while Ctrl+C stops the watch is the stop, not an outage.
+                            ct.ThrowIfCancellationRequested();
+                            link.Failed(e);
+                            break;
                     }
 
-                    Snapshot current;
-                    try
+                    if (++done == limit)
                     {
-                        current = await request.ReadSnapshotAsync(client, ct).ConfigureAwait(false);
-                    }
-                    catch (Exception e) when (e is HostLinkTimeoutException or HostLinkFrameException or HostLinkConnectionException && !ct.IsCancellationRequested)
-                    {
-                        // The watch outlives the PLC: reported once, tried again; the client reconnects by itself.
-                        watch.Lost(e);
-                        continue;
-                    }
-
-                    watch.Answered();
-                    var changed = Enumerable.Range(0, current.ValueCount).Where(i => current.Differs(watch.Previous, i)).ToList();
-                    watch.Previous = current;
-                    if (changed.Count > 0 || everyPoll)
-                    {
-                        Print(output, client.UnitNumber, current, changed, everyPoll);
+                        break;
                     }
                 }
             }
@@ -71,7 +82,7 @@ internal static class MonitorCommand
                 return ExitCodes.Success;
             }
 
-            if (watch.Previous is null && watch.LastFailure is { } failure)
+            if (!link.EverAnswered && link.LastFailure is { } failure)
             {
                 // Every poll failed: nothing was watched.
                 output.Report(CliContext.ErrorOf(failure));
@@ -86,11 +97,9 @@ internal static class MonitorCommand
     /// <summary>The shortest wait between attempts while the PLC is lost (a refused connection fails at once).</summary>
     private static readonly TimeSpan RetryFloor = TimeSpan.FromMilliseconds(250);
 
-    private static TimeSpan Max(TimeSpan a, TimeSpan b) => a > b ? a : b;
-
-    private static void Print(OutputWriter output, int unit, Snapshot current, List<int> changed, bool everyPoll)
+    private static void Print(OutputWriter output, int unit, Snapshot current, List<int> changed, bool everyPoll, DateTimeOffset read)
     {
-        string time = Now();
+        string time = Clock(read);
         output.Result(
             w =>
             {
@@ -104,63 +113,87 @@ internal static class MonitorCommand
             j =>
             {
                 j.WriteStartObject();
-                j.WriteString("time", DateTimeOffset.Now.ToString("O", CultureInfo.InvariantCulture));
+                j.WriteString("time", read.ToLocalTime().ToString("O", CultureInfo.InvariantCulture));
                 j.WriteNumber("unit", unit);
                 current.WriteJsonFields(j, changed);
                 j.WriteEndObject();
             });
     }
 
-    /// <summary>Whether the PLC answers, and the one report when that changes.</summary>
-    private sealed class Watch(OutputWriter output, int unit)
+    /// <summary>What the watch says about the link rather than values: each outage once, its end, and overruns.</summary>
+    private sealed class LinkReports(OutputWriter output, int unit, TimeSpan every)
     {
-        private DateTimeOffset? _lostSince;
+        private bool _connecting = true;
+        private bool _lastPollConnected;
 
-        public Snapshot? Previous { get; set; }
+        public bool EverAnswered { get; private set; }
 
         public Exception? LastFailure { get; private set; }
 
-        public bool IsLost => _lostSince is not null;
-
-        public void Lost(Exception e)
+        public void Polled()
         {
-            LastFailure = e;
-            if (_lostSince is not null)
+            EverAnswered = true;
+            _lastPollConnected = _connecting;
+            _connecting = false;
+        }
+
+        /// <summary>
+        /// A failed poll (<see cref="WatchEventKind.Outage"/>, then <see cref="WatchEventKind.RetryFailed"/> while it
+        /// lasts): the watch outlives the PLC, so the outage is reported once and tried again (the client reconnects
+        /// by itself). A failure that is not the link's ends the watch.
+        /// </summary>
+        public void Failed(WatchEvent e)
+        {
+            Exception failure = e.Exception!;
+            if (failure is not (HostLinkTimeoutException or HostLinkFrameException or HostLinkConnectionException))
             {
-                return;
+                // The PLC refused the read (an end code) or something else broke: an error, not an outage to outlive.
+                ExceptionDispatchInfo.Throw(failure);
             }
 
-            _lostSince = DateTimeOffset.Now;
-            string message = CliContext.Describe(e);
-            if (output.IsJson)
+            LastFailure = failure;
+            _connecting = true;
+            if (e.Kind == WatchEventKind.Outage)
             {
-                output.Document(new MonitorStatusDocument(_lostSince.Value, "lost", unit, CliContext.KindOf(e), message), CliJsonContext.Console.MonitorStatusDocument);
-            }
-            else
-            {
-                output.Note($"{Now()}  unit {unit:D2} lost: {message} Trying again until it answers (Ctrl+C stops).");
+                string message = CliContext.Describe(failure);
+                Report(e.Timestamp, "lost", CliContext.KindOf(failure), message, $"lost: {message} Trying again until it answers (Ctrl+C stops).");
             }
         }
 
-        public void Answered()
+        public void Resumed(WatchEvent e)
         {
-            if (_lostSince is not { } since)
+            string after = Durations.Format(e.Duration);
+            Report(e.Timestamp, "resumed", null, $"Unit {unit:D2} answers again after {after}.", $"answers again after {after}.");
+        }
+
+        /// <summary>
+        /// A poll longer than the interval (the next starts at once): a diagnostic, with --verbose only, since a
+        /// stalled machine overruns a short interval now and then. Not for the poll that opened the connection (the
+        /// first, or the first after an outage): connecting is not polling.
+        /// </summary>
+        public void Overran(WatchEvent e)
+        {
+            if (_lastPollConnected || !output.Verbose)
             {
                 return;
             }
 
-            _lostSince = null;
-            string after = Durations.Format(DateTimeOffset.Now - since);
+            string took = $"took {Durations.Format(e.Duration)}, longer than the {Durations.Format(every)} interval; the next starts at once.";
+            Report(e.Timestamp, "overrun", null, $"Unit {unit:D2}: a poll {took}", $"overrun: the poll {took}");
+        }
+
+        private void Report(DateTimeOffset time, string status, string? kind, string message, string note)
+        {
             if (output.IsJson)
             {
-                output.Document(new MonitorStatusDocument(DateTimeOffset.Now, "resumed", unit, null, $"Unit {unit:D2} answers again after {after}."), CliJsonContext.Console.MonitorStatusDocument);
+                output.Document(new MonitorStatusDocument(time.ToLocalTime(), status, unit, kind, message), CliJsonContext.Console.MonitorStatusDocument);
             }
             else
             {
-                output.Note($"{Now()}  unit {unit:D2} answers again after {after}.");
+                output.Note($"{Clock(time)}  unit {unit:D2} {note}");
             }
         }
     }
 
-    private static string Now() => DateTime.Now.ToString("HH:mm:ss.fff", CultureInfo.InvariantCulture);
+    private static string Clock(DateTimeOffset time) => time.ToLocalTime().ToString("HH:mm:ss.fff", CultureInfo.InvariantCulture);
 }

@@ -100,7 +100,7 @@ internal static class TagWatch
 
                 PlcValue? previous = reported[i];
                 reported[i] = value;
-                yield return WatchEvent.Changed(i, tags[i], previous, value, readTime);
+                yield return WatchEvent.Changed(i, tags[i], previous, value, readTime, values[i].Words);
             }
 
             if (everyCycle)

@@ -10,9 +10,12 @@ namespace OmronHostLink;
 /// </summary>
 public sealed class WatchEvent
 {
-    private WatchEvent(WatchEventKind kind, DateTimeOffset timestamp, int tagIndex = -1, PlcTag? tag = null, PlcValue? oldValue = null, PlcValue newValue = default, Exception? exception = null, TimeSpan duration = default, TimeSpan retryDelay = default)
+    private static readonly ushort[] NoWords = [];
+
+    private WatchEvent(WatchEventKind kind, DateTimeOffset timestamp, int tagIndex = -1, PlcTag? tag = null, PlcValue? oldValue = null, PlcValue newValue = default, Exception? exception = null, TimeSpan duration = default, TimeSpan retryDelay = default, IReadOnlyList<ushort>? words = null)
     {
         RetryDelay = retryDelay;
+        Words = words ?? NoWords;
         Kind = kind;
         Timestamp = timestamp;
         TagIndex = tagIndex;
@@ -45,6 +48,13 @@ public sealed class WatchEvent
     public PlcValue NewValue { get; }
 
     /// <summary>
+    /// For <see cref="WatchEventKind.Changed"/>: the words <see cref="NewValue"/> was decoded from, as read (one, two or
+    /// four; for a bit, the word that holds it; for a completion flag, one word 0 or 1), so a subscriber can show or
+    /// publish them raw. Empty for other kinds, and for a change made by <see cref="Changed"/> without words.
+    /// </summary>
+    public IReadOnlyList<ushort> Words { get; }
+
+    /// <summary>
     /// For <see cref="WatchEventKind.Outage"/> and <see cref="WatchEventKind.RetryFailed"/>: why the cycle failed (see
     /// <see cref="HostLinkException.IsTransient"/>). Null otherwise.
     /// </summary>
@@ -71,10 +81,11 @@ public sealed class WatchEvent
     /// <param name="oldValue">The value reported before, or null for the first report.</param>
     /// <param name="newValue">The value read.</param>
     /// <param name="timestamp">When the read completed.</param>
+    /// <param name="words">The words the value was decoded from (<see cref="Words"/>); null for none.</param>
     /// <returns>The event.</returns>
     /// <exception cref="ArgumentNullException"><paramref name="tag"/> is null.</exception>
     /// <exception cref="ArgumentOutOfRangeException"><paramref name="tagIndex"/> is negative.</exception>
-    public static WatchEvent Changed(int tagIndex, PlcTag tag, PlcValue? oldValue, PlcValue newValue, DateTimeOffset timestamp)
+    public static WatchEvent Changed(int tagIndex, PlcTag tag, PlcValue? oldValue, PlcValue newValue, DateTimeOffset timestamp, IReadOnlyList<ushort>? words = null)
     {
         Guard.NotNull(tag);
         if (tagIndex < 0)
@@ -82,7 +93,7 @@ public sealed class WatchEvent
             throw new ArgumentOutOfRangeException(nameof(tagIndex), tagIndex, "A tag index cannot be negative.");
         }
 
-        return new(WatchEventKind.Changed, timestamp, tagIndex, tag, oldValue, newValue);
+        return new(WatchEventKind.Changed, timestamp, tagIndex, tag, oldValue, newValue, words: words);
     }
 
     /// <summary>The start of an outage: a cycle failed with <paramref name="exception"/>.</summary>

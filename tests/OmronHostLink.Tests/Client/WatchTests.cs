@@ -84,6 +84,37 @@ public sealed class WatchTests
     }
 
     [Fact]
+    public async Task A_change_carries_the_words_its_value_was_decoded_from()
+    {
+        await using InProcessLine line = InProcessLine.Start();
+        var clock = new SteppingClock();
+        line.Plc.WriteWords(PlcArea.Dm, 102, new ushort[] { 0x0000, 0x3FC0 }); // 1.5f, low word first
+        line.Plc.WriteWord(PlcArea.Dm, 104, 0x0088);
+        line.Plc.SetFlag(PlcArea.Timer, 5, true);
+        PlcTag[] tags = [PlcTag.Parse("D102:float"), PlcTag.Parse("D104.03"), PlcTag.Parse("T5:bit")];
+        await using IAsyncEnumerator<WatchEvent> watch = line.Client
+            .WatchAsync(tags, new WatchOptions { Interval = Second, TimeProvider = clock })
+            .GetAsyncEnumerator();
+
+        WatchEvent real = await Next(watch);
+        real.NewValue.Should().Be(PlcValue.FromSingle(1.5f));
+        real.Words.Should().Equal(0x0000, 0x3FC0);
+        WatchEvent bit = await Next(watch);
+        bit.NewValue.Should().Be(PlcValue.FromBit(true));
+        bit.Words.Should().Equal(new ushort[] { 0x0088 }, "a bit carries the word that holds it");
+        (await Next(watch)).Words.Should().Equal(new ushort[] { 1 }, "a completion flag is read as a word 0 or 1");
+
+        ValueTask<bool> pending = watch.MoveNextAsync();
+        await clock.NextTimerAsync();
+        line.Plc.WriteWords(PlcArea.Dm, 102, new ushort[] { 0x0000, 0x4020 }); // 2.5f
+        clock.Advance(Second);
+        WatchEvent change = await Completed(pending, watch);
+        change.Words.Should().Equal(0x0000, 0x4020);
+        WatchEvent.Polled(TimeSpan.Zero, clock.GetUtcNow()).Words.Should().BeEmpty();
+        WatchEvent.Changed(0, tags[0], null, PlcValue.FromSingle(1f), clock.GetUtcNow()).Words.Should().BeEmpty();
+    }
+
+    [Fact]
     public async Task An_outage_is_reported_once_then_resumption_and_the_changes_it_hid_and_the_stream_goes_on()
     {
         var plc = new VirtualPlc();
