@@ -13,7 +13,8 @@ namespace OmronHostLink;
 /// final error, waiting for the line, resynchronisation and retries included; <c>error.type</c> on failures.</item>
 /// <item><c>hostlink.client.retries</c> (counter): attempts repeated after a timeout or damaged frame, by the
 /// <c>error.type</c> of the attempt that failed.</item>
-/// <item><c>hostlink.client.connection.count</c> (up/down counter): links whose transport is open.</item>
+/// <item><c>hostlink.client.connection.count</c> (observable up/down counter): links whose transport is open, as
+/// observed at each collection.</item>
 /// </list>
 /// <para>Every measurement carries <c>hostlink.link.name</c> (<see cref="HostLinkClientOptions.LinkName"/>); the
 /// operation instruments also <c>hostlink.unit</c> and <c>hostlink.command</c> (the header: <c>RD</c>, <c>FA</c>…).</para>

@@ -28,6 +28,10 @@ internal sealed class HostLinkInstruments
 
     private static HostLinkInstruments? s_shared;
 
+    // Open transports by link name, observed when a listener collects: a late listener (dotnet-counters attached to a
+    // running process) sees the links already open, which a counter of opens and closes could not tell it.
+    private readonly Dictionary<string, long> _open = new(StringComparer.Ordinal);
+
     private HostLinkInstruments(Meter meter)
     {
         OperationDuration = meter.CreateHistogram(
@@ -37,7 +41,7 @@ internal sealed class HostLinkInstruments
             tags: null,
             advice: new InstrumentAdvice<double> { HistogramBucketBoundaries = DurationBuckets });
         Retries = meter.CreateCounter<long>(RetriesName, "{retry}", "Attempts repeated after a timeout or a damaged frame, by the error of the attempt that failed.");
-        ConnectionCount = meter.CreateUpDownCounter<long>(ConnectionCountName, "{connection}", "Links whose transport (serial port, TCP connection, stream) is open.");
+        ConnectionCount = meter.CreateObservableUpDownCounter(ConnectionCountName, ObserveOpen, "{connection}", "Links whose transport (serial port, TCP connection, stream) is open.");
     }
 
     /// <summary>The set on the library's one static meter, made on first use.</summary>
@@ -63,7 +67,7 @@ internal sealed class HostLinkInstruments
 
     public Counter<long> Retries { get; }
 
-    public UpDownCounter<long> ConnectionCount { get; }
+    public ObservableUpDownCounter<long> ConnectionCount { get; }
 
     /// <summary>The set for <paramref name="factory"/>'s meter, or <see cref="Shared"/> without a factory.</summary>
     public static HostLinkInstruments For(IMeterFactory? factory)
@@ -107,9 +111,27 @@ internal sealed class HostLinkInstruments
     /// <summary>Counts a link's transport as opened (+1) or closed (-1).</summary>
     public void Connection(string link, int change)
     {
-        if (ConnectionCount.Enabled)
+        lock (_open)
         {
-            ConnectionCount.Add(change, new KeyValuePair<string, object?>(TelemetryTags.LinkName, link));
+            _open.TryGetValue(link, out long open);
+            open += change;
+            if (open == 0)
+            {
+                // Gone from the next collection: names of links that were closed do not pile up.
+                _open.Remove(link);
+            }
+            else
+            {
+                _open[link] = open;
+            }
+        }
+    }
+
+    private IEnumerable<Measurement<long>> ObserveOpen()
+    {
+        lock (_open)
+        {
+            return _open.Select(o => new Measurement<long>(o.Value, new KeyValuePair<string, object?>(TelemetryTags.LinkName, o.Key))).ToArray();
         }
     }
 

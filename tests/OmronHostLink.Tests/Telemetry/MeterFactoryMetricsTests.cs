@@ -122,21 +122,31 @@ public sealed class MeterFactoryMetricsTests : IDisposable
     }
 
     [Fact]
-    public async Task The_open_connection_count_goes_up_when_the_link_opens_and_down_when_it_closes()
+    public async Task The_open_connection_count_is_observed_per_link_while_the_transport_is_open()
     {
         using var connections = new MetricCollector<long>(Factory, HostLinkTelemetry.MeterName, "hostlink.client.connection.count");
-        HostLinkClientOptions options = TelemetryLine.Options("line");
+        HostLinkClientOptions options = TelemetryLine.Options("line-a");
         options.MeterFactory = Factory;
-        var line = TelemetryLine.Start(options);
+        var a = TelemetryLine.Start(options);
+        HostLinkClientOptions otherOptions = TelemetryLine.Options("line-b");
+        otherOptions.MeterFactory = Factory;
+        await using var b = TelemetryLine.Start(otherOptions);
 
-        connections.GetMeasurementSnapshot().Should().BeEmpty("the stream is opened by the first exchange");
-        await line.Client.ReadWordsAsync("D0", 1);
-        await line.Client.ReadWordsAsync("D0", 1);
-        connections.GetMeasurementSnapshot().Select(m => m.Value).Should().Equal(1);
-        await line.DisposeAsync();
+        Dictionary<string, long> Observe()
+        {
+            connections.Clear();
+            connections.RecordObservableInstruments();
+            return connections.GetMeasurementSnapshot().ToDictionary(m => (string)m.Tags["hostlink.link.name"]!, m => m.Value);
+        }
 
-        connections.GetMeasurementSnapshot().Select(m => m.Value).Should().Equal(1, -1);
-        connections.GetMeasurementSnapshot().Should().OnlyContain(m => (string?)m.Tags["hostlink.link.name"] == "line");
+        Observe().Should().BeEmpty("a stream is opened by the first exchange");
+        await a.Client.ReadWordsAsync("D0", 1);
+        await a.Client.ReadWordsAsync("D0", 1);
+        await b.Client.ReadWordsAsync("D0", 1);
+        Observe().Should().Equal(new Dictionary<string, long> { ["line-a"] = 1, ["line-b"] = 1 });
+
+        await a.DisposeAsync();
+        Observe().Should().Equal(new Dictionary<string, long> { ["line-b"] = 1 });
     }
 
     [Fact]
