@@ -28,7 +28,7 @@ internal static class TelemetryTags
     public const string FramesReceived = "hostlink.frames.received";
 
     /// <summary>Span only: attempts repeated.</summary>
-    public const string Retries = "hostlink.retries";
+    public const string Retries = "hostlink.retry_count";
 
     /// <summary>Span only: the Host Link end code of the answer (<c>00</c>, <c>01</c>…), when one came.</summary>
     public const string EndCode = "hostlink.end_code";

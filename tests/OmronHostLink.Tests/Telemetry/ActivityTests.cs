@@ -40,7 +40,7 @@ public sealed class ActivityTests : IDisposable
         first.GetTagItem("hostlink.transport").Should().Be("stream");
         first.GetTagItem("hostlink.frames.sent").Should().Be(1);
         first.GetTagItem("hostlink.frames.received").Should().Be(1);
-        first.GetTagItem("hostlink.retries").Should().Be(0);
+        first.GetTagItem("hostlink.retry_count").Should().Be(0);
         first.GetTagItem("hostlink.end_code").Should().Be("00");
         first.GetTagItem("error.type").Should().BeNull();
         spans[1].GetTagItem("hostlink.frames.received").Should().Be(4);
@@ -58,7 +58,7 @@ public sealed class ActivityTests : IDisposable
 
         Activity span = Spans("span-retry").Should().ContainSingle().Subject;
         span.Status.Should().Be(ActivityStatusCode.Unset);
-        span.GetTagItem("hostlink.retries").Should().Be(1);
+        span.GetTagItem("hostlink.retry_count").Should().Be(1);
         span.GetTagItem("hostlink.frames.sent").Should().Be(2, "the command went out twice (the resynchronisation's fence is not the command's)");
         span.GetTagItem("hostlink.frames.received").Should().Be(2, "the damaged answer and the good one");
     }
@@ -88,7 +88,7 @@ public sealed class ActivityTests : IDisposable
         unanswered.Status.Should().Be(ActivityStatusCode.Error);
         unanswered.GetTagItem("error.type").Should().Be("timeout");
         unanswered.GetTagItem("hostlink.unit").Should().Be(9);
-        unanswered.GetTagItem("hostlink.retries").Should().Be(1);
+        unanswered.GetTagItem("hostlink.retry_count").Should().Be(1);
         unanswered.GetTagItem("hostlink.end_code").Should().BeNull("no answer, no end code");
     }
 

@@ -38,6 +38,10 @@ public sealed class EventPipeMetricsTests(ITestOutputHelper output)
             "--HostLink:Links:press:Groups:levels:Count=4",
             "--HostLink:Links:press:Groups:levels:Type=int16",
             "--HostLink:Links:press:Groups:levels:Interval=00:00:00.500",
+            // No PLC answers as unit 5 on the press line: its reads time out.
+            "--HostLink:Links:press:Groups:spare:Unit=5",
+            "--HostLink:Links:press:Groups:spare:Address=D0",
+            "--HostLink:Links:press:Groups:spare:Interval=00:00:01",
             $"--HostLink:Links:oven:Tcp=127.0.0.1:{oven.EndPoint.Port}",
             "--HostLink:Links:oven:LineBaudRate=115200",
             "--HostLink:Links:oven:Groups:temperature:Address=D200",
@@ -53,6 +57,7 @@ public sealed class EventPipeMetricsTests(ITestOutputHelper output)
         bool published = await session.WaitForAsync(
             values => Has(values, "HistogramValuePublished", "hostlink.client.operation.duration", "hostlink.link.name=press")
                 && Has(values, "HistogramValuePublished", "hostlink.client.operation.duration", "hostlink.link.name=oven")
+                && Has(values, "HistogramValuePublished", "hostlink.client.operation.duration", "error.type=timeout,")
                 && Has(values, "UpDownCounterRateValuePublished", "hostlink.client.connection.count", "hostlink.link.name=oven")
                 && Has(values, "UpDownCounterRateValuePublished", "hostlink.client.connection.count", "hostlink.link.name=press"),
             Patience);
@@ -63,10 +68,12 @@ public sealed class EventPipeMetricsTests(ITestOutputHelper output)
 
         published.Should().BeTrue("the worker's OmronHostLink meter must be published; errors: {0}; worker: {1}", string.Join("; ", session.Errors), worker.Output);
         session.Errors.Should().BeEmpty();
-        PublishedValue pressReads = values.Last(v => v.Instrument == "hostlink.client.operation.duration" && v.Tags.Contains("hostlink.link.name=press", StringComparison.Ordinal) && v.Tags.Contains("hostlink.command=RD", StringComparison.Ordinal));
+        PublishedValue pressReads = values.Last(v => v.Instrument == "hostlink.client.operation.duration"
+            && v.Tags == "hostlink.command=RD,hostlink.link.name=press,hostlink.unit=0" && !v.Value.StartsWith("count=0 ", StringComparison.Ordinal));
         pressReads.Unit.Should().Be("s");
-        pressReads.Tags.Should().Contain("hostlink.unit=0");
-        pressReads.Value.Should().MatchRegex(@"count=[1-9]\d* ", "reads were made in the last interval").And.Contain("quantiles=0.5=");
+        pressReads.Value.Should().MatchRegex(@"^count=[1-9]\d* sum=\d", "reads were made in that interval").And.Contain("quantiles=0.5=");
+        values.Should().Contain(v => v.Instrument == "hostlink.client.operation.duration" && v.Tags.StartsWith("error.type=timeout,", StringComparison.Ordinal)
+            && v.Tags.Contains("hostlink.link.name=press", StringComparison.Ordinal) && v.Tags.Contains("hostlink.unit=5", StringComparison.Ordinal));
         values.Last(v => v.Instrument == "hostlink.client.connection.count" && v.Tags.Contains("hostlink.link.name=press", StringComparison.Ordinal))
             .Value.Should().EndWith("value=1", "the press link's connection is open");
     }
