@@ -16,8 +16,9 @@ internal sealed class HostLinkInstruments
     public const string ConnectionCountName = "hostlink.client.connection.count";
 
     /// <summary>
-    /// Bucket boundaries in seconds for serial timings: a one-word read takes ~3 ms at 115200 and ~30 ms at 9600, a
-    /// 1000-word read ~4.5 s at 9600, and a timeout costs the turnaround allowance (300 ms by default) per attempt.
+    /// Bucket boundaries in seconds for serial timings: a one-word read crosses the line in ~3 ms at 115200 and ~35 ms
+    /// at 9600, a 1000-word read in ~5 s at 9600, and a timeout costs the turnaround allowance (300 ms by default) per
+    /// attempt.
     /// </summary>
     internal static readonly double[] DurationBuckets = [0.001, 0.002, 0.005, 0.01, 0.02, 0.05, 0.1, 0.2, 0.5, 1, 2, 5, 10, 30];
 
