@@ -1,3 +1,4 @@
+using System.Collections.Concurrent;
 using System.Diagnostics;
 using System.Globalization;
 
@@ -14,6 +15,9 @@ internal static class HostLinkActivities
 
     public static readonly ActivitySource Source = new(HostLinkTelemetry.ActivitySourceName, HostLinkInstruments.Version);
 
+    // Span names by header ("HostLink RD"): a few dozen headers, each name made once.
+    private static readonly ConcurrentDictionary<string, string> Names = new(StringComparer.Ordinal);
+
     /// <summary>Starts the span of one command, or returns null when nobody listens (without making its name).</summary>
     public static Activity? Start(in HostLinkRequest request, string link, string transport)
     {
@@ -22,11 +26,11 @@ internal static class HostLinkActivities
             return null;
         }
 
-        Activity? activity = Source.StartActivity("HostLink " + request.Header, ActivityKind.Client);
+        Activity? activity = Source.StartActivity(Names.GetOrAdd(request.Header, static header => "HostLink " + header), ActivityKind.Client);
         if (activity is { IsAllDataRequested: true })
         {
             activity.SetTag(TelemetryTags.Command, request.Header);
-            activity.SetTag(TelemetryTags.Unit, HostLinkInstruments.Unit(request.Unit));
+            activity.SetTag(TelemetryTags.Unit, HostLinkInstruments.Boxed(request.Unit));
             activity.SetTag(TelemetryTags.LinkName, link);
             activity.SetTag(TelemetryTags.Transport, transport);
         }
@@ -74,8 +78,8 @@ internal static class HostLinkActivities
 
     private static void Counts(Activity activity, int framesSent, int framesReceived, int retries)
     {
-        activity.SetTag(TelemetryTags.FramesSent, framesSent);
-        activity.SetTag(TelemetryTags.FramesReceived, framesReceived);
-        activity.SetTag(TelemetryTags.Retries, retries);
+        activity.SetTag(TelemetryTags.FramesSent, HostLinkInstruments.Boxed(framesSent));
+        activity.SetTag(TelemetryTags.FramesReceived, HostLinkInstruments.Boxed(framesReceived));
+        activity.SetTag(TelemetryTags.Retries, HostLinkInstruments.Boxed(retries));
     }
 }

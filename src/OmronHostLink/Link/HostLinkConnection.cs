@@ -103,7 +103,11 @@ internal sealed class HostLinkConnection : IAsyncDisposable
                 try
                 {
                     TResult result = await RunAsync(request, decode, state, cancellationToken).ConfigureAwait(false);
-                    _instruments.Operation(LinkName, request.Unit, request.Header, null, _time.GetElapsedTime(started));
+                    if (_instruments.OperationDuration.Enabled)
+                    {
+                        _instruments.Operation(LinkName, request.Unit, request.Header, null, _time.GetElapsedTime(started));
+                    }
+
                     if (activity is not null)
                     {
                         HostLinkActivities.Succeeded(activity, framesSent + _attempt.FramesSent, framesReceived + _attempt.FramesReceived, attempt);
@@ -139,7 +143,11 @@ internal sealed class HostLinkConnection : IAsyncDisposable
         }
         catch (Exception e)
         {
-            _instruments.Operation(LinkName, request.Unit, request.Header, e, _time.GetElapsedTime(started));
+            if (_instruments.OperationDuration.Enabled)
+            {
+                _instruments.Operation(LinkName, request.Unit, request.Header, e, _time.GetElapsedTime(started));
+            }
+
             if (activity is not null)
             {
                 HostLinkActivities.Failed(activity, e, framesSent, framesReceived, attempt);

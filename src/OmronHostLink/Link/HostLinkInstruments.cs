@@ -24,8 +24,9 @@ internal sealed class HostLinkInstruments
 
     private static readonly ConditionalWeakTable<IMeterFactory, HostLinkInstruments> ByFactory = new();
 
-    // Unit numbers boxed once: a tag value is an object, and a measurement must not allocate one.
-    private static readonly object[] Units = Enumerable.Range(0, 32).Select(u => (object)u).ToArray();
+    // Small numbers (unit numbers, frame and retry counts) boxed once: a tag value is an object, and a measurement
+    // should not allocate one.
+    private static readonly object[] SmallNumbers = Enumerable.Range(0, 64).Select(u => (object)u).ToArray();
 
     private static HostLinkInstruments? s_shared;
 
@@ -76,8 +77,8 @@ internal sealed class HostLinkInstruments
             ? Shared
             : ByFactory.GetValue(factory, f => new HostLinkInstruments(f.Create(new MeterOptions(HostLinkTelemetry.MeterName) { Version = Version })));
 
-    /// <summary>The boxed unit number (0-31 are boxed once).</summary>
-    public static object Unit(int unit) => (uint)unit < (uint)Units.Length ? Units[unit] : unit;
+    /// <summary>The number as a tag value: 0-63 (every unit number, most frame and retry counts) are boxed once.</summary>
+    public static object Boxed(int number) => (uint)number < (uint)SmallNumbers.Length ? SmallNumbers[number] : number;
 
     /// <summary>Records one command's duration; <paramref name="failure"/> is null when it succeeded.</summary>
     public void Operation(string link, int unit, string command, Exception? failure, TimeSpan elapsed)
@@ -139,7 +140,7 @@ internal sealed class HostLinkInstruments
     private static TagList Tags(string link, int unit, string command) => new()
     {
         { TelemetryTags.LinkName, link },
-        { TelemetryTags.Unit, Unit(unit) },
+        { TelemetryTags.Unit, Boxed(unit) },
         { TelemetryTags.Command, command },
     };
 

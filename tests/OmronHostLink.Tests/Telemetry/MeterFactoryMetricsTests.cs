@@ -172,5 +172,16 @@ public sealed class MeterFactoryMetricsTests : IDisposable
         elsewhere.GetMeasurementSnapshot().Should().BeEmpty();
     }
 
+    [Theory]
+    [InlineData("")]
+    [InlineData("  ")]
+    public void An_empty_link_name_is_refused_naming_the_option(string name)
+    {
+        var options = new HostLinkClientOptions { LinkName = name };
+
+        FluentActions.Invoking(options.Validate).Should().Throw<ArgumentException>()
+            .Which.ParamName.Should().Be(nameof(HostLinkClientOptions.LinkName));
+    }
+
     public void Dispose() => _services.Dispose();
 }
