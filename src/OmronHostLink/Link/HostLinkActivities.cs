@@ -1,6 +1,7 @@
 using System.Collections.Concurrent;
 using System.Diagnostics;
 using System.Globalization;
+using OmronHostLink.Transports;
 
 namespace OmronHostLink.Link;
 
@@ -18,8 +19,11 @@ internal static class HostLinkActivities
     // Span names by header ("HostLink RD"): a few dozen headers, each name made once.
     private static readonly ConcurrentDictionary<string, string> Names = new(StringComparer.Ordinal);
 
-    /// <summary>Starts the span of one command, or returns null when nobody listens (without making its name).</summary>
-    public static Activity? Start(in HostLinkRequest request, string link, string transport)
+    /// <summary>
+    /// Starts the span of one command, or returns null when nobody listens, without touching anything that allocates
+    /// (a serial transport's description is made on each read of it).
+    /// </summary>
+    public static Activity? Start(in HostLinkRequest request, string link, IHostLinkTransport transport)
     {
         if (!Source.HasListeners())
         {
@@ -32,7 +36,7 @@ internal static class HostLinkActivities
             activity.SetTag(TelemetryTags.Command, request.Header);
             activity.SetTag(TelemetryTags.Unit, HostLinkInstruments.Boxed(request.Unit));
             activity.SetTag(TelemetryTags.LinkName, link);
-            activity.SetTag(TelemetryTags.Transport, transport);
+            activity.SetTag(TelemetryTags.Transport, transport.Description);
         }
 
         return activity;

@@ -93,7 +93,7 @@ internal sealed class HostLinkConnection : IAsyncDisposable
         int framesSent = 0;
         int framesReceived = 0;
         long started = _time.GetTimestamp();
-        Activity? activity = HostLinkActivities.Start(request, LinkName, _transport.Description);
+        Activity? activity = HostLinkActivities.Start(request, LinkName, _transport);
         try
         {
             while (true)
