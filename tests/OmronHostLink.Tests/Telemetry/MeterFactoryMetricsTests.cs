@@ -79,6 +79,11 @@ public sealed class MeterFactoryMetricsTests : IDisposable
 
         client.LinkName.Should().Be($"127.0.0.1:{simulator.EndPoint.Port}");
         durations.LastMeasurement!.Tags["hostlink.link.name"].Should().Be(client.LinkName);
+
+        // A serial link is named by its port alone, not its settings (the port opens on first use: nothing is opened here).
+        await using var serial = HostLinkClient.ForSerialPort("/dev/ttyUSB7");
+        serial.LinkName.Should().Be("/dev/ttyUSB7");
+        serial.Description.Should().Be("/dev/ttyUSB7 9600 7E2");
     }
 
     [Fact]
