@@ -1,3 +1,4 @@
+using System.Diagnostics.Metrics;
 using Microsoft.Extensions.DependencyInjection;
 using Microsoft.Extensions.Logging;
 using OmronHostLink.DependencyInjection.Configuration;
@@ -12,13 +13,19 @@ namespace OmronHostLink.DependencyInjection;
 /// </summary>
 internal static class HostLinkClientSettingsMapper
 {
-    /// <summary>Creates the client the settings describe, logging through the container's logger factory.</summary>
+    /// <summary>
+    /// Creates the client the settings describe, logging through the container's logger factory and measuring through
+    /// its meter factory (when it has them), named in metrics and traces by its registered name.
+    /// </summary>
     /// <param name="settings">Validated settings.</param>
-    /// <param name="services">The container, for the logger factory.</param>
-    public static HostLinkClient CreateClient(HostLinkClientSettings settings, IServiceProvider services)
+    /// <param name="services">The container, for the logger and meter factories.</param>
+    /// <param name="name">The client's registered name; null for the default client, named by its port or host:port.</param>
+    public static HostLinkClient CreateClient(HostLinkClientSettings settings, IServiceProvider services, string? name)
     {
         HostLinkClientOptions options = ToClientOptions(settings);
         options.LoggerFactory = services.GetService<ILoggerFactory>();
+        options.MeterFactory = services.GetService<IMeterFactory>();
+        options.LinkName = name;
         SerialLineSettings line = ToSerialLineSettings(settings);
         if (settings.Serial.PortName is not null)
         {

@@ -11,7 +11,9 @@ namespace Microsoft.Extensions.DependencyInjection;
 /// <summary>
 /// Registers <see cref="HostLinkClient"/>s in a service collection: named clients as keyed services
 /// (<c>[FromKeyedServices("line1")] HostLinkClient plc</c>), or one default client. Each client is a singleton created
-/// on first use, logs through the container's <c>ILoggerFactory</c>, and is closed when the container is disposed.
+/// on first use, logs through the container's <c>ILoggerFactory</c>, measures through its <c>IMeterFactory</c> (a
+/// named client's metrics and spans carry its name as <c>hostlink.link.name</c>), and is closed when the container is
+/// disposed.
 /// Its settings are checked when the host starts: every problem is reported at once, named by its configuration key.
 /// </summary>
 /// <example>
@@ -142,21 +144,21 @@ public static class HostLinkServiceCollectionExtensions
 
         if (name is null)
         {
-            services.AddSingleton(sp => Create(sp, optionsName));
+            services.AddSingleton(sp => Create(sp, optionsName, null));
         }
         else
         {
-            services.AddKeyedSingleton(name, (sp, _) => Create(sp, optionsName));
+            services.AddKeyedSingleton(name, (sp, _) => Create(sp, optionsName, name));
         }
 
         return services;
     }
 
-    private static HostLinkClient Create(IServiceProvider services, string optionsName)
+    private static HostLinkClient Create(IServiceProvider services, string optionsName, string? name)
     {
         // Throws OptionsValidationException, naming every problem, when the host was not started to check them.
         HostLinkClientSettings settings = services.GetRequiredService<IOptionsMonitor<HostLinkClientSettings>>().Get(optionsName);
-        return HostLinkClientSettingsMapper.CreateClient(settings, services);
+        return HostLinkClientSettingsMapper.CreateClient(settings, services, name);
     }
 
     private static void CheckName(string name)

@@ -26,6 +26,7 @@ public class ReadPathBenchmarks
     [GlobalSetup]
     public void Setup()
     {
+        StartListening();
         var stream = new AnsweringStream(Words, AnswerOnThreadPool);
         _client = HostLinkClient.ForStream(stream, new HostLinkClientOptions { ReadRetries = 0 });
         _signal = _done.Set;
@@ -33,7 +34,11 @@ public class ReadPathBenchmarks
     }
 
     [GlobalCleanup]
-    public void Cleanup() => _client.DisposeAsync().AsTask().GetAwaiter().GetResult();
+    public void Cleanup()
+    {
+        _client.DisposeAsync().AsTask().GetAwaiter().GetResult();
+        StopListening();
+    }
 
     /// <summary>One read, waited for without allocating (no Task is made of the ValueTask).</summary>
     [Benchmark]
@@ -48,6 +53,16 @@ public class ReadPathBenchmarks
         }
 
         return read.GetAwaiter().GetResult();
+    }
+
+    /// <summary>Attaches telemetry listeners before the client is made; none here.</summary>
+    protected virtual void StartListening()
+    {
+    }
+
+    /// <summary>Detaches what <see cref="StartListening"/> attached.</summary>
+    protected virtual void StopListening()
+    {
     }
 
     /// <summary>A PLC in a stream: every write is taken as an RD command and answered with a fixed answer of the right size.</summary>

@@ -18,7 +18,7 @@ public static class TelemetryExport
     public const string SectionName = "OpenTelemetry";
 
     /// <summary>The meters exported: the library's and the worker's.</summary>
-    public static readonly string[] Meters = ["OmronHostLink", "OmronHostLink.Worker"];
+    public static readonly string[] Meters = [HostLinkTelemetry.MeterName, Mqtt.MqttMetrics.MeterName];
 
     /// <summary>Adds the exporter <c>OpenTelemetry:Exporter</c> names, if any; an unknown name fails at start, naming the key.</summary>
     public static IServiceCollection AddTelemetryExport(this IServiceCollection services, IConfiguration configuration)
@@ -47,7 +47,7 @@ public static class TelemetryExport
             })
             .WithTracing(t =>
             {
-                t.AddSource("OmronHostLink");
+                t.AddSource(HostLinkTelemetry.ActivitySourceName);
                 _ = console ? t.AddConsoleExporter() : t.AddOtlpExporter();
             });
         return services;

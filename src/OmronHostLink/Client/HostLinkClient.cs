@@ -61,6 +61,12 @@ public sealed class HostLinkClient : HostLinkUnit, IHostLinkClient
     /// <summary>Where the link goes (port and settings, host:port).</summary>
     public string Description => Connection.Description;
 
+    /// <summary>
+    /// The link's name in metrics and traces: <see cref="HostLinkClientOptions.LinkName"/>, else the port name or
+    /// <c>host:port</c>.
+    /// </summary>
+    public string LinkName => Connection.LinkName;
+
     /// <summary>Called with every frame sent (true) and received (false), for diagnostics.</summary>
     public Action<bool, ReadOnlyMemory<byte>>? FrameObserver
     {

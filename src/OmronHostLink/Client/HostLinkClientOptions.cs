@@ -1,3 +1,4 @@
+using System.Diagnostics.Metrics;
 using Microsoft.Extensions.Logging;
 using OmronHostLink.Link;
 using OmronHostLink.Transports;
@@ -55,6 +56,21 @@ public sealed class HostLinkClientOptions
     /// <summary>Where the client logs (frames at Trace, transactions at Debug, retries as warnings).</summary>
     public ILoggerFactory? LoggerFactory { get; set; }
 
+    /// <summary>
+    /// Where the client's meter (<see cref="HostLinkTelemetry.MeterName"/>) comes from: the container's factory in a
+    /// host (the DI package passes it), so that the meter is scoped to the container and tests can collect from it.
+    /// Null (the default) for the library's one shared static meter. A meter made by the factory belongs to it: the
+    /// client never disposes it.
+    /// </summary>
+    public IMeterFactory? MeterFactory { get; set; }
+
+    /// <summary>
+    /// The link's name in metrics and traces (the <c>hostlink.link.name</c> attribute), which tells two clients apart.
+    /// Null (the default) for the port name (<c>COM3</c>, <c>/dev/ttyUSB0</c>) or <c>host:port</c>; the DI package
+    /// sets the client's registered name. Keep it to a few distinct values: every name is its own time series.
+    /// </summary>
+    public string? LinkName { get; set; }
+
     /// <summary>The clock frame deadlines run on. Default <see cref="TimeProvider.System"/>; tests pass a fake one.</summary>
     public TimeProvider TimeProvider { get; set; } = TimeProvider.System;
 
@@ -80,6 +96,11 @@ public sealed class HostLinkClientOptions
         {
             throw new ArgumentException("TimeProvider is required.", nameof(TimeProvider));
         }
+
+        if (LinkName is not null && LinkName.Trim().Length == 0)
+        {
+            throw new ArgumentException("LinkName is empty; leave it unset (null) to name the link by its port or host:port.", nameof(LinkName));
+        }
     }
 
     internal HostLinkClientOptions Clone() => (HostLinkClientOptions)MemberwiseClone();
@@ -91,6 +112,8 @@ public sealed class HostLinkClientOptions
         TurnaroundAllowance = TurnaroundAllowance,
         LocalEcho = LocalEcho,
         LoggerFactory = LoggerFactory,
+        MeterFactory = MeterFactory,
+        LinkName = LinkName,
         TimeProvider = TimeProvider,
     };
 }

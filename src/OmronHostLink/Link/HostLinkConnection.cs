@@ -1,3 +1,4 @@
+using System.Diagnostics;
 using System.Runtime.CompilerServices;
 using Microsoft.Extensions.Logging;
 using Microsoft.Extensions.Logging.Abstractions;
@@ -16,7 +17,8 @@ namespace OmronHostLink.Link;
 /// <remarks>
 /// The parts: <see cref="FrameChannel"/> (the stream's bytes, frames, per-frame deadlines), <see cref="TransactionAttempt"/>
 /// (one exchange, frame by frame), <see cref="Resynchroniser"/> (<c>@**</c> and the TS fence). Deadlines run on the
-/// <see cref="TimeProvider"/> of the options.
+/// <see cref="TimeProvider"/> of the options. Telemetry is per command, not per attempt: one duration measurement
+/// and one span (<see cref="HostLinkActivities"/>) from the call to its result or final error, each retry counted.
 /// </remarks>
 internal sealed class HostLinkConnection : IAsyncDisposable
 {
@@ -27,6 +29,7 @@ internal sealed class HostLinkConnection : IAsyncDisposable
     private readonly SemaphoreSlim _gate = new(1, 1);
     private readonly TransactionAttempt _attempt;
     private readonly Resynchroniser _resynchroniser;
+    private readonly HostLinkInstruments _instruments;
 
     private FrameChannel? _channel;
     private Action<bool, ReadOnlyMemory<byte>>? _frameObserver;
@@ -42,6 +45,8 @@ internal sealed class HostLinkConnection : IAsyncDisposable
         _logger = options.LoggerFactory?.CreateLogger("OmronHostLink") ?? NullLogger.Instance;
         _attempt = new TransactionAttempt(Timing, options.TurnaroundAllowance, options.LocalEcho);
         _resynchroniser = new Resynchroniser(_attempt, _time, options.LocalEcho);
+        _instruments = HostLinkInstruments.For(options.MeterFactory);
+        LinkName = options.LinkName ?? (transport as SerialTransport)?.PortName ?? transport.Description;
     }
 
     /// <summary>Where the link stands between transactions.</summary>
@@ -51,6 +56,9 @@ internal sealed class HostLinkConnection : IAsyncDisposable
     public LineTiming Timing { get; }
 
     public string Description => _transport.Description;
+
+    /// <summary>The link's name in metrics and traces.</summary>
+    public string LinkName { get; }
 
     /// <summary>Observes every frame sent and received (for the console's --verbose).</summary>
     public Action<bool, ReadOnlyMemory<byte>>? FrameObserver
@@ -82,36 +90,70 @@ internal sealed class HostLinkConnection : IAsyncDisposable
         }
 
         int attempt = 0;
+        int framesSent = 0;
+        int framesReceived = 0;
         long started = _time.GetTimestamp();
-        while (true)
+        Activity? activity = HostLinkActivities.Start(request, LinkName, _transport);
+        try
         {
-            cancellationToken.ThrowIfCancellationRequested();
-            await _gate.WaitAsync(cancellationToken).ConfigureAwait(false);
-            try
+            while (true)
             {
-                return await RunAsync(request, decode, state, cancellationToken).ConfigureAwait(false);
+                cancellationToken.ThrowIfCancellationRequested();
+                await _gate.WaitAsync(cancellationToken).ConfigureAwait(false);
+                try
+                {
+                    TResult result = await RunAsync(request, decode, state, cancellationToken).ConfigureAwait(false);
+                    if (_instruments.OperationDuration.Enabled)
+                    {
+                        _instruments.Operation(LinkName, request.Unit, request.Header, null, _time.GetElapsedTime(started));
+                    }
+
+                    if (activity is not null)
+                    {
+                        HostLinkActivities.Succeeded(activity, framesSent + _attempt.FramesSent, framesReceived + _attempt.FramesReceived, attempt);
+                    }
+
+                    return result;
+                }
+                catch (Exception e) when (attempt < retries && IsRetryable(e) && !cancellationToken.IsCancellationRequested)
+                {
+                    attempt++;
+                    _instruments.Retry(LinkName, request.Unit, request.Header, e);
+                    HostLinkLog.Retry(_logger, request.Unit, request.Header, e.Message, attempt, retries);
+                }
+                catch (HostLinkTimeoutException e) when (!cancellationToken.IsCancellationRequested)
+                {
+                    // Said in the caller's terms: the command that went unanswered and the time it cost in all. The last
+                    // deadline may have been a resynchronisation fence's, which the caller never asked for; that detail
+                    // stays with the inner exception.
+                    TimeSpan total = _time.GetElapsedTime(started);
+                    throw new HostLinkTimeoutException(
+                        $"No answer from unit {request.Unit:D2} to {request.Header} on {_transport.Description}: waited {total.TotalMilliseconds:0} ms in all ({attempt + 1} attempt{(attempt == 0 ? "" : "s")}).",
+                        total,
+                        e);
+                }
+                finally
+                {
+                    // Read under the gate: the attempt is the connection's, and the next caller's resets it.
+                    framesSent += _attempt.FramesSent;
+                    framesReceived += _attempt.FramesReceived;
+                    _gate.Release();
+                }
             }
-            catch (Exception e) when (attempt < retries && IsRetryable(e) && !cancellationToken.IsCancellationRequested)
+        }
+        catch (Exception e)
+        {
+            if (_instruments.OperationDuration.Enabled)
             {
-                attempt++;
-                HostLinkMetrics.Retry(request.Header);
-                HostLinkLog.Retry(_logger, request.Unit, request.Header, e.Message, attempt, retries);
+                _instruments.Operation(LinkName, request.Unit, request.Header, e, _time.GetElapsedTime(started));
             }
-            catch (HostLinkTimeoutException e) when (!cancellationToken.IsCancellationRequested)
+
+            if (activity is not null)
             {
-                // Said in the caller's terms: the command that went unanswered and the time it cost in all. The last
-                // deadline may have been a resynchronisation fence's, which the caller never asked for; that detail
-                // stays with the inner exception.
-                TimeSpan total = _time.GetElapsedTime(started);
-                throw new HostLinkTimeoutException(
-                    $"No answer from unit {request.Unit:D2} to {request.Header} on {_transport.Description}: waited {total.TotalMilliseconds:0} ms in all ({attempt + 1} attempt{(attempt == 0 ? "" : "s")}).",
-                    total,
-                    e);
+                HostLinkActivities.Failed(activity, e, framesSent, framesReceived, attempt);
             }
-            finally
-            {
-                _gate.Release();
-            }
+
+            throw;
         }
     }
 
@@ -240,6 +282,7 @@ internal sealed class HostLinkConnection : IAsyncDisposable
 #endif
     private async ValueTask<TResult> RunAsync<TState, TResult>(HostLinkRequest request, ResponseDecoder<TState, TResult> decode, TState state, CancellationToken cancellationToken)
     {
+        _attempt.ResetFrames();
         FrameChannel channel = await OpenedAsync(cancellationToken).ConfigureAwait(false);
         channel.Begin(cancellationToken);
         try
@@ -253,14 +296,12 @@ internal sealed class HostLinkConnection : IAsyncDisposable
             try
             {
                 TResult result = await _attempt.RunAsync(channel, request, decode, state).ConfigureAwait(false);
-                double ms = _time.GetElapsedTime(started).TotalMilliseconds;
-                HostLinkMetrics.Completed(request.Header, ms);
-                HostLinkLog.Transaction(_logger, request.Unit, request.Header, ms, _attempt.Frames);
+                HostLinkLog.Transaction(_logger, request.Unit, request.Header, _time.GetElapsedTime(started).TotalMilliseconds, _attempt.Frames);
                 return result;
             }
             catch (Exception e)
             {
-                Failed(e, request, started);
+                Failed(e, request);
                 throw;
             }
         }
@@ -270,44 +311,23 @@ internal sealed class HostLinkConnection : IAsyncDisposable
         }
     }
 
-    /// <summary>Moves the state by how the attempt failed, and counts the failure.</summary>
-    private void Failed(Exception e, HostLinkRequest request, long started)
+    /// <summary>Moves the state by how the attempt failed.</summary>
+    private void Failed(Exception e, HostLinkRequest request)
     {
         AttemptFailure failure = _attempt.Classify(e);
         switch (failure)
         {
             case AttemptFailure.InStep:
                 // A complete error answer: the link is still in step.
-                HostLinkMetrics.Completed(request.Header, _time.GetElapsedTime(started).TotalMilliseconds);
-                HostLinkMetrics.Error(
-                    request.Header,
-                    e is FinsEndCodeException ? "fins_end_code" : "end_code",
-                    e switch
-                    {
-                        HostLinkEndCodeException hl => hl.EndCode.ToCode(),
-                        FinsEndCodeException fins => fins.EndCode.ToString(),
-                        _ => null,
-                    });
                 HostLinkLog.Failed(_logger, request.Unit, request.Header, e.Message);
                 break;
             case AttemptFailure.Lost:
-                HostLinkMetrics.Error(request.Header, "connection", null);
                 HostLinkLog.Lost(_logger, _transport.Description, e.Message);
                 Break();
                 break;
             default:
                 State = failure == AttemptFailure.Cut ? LinkState.NeedsInitialize : LinkState.NeedsResync;
                 _resyncUnit = request.Unit;
-                HostLinkMetrics.Error(
-                    request.Header,
-                    e switch
-                    {
-                        HostLinkTimeoutException => "timeout",
-                        HostLinkFrameException => "frame",
-                        OperationCanceledException => "cancelled",
-                        _ => "other",
-                    },
-                    null);
                 HostLinkLog.Failed(_logger, request.Unit, request.Header, e.Message);
                 break;
         }
@@ -365,6 +385,7 @@ internal sealed class HostLinkConnection : IAsyncDisposable
         _channel = channel;
         State = LinkState.Ready;
         channel.Start();
+        _instruments.Connection(LinkName, +1);
         HostLinkLog.Opened(_logger, _transport.Description);
         return channel;
     }
@@ -398,6 +419,7 @@ internal sealed class HostLinkConnection : IAsyncDisposable
         if (channel is not null)
         {
             await channel.WaitStoppedAsync().ConfigureAwait(false);
+            _instruments.Connection(LinkName, -1);
         }
 
         State = LinkState.Closed;

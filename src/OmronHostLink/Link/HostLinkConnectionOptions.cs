@@ -1,9 +1,10 @@
+using System.Diagnostics.Metrics;
 using Microsoft.Extensions.Logging;
 using OmronHostLink.Transports;
 
 namespace OmronHostLink.Link;
 
-/// <summary>What the link needs to know about the line: timing, the PLC's turnaround, echo, logging and the clock.</summary>
+/// <summary>What the link needs to know about the line: timing, the PLC's turnaround, echo, telemetry and the clock.</summary>
 internal sealed class HostLinkConnectionOptions
 {
     /// <summary>The line's character timing, used when the transport does not know it (TCP, streams).</summary>
@@ -17,6 +18,12 @@ internal sealed class HostLinkConnectionOptions
 
     /// <summary>Where the link logs; null for nowhere.</summary>
     public ILoggerFactory? LoggerFactory { get; init; }
+
+    /// <summary>Where the link's meter comes from; null for the library's shared static meter.</summary>
+    public IMeterFactory? MeterFactory { get; init; }
+
+    /// <summary>The link's name in metrics and traces; null for the port name or the transport's description.</summary>
+    public string? LinkName { get; init; }
 
     /// <summary>The clock deadlines run on.</summary>
     public TimeProvider TimeProvider { get; init; } = TimeProvider.System;

@@ -30,8 +30,21 @@ internal sealed class TransactionAttempt
         _localEcho = localEcho;
     }
 
+    /// <summary>Command frames sent by the last attempt (not the bare CRs between frames).</summary>
+    public int FramesSent { get; private set; }
+
+    /// <summary>Answer frames received by the last attempt, damaged ones included (not the bare CRs between frames).</summary>
+    public int FramesReceived { get; private set; }
+
     /// <summary>Frames sent and received by the last attempt.</summary>
-    public int Frames { get; private set; }
+    public int Frames => FramesSent + FramesReceived;
+
+    /// <summary>Forgets the last attempt's frames, before an exchange that may fail before its attempt starts.</summary>
+    public void ResetFrames()
+    {
+        FramesSent = 0;
+        FramesReceived = 0;
+    }
 
     /// <summary>
     /// The deadline for a frame: the characters still to cross the line (what we sent and the longest answer) at the
@@ -61,7 +74,7 @@ internal sealed class TransactionAttempt
     {
         ExchangeShape shape = request.Shape;
         _cut = false;
-        Frames = 0;
+        ResetFrames();
 
         // Send: frame by frame; between command frames the PLC answers a bare CR (or an error at once).
         int offset = 0;
@@ -88,7 +101,7 @@ internal sealed class TransactionAttempt
             _cut = !final;
             await channel.WriteAsync(_tx.AsMemory(0, frameLength)).ConfigureAwait(false);
             sentChars = frameLength;
-            Frames++;
+            FramesSent++;
             if (_localEcho)
             {
                 await channel.ReadEchoAsync(_tx.AsMemory(0, frameLength), FrameTimeout(frameLength, 0)).ConfigureAwait(false);
@@ -134,8 +147,8 @@ internal sealed class TransactionAttempt
             }
         }
 
+        FramesReceived++;
         FrameInfo info = FirstFrame(channel.Frame(preReadEnd).Slice(preReadAt), request);
-        Frames++;
         while (!info.IsFinal)
         {
             _cut = true;
@@ -146,8 +159,8 @@ internal sealed class TransactionAttempt
             }
 
             int len = await channel.ReadFrameAsync(expectStart: false, FrameTimeout(1, FrameWriter.MaxContinuationFrameLength)).ConfigureAwait(false);
+            FramesReceived++;
             info = Continuation(channel, len, request);
-            Frames++;
         }
 
         _cut = false;

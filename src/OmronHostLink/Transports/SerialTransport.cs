@@ -40,6 +40,9 @@ public sealed class SerialTransport : IHostLinkTransport
     /// <inheritdoc/>
     public string Description => _settings.ToString();
 
+    /// <summary>The port's name alone (the link's default name in metrics and traces).</summary>
+    internal string PortName => _settings.PortName;
+
     /// <inheritdoc/>
     public LineTiming? LineTiming { get; }
 

@@ -46,13 +46,14 @@ public sealed class TelemetryAndTransportTests
     }
 
     [Fact]
-    public async Task The_meter_counts_transactions_durations_and_errors_by_kind_and_end_code()
+    public async Task Without_a_meter_factory_the_shared_static_meter_records_durations_and_error_types()
     {
         var measurements = new ConcurrentBag<(string Instrument, double Value, Dictionary<string, object?> Tags)>();
         using var listener = new MeterListener();
         listener.InstrumentPublished = (instrument, l) =>
         {
-            if (instrument.Meter.Name == HostLinkMetrics.MeterName)
+            // The static meter has no factory scope; meters from factories in other tests are left out.
+            if (instrument.Meter.Name == HostLinkTelemetry.MeterName && instrument.Meter.Scope is null)
             {
                 l.EnableMeasurementEvents(instrument);
             }
@@ -65,7 +66,9 @@ public sealed class TelemetryAndTransportTests
         (Stream host, Stream plcEnd) = InMemoryLink.CreatePair();
         using var stop = new CancellationTokenSource();
         Task session = plc.RunAsync(plcEnd, stop.Token);
-        await using (var client = HostLinkClient.ForStream(host, Fast()))
+        HostLinkClientOptions options = Fast();
+        options.LinkName = "static-meter-test";
+        await using (var client = HostLinkClient.ForStream(host, options))
         {
             await client.ReadWordsAsync("D0", 2);
             await FluentActions.Awaiting(() => client.WriteWordAsync("D0", 1).AsTask()).Should().ThrowAsync<HostLinkEndCodeException>();
@@ -74,10 +77,11 @@ public sealed class TelemetryAndTransportTests
 
         stop.Cancel();
         listener.RecordObservableInstruments();
-        measurements.Should().Contain(m => m.Instrument == "hostlink.transactions" && (string?)m.Tags["header"] == "RD");
-        measurements.Should().Contain(m => m.Instrument == "hostlink.transaction.duration" && m.Value > 0);
-        measurements.Should().Contain(m => m.Instrument == "hostlink.errors" && (string?)m.Tags["kind"] == "end_code" && (string?)m.Tags["end_code"] == "01");
-        measurements.Should().Contain(m => m.Instrument == "hostlink.errors" && (string?)m.Tags["kind"] == "timeout");
+        // Tests in other classes use the same static meter: only this test's link is looked at.
+        var mine = measurements.Where(m => (string?)m.Tags["hostlink.link.name"] == "static-meter-test").ToList();
+        mine.Should().Contain(m => m.Instrument == "hostlink.client.operation.duration" && (string?)m.Tags["hostlink.command"] == "RD" && m.Tags["error.type"] == null && m.Value > 0);
+        mine.Should().Contain(m => m.Instrument == "hostlink.client.operation.duration" && (string?)m.Tags["hostlink.command"] == "WD" && (string?)m.Tags["error.type"] == "NotExecutableInRunMode");
+        mine.Should().Contain(m => m.Instrument == "hostlink.client.operation.duration" && (int?)m.Tags["hostlink.unit"] == 9 && (string?)m.Tags["error.type"] == "timeout");
     }
 
     [Fact]
@@ -108,9 +112,10 @@ public sealed class TelemetryAndTransportTests
             d[t.Key] = t.Value;
         }
 
-        d.TryAdd("header", null);
-        d.TryAdd("kind", null);
-        d.TryAdd("end_code", null);
+        d.TryAdd("hostlink.link.name", null);
+        d.TryAdd("hostlink.command", null);
+        d.TryAdd("hostlink.unit", null);
+        d.TryAdd("error.type", null);
         return d;
     }
 

@@ -4,6 +4,7 @@ using Microsoft.Extensions.Hosting;
 using Microsoft.Extensions.Options;
 using OmronHostLink.Worker;
 using OpenTelemetry.Metrics;
+using OpenTelemetry.Trace;
 
 namespace OmronHostLink.Tests.Worker;
 
@@ -19,6 +20,7 @@ public sealed class TelemetryExportTests
     {
         using IHost host = Build(exporter);
         (host.Services.GetService<MeterProvider>() is not null).Should().Be(exported);
+        (host.Services.GetService<TracerProvider>() is not null).Should().Be(exported, "the library's spans are exported with its metrics");
     }
 
     [Fact]
