@@ -1,4 +1,5 @@
 using System.Buffers;
+using System.Diagnostics;
 using System.IO.Pipelines;
 using OmronHostLink.Protocol;
 using OmronHostLink.Simulator.Faults;
@@ -103,6 +104,24 @@ internal sealed class HostLinkSession
         }
     }
 
+    private static readonly TimeSpan OneMillisecond = TimeSpan.FromMilliseconds(1);
+
+    /// <summary>
+    /// Waits at least <paramref name="delay"/> by the stopwatch. A timer is due by the coarse system tick, so
+    /// <see cref="Task.Delay(TimeSpan, CancellationToken)"/> can end up to one tick (4 ms here) early; a PLC never answers
+    /// before its turnaround, so the remainder is waited again.
+    /// </summary>
+    private static async Task DelayAtLeastAsync(TimeSpan delay, CancellationToken cancellationToken)
+    {
+        long started = Stopwatch.GetTimestamp();
+        TimeSpan left = delay;
+        while (left > TimeSpan.Zero)
+        {
+            await Task.Delay(left < OneMillisecond ? OneMillisecond : left, cancellationToken).ConfigureAwait(false);
+            left = delay - Stopwatch.GetElapsedTime(started);
+        }
+    }
+
     private async Task SendAsync(Stream stream, byte[] received, LinkReply reply, CancellationToken cancellationToken)
     {
         VirtualPlc plc = _plcs[_exchange.Unit];
@@ -129,7 +148,7 @@ internal sealed class HostLinkSession
         {
             // With wire-time emulation the turnaround is timed as precisely as the characters (Task.Delay can be
             // late by milliseconds on a loaded machine); without it, a timer is enough.
-            await (_pacer.Enabled ? _pacer.DelayAsync(turnaround, cancellationToken) : Task.Delay(turnaround, cancellationToken)).ConfigureAwait(false);
+            await (_pacer.Enabled ? _pacer.DelayAsync(turnaround, cancellationToken) : DelayAtLeastAsync(turnaround, cancellationToken)).ConfigureAwait(false);
         }
 
         if (plan.Noise is { } noise)

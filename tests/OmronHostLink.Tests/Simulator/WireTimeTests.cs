@@ -43,6 +43,28 @@ public class WireTimeTests(ITestOutputHelper output)
     }
 
     [Fact]
+    public async Task No_answer_starts_before_the_turnaround_however_the_timer_is_rounded()
+    {
+        // A timer is due by the coarse system tick and can fire a few milliseconds early; the turnaround must not.
+        var turnaround = TimeSpan.FromMilliseconds(9);
+        await using RawHost host = RawHost.Start(new VirtualPlcOptions { Turnaround = turnaround });
+        var early = new List<double>();
+        for (int i = 0; i < 400; i++)
+        {
+            long sent = Stopwatch.GetTimestamp();
+            await host.SendAsync(RawHost.Command("@00MS"));
+            (string _, long first, long _) = await host.ReadFrameTimedAsync();
+            TimeSpan waited = Stopwatch.GetElapsedTime(sent, first);
+            if (waited < turnaround)
+            {
+                early.Add(waited.TotalMilliseconds);
+            }
+        }
+
+        early.Should().BeEmpty("the simulator waits its whole turnaround before an answer (early answers, ms: {0})", string.Join(", ", early));
+    }
+
+    [Fact]
     public async Task Without_a_baud_rate_answers_are_not_paced()
     {
         await using RawHost host = RawHost.Start();
