@@ -34,6 +34,10 @@ internal sealed class InProcessLine : IAsyncDisposable
                 Interlocked.Increment(ref _sent);
                 OnSend?.Invoke();
             }
+            else
+            {
+                OnReceive?.Invoke();
+            }
         };
     }
 
@@ -54,6 +58,9 @@ internal sealed class InProcessLine : IAsyncDisposable
 
     /// <summary>Called on the client's side as each frame is sent (for example to move a fake clock mid-exchange).</summary>
     public Action? OnSend { get; set; }
+
+    /// <summary>Called on the client's side as each answer frame arrives.</summary>
+    public Action? OnReceive { get; set; }
 
     /// <summary>Frames the client has sent.</summary>
     public int FramesSent => Volatile.Read(ref _sent);
