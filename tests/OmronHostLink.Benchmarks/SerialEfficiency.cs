@@ -140,7 +140,7 @@ internal static class SerialEfficiency
             new SerialLineSettings { PortName = port, BaudRate = baud },
             new HostLinkClientOptions { TurnaroundAllowance = TimeSpan.FromMilliseconds(200) });
         cleanup.Push(client);
-        return Task.FromResult<Func<int, Task>>(words => client.ReadWordsAsync("D0", words).AsTask());
+        return Task.FromResult<Func<int, Task>>(words => client.ReadWordsAsync("D0", words));
     }
 
     private static Task<Func<int, Task>> OpenMinimalAsync(string port, int baud, Stack<IAsyncDisposable> cleanup)

@@ -70,7 +70,7 @@ internal static class WireEfficiency
                     await using var rig = await Rig.StartAsync(baud, TimeSpan.FromMilliseconds(turnaround));
                     foreach (int words in new[] { 1, 30, 100, 1000 })
                     {
-                        Measurement m = await rig.MeasureAsync(runs, c => c.ReadWordsAsync("D0", words).AsTask());
+                        Measurement m = await rig.MeasureAsync(runs, c => c.ReadWordsAsync("D0", words));
                         int expected = ReadPlanner.CModeReadCharacters(PlcArea.Dm, words, out int exchanges);
                         if (m.Characters != expected || m.Exchanges != exchanges)
                         {
@@ -80,7 +80,7 @@ internal static class WireEfficiency
                         Console.WriteLine($"| {baud} 7E2 | {turnaround} ms | {words} | {m.Exchanges} | {m.Characters} | {m.TheoreticalMs:0.00} | {m.MedianMs:0.00} | {m.MinMs:0.00}–{m.MaxMs:0.00} | {m.Efficiency:P1} |");
                     }
 
-                    Measurement one = await rig.MeasureAsync(runs, c => c.ReadWordsAsync("D0", 1000).AsTask());
+                    Measurement one = await rig.MeasureAsync(runs, c => c.ReadWordsAsync("D0", 1000));
                     Measurement split = await rig.MeasureAsync(runs, async c =>
                     {
                         for (int done = 0; done < 1000; done += 30)
@@ -128,7 +128,7 @@ internal static class WireEfficiency
         {
             await using var rig = await Rig.StartAsync(9600, TimeSpan.Zero, protocol);
             ReadPlan plan = new ReadPlanner(protocol, new LineTiming(9600, Bits)).Plan(tags);
-            Measurement planned = await rig.MeasureAsync(runs, c => c.ReadTagsAsync(plan).AsTask());
+            Measurement planned = await rig.MeasureAsync(runs, c => c.ReadTagsAsync(plan));
             Measurement naive = await rig.MeasureAsync(runs, async c =>
             {
                 foreach (PlcTag tag in tags)

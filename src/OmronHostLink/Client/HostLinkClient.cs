@@ -10,7 +10,7 @@ namespace OmronHostLink;
 /// </summary>
 /// <example>
 /// <code>
-/// await using var plc = HostLinkClient.ForSerialPort("/dev/ttyUSB0");
+/// using var plc = HostLinkClient.ForSerialPort("/dev/ttyUSB0");  // or await using; VB: Using plc = ...
 /// ushort[] dm = await plc.ReadWordsAsync("D100", 10);
 /// await plc.WriteWordAsync("D200", 1234);
 /// PlcStatus status = await plc.ReadStatusAsync();
@@ -75,9 +75,17 @@ public sealed class HostLinkClient : HostLinkUnit, IHostLinkClient
     }
 
     /// <summary>
-    /// Closes the link: waits for the exchange in progress, stops reading and closes the transport. The client is
-    /// <see cref="IAsyncDisposable"/> only (use <c>await using</c>): closing waits for I/O, and a blocking
-    /// <c>Dispose</c> would have to wait on it synchronously.
+    /// Closes the link gracefully: waits for the exchange in progress to finish, stops reading and closes the
+    /// transport. Idempotent, and harmless after <see cref="Dispose"/>.
     /// </summary>
     public ValueTask DisposeAsync() => Connection.DisposeAsync();
+
+    /// <summary>
+    /// Closes the link at once, waiting for nothing (safe on a UI thread, in a VB <c>Using</c> block or a C# 7.3
+    /// <c>using</c> statement): the port or socket is closed synchronously, an exchange in progress fails promptly with
+    /// a <see cref="HostLinkConnectionException"/> whose inner exception is an <see cref="ObjectDisposedException"/>,
+    /// and every later call throws <see cref="ObjectDisposedException"/>. Idempotent; either order with
+    /// <see cref="DisposeAsync"/> is fine.
+    /// </summary>
+    public void Dispose() => Connection.Dispose();
 }

@@ -14,7 +14,7 @@ public partial class HostLinkUnit
     /// beyond one answer frame's bits).
     /// </summary>
     /// <exception cref="ArgumentException">The address names a word of a word area, or the range does not fit the area or the protocol (nothing is sent).</exception>
-    public async ValueTask<bool[]> ReadBitsAsync(PlcAddress address, int count, CancellationToken cancellationToken = default)
+    public async Task<bool[]> ReadBitsAsync(PlcAddress address, int count, CancellationToken cancellationToken = default)
     {
         Guard.InRange(count, 1, 10000, nameof(count));
         if (address.Area is PlcArea.Timer or PlcArea.Counter)
@@ -41,7 +41,7 @@ public partial class HostLinkUnit
     /// one write of them back, so anything the PLC program writes to those words in between is lost.
     /// </summary>
     /// <exception cref="ArgumentException">The address names a word, or the range does not fit the area or the protocol (nothing is sent).</exception>
-    public async ValueTask WriteBitsAsync(PlcAddress address, ReadOnlyMemory<bool> values, CancellationToken cancellationToken = default)
+    public async Task WriteBitsAsync(PlcAddress address, ReadOnlyMemory<bool> values, CancellationToken cancellationToken = default)
     {
         EnsureBitAddress(address);
         Guard.InRange(values.Length, 1, 10000, nameof(values));

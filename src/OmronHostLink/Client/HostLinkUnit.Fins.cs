@@ -9,27 +9,27 @@ namespace OmronHostLink;
 public partial class HostLinkUnit
 {
     /// <summary>Reads the CPU Unit's model and version (FINS 0501).</summary>
-    public ValueTask<FinsCpuUnitData> ReadCpuUnitDataAsync(CancellationToken cancellationToken = default)
-        => FinsAsync(new CpuUnitDataReadCommand(), 160, CommandEffect.ReadOnly, static (data, _) => FinsCpuUnitData.Read(data), 0, cancellationToken);
+    public Task<FinsCpuUnitData> ReadCpuUnitDataAsync(CancellationToken cancellationToken = default)
+        => FinsAsync(new CpuUnitDataReadCommand(), 160, CommandEffect.ReadOnly, static (data, _) => FinsCpuUnitData.Read(data), 0, cancellationToken).AsTask();
 
     /// <summary>Reads the CPU Unit's status, mode, error flags and error message (FINS 0601).</summary>
-    public ValueTask<FinsCpuStatus> ReadCpuStatusAsync(CancellationToken cancellationToken = default)
-        => FinsAsync(new CpuUnitStatusReadCommand(), FinsCpuStatus.Length, CommandEffect.ReadOnly, static (data, _) => FinsCpuStatus.Read(data), 0, cancellationToken);
+    public Task<FinsCpuStatus> ReadCpuStatusAsync(CancellationToken cancellationToken = default)
+        => FinsAsync(new CpuUnitStatusReadCommand(), FinsCpuStatus.Length, CommandEffect.ReadOnly, static (data, _) => FinsCpuStatus.Read(data), 0, cancellationToken).AsTask();
 
     /// <summary>Reads the average, longest and shortest cycle times (FINS 0620); <paramref name="initialize"/> restarts the measurement instead.</summary>
-    public ValueTask<FinsCycleTime?> ReadCycleTimeAsync(bool initialize = false, CancellationToken cancellationToken = default)
-        => FinsAsync(new CycleTimeReadCommand(initialize), 12, initialize ? CommandEffect.NotRepeatable : CommandEffect.ReadOnly, static (data, init) => init ? null : FinsCycleTime.Read(data), initialize, cancellationToken);
+    public Task<FinsCycleTime?> ReadCycleTimeAsync(bool initialize = false, CancellationToken cancellationToken = default)
+        => FinsAsync(new CycleTimeReadCommand(initialize), 12, initialize ? CommandEffect.NotRepeatable : CommandEffect.ReadOnly, static (data, init) => init ? null : FinsCycleTime.Read(data), initialize, cancellationToken).AsTask();
 
     /// <summary>Reads the PLC's clock (FINS 0701).</summary>
-    public ValueTask<FinsClock> ReadClockAsync(CancellationToken cancellationToken = default)
-        => FinsAsync(new ClockReadCommand(), FinsClock.Length, CommandEffect.ReadOnly, static (data, _) => FinsClock.Read(data), 0, cancellationToken);
+    public Task<FinsClock> ReadClockAsync(CancellationToken cancellationToken = default)
+        => FinsAsync(new ClockReadCommand(), FinsClock.Length, CommandEffect.ReadOnly, static (data, _) => FinsClock.Read(data), 0, cancellationToken).AsTask();
 
     /// <summary>Sets the PLC's clock (FINS 0702), seconds and day of week included.</summary>
-    public async ValueTask WriteClockAsync(DateTime time, CancellationToken cancellationToken = default)
+    public async Task WriteClockAsync(DateTime time, CancellationToken cancellationToken = default)
         => await FinsAsync(new ClockWriteCommand(time, includeSecond: true, time.DayOfWeek), 0, CommandEffect.NotRepeatable, ExpectNoData, "0702", cancellationToken).ConfigureAwait(false);
 
     /// <summary>Starts the program in MONITOR or RUN mode (FINS 0401).</summary>
-    public async ValueTask RunAsync(PlcMode mode = PlcMode.Monitor, CancellationToken cancellationToken = default)
+    public async Task RunAsync(PlcMode mode = PlcMode.Monitor, CancellationToken cancellationToken = default)
     {
         if (mode == PlcMode.Program)
         {
@@ -41,22 +41,22 @@ public partial class HostLinkUnit
     }
 
     /// <summary>Stops the program: PROGRAM mode (FINS 0402).</summary>
-    public async ValueTask StopAsync(CancellationToken cancellationToken = default)
+    public async Task StopAsync(CancellationToken cancellationToken = default)
         => await FinsAsync(new StopCommand(), 0, CommandEffect.NotRepeatable, ExpectNoData, "0402", cancellationToken).ConfigureAwait(false);
 
     /// <summary>Clears one error, or all with the default <c>FFFF</c> (FINS 2101).</summary>
-    public async ValueTask ClearErrorsAsync(ushort errorCode = ErrorClearCommand.AllErrors, CancellationToken cancellationToken = default)
+    public async Task ClearErrorsAsync(ushort errorCode = ErrorClearCommand.AllErrors, CancellationToken cancellationToken = default)
         => await FinsAsync(new ErrorClearCommand(errorCode), 0, CommandEffect.NotRepeatable, ExpectNoData, "2101", cancellationToken).ConfigureAwait(false);
 
     /// <summary>Reads error log records (FINS 2102), up to 53 in one exchange.</summary>
-    public ValueTask<FinsErrorLog> ReadErrorLogAsync(int firstRecord = 0, int count = 20, CancellationToken cancellationToken = default)
+    public Task<FinsErrorLog> ReadErrorLogAsync(int firstRecord = 0, int count = 20, CancellationToken cancellationToken = default)
     {
         var command = new ErrorLogReadCommand(firstRecord, count);
-        return FinsAsync(command, 6 + (count * FinsErrorLogRecord.Length), CommandEffect.ReadOnly, static (data, _) => FinsErrorLog.Read(data), 0, cancellationToken);
+        return FinsAsync(command, 6 + (count * FinsErrorLogRecord.Length), CommandEffect.ReadOnly, static (data, _) => FinsErrorLog.Read(data), 0, cancellationToken).AsTask();
     }
 
     /// <summary>Writes <paramref name="value"/> to <paramref name="count"/> words (FINS 0103).</summary>
-    public async ValueTask FillAsync(string address, int count, ushort value, CancellationToken cancellationToken = default)
+    public async Task FillAsync(string address, int count, ushort value, CancellationToken cancellationToken = default)
     {
         PlcAddress a = PlcAddress.Parse(address).AsWord();
         a.EnsureRange(count, HostLinkCommandSet.Fins, forWrite: true);
@@ -64,7 +64,7 @@ public partial class HostLinkUnit
     }
 
     /// <summary>Copies <paramref name="count"/> words inside the PLC (FINS 0105).</summary>
-    public async ValueTask TransferAsync(string source, string destination, int count, CancellationToken cancellationToken = default)
+    public async Task TransferAsync(string source, string destination, int count, CancellationToken cancellationToken = default)
     {
         PlcAddress from = PlcAddress.Parse(source).AsWord();
         PlcAddress to = PlcAddress.Parse(destination).AsWord();
@@ -80,7 +80,7 @@ public partial class HostLinkUnit
     /// only, at most 135 addresses, FINS whatever this view's command set; for typed tags planned into the fewest
     /// exchanges, see <see cref="ReadTagsAsync(IReadOnlyList{Planning.PlcTag}, CancellationToken)"/>.
     /// </summary>
-    public async ValueTask<ushort[]> ReadScatteredAsync(IReadOnlyList<string> addresses, CancellationToken cancellationToken = default)
+    public async Task<ushort[]> ReadScatteredAsync(IReadOnlyList<string> addresses, CancellationToken cancellationToken = default)
     {
         Guard.NotNull(addresses);
         var items = new FinsMemoryAddress[addresses.Count];
@@ -97,7 +97,7 @@ public partial class HostLinkUnit
     }
 
     /// <summary>Force-sets, force-resets or releases one bit (FINS 2301).</summary>
-    public async ValueTask ForceBitAsync(string address, FinsForceAction action, CancellationToken cancellationToken = default)
+    public async Task ForceBitAsync(string address, FinsForceAction action, CancellationToken cancellationToken = default)
     {
         PlcAddress a = PlcAddress.Parse(address);
         if (!a.IsBit && a.Area is not (PlcArea.Timer or PlcArea.Counter))
@@ -109,12 +109,12 @@ public partial class HostLinkUnit
     }
 
     /// <summary>Releases every forced bit (FINS 2302).</summary>
-    public async ValueTask CancelForcedBitsAsync(CancellationToken cancellationToken = default)
+    public async Task CancelForcedBitsAsync(CancellationToken cancellationToken = default)
         => await FinsAsync(new ForcedSetResetCancelCommand(), 0, CommandEffect.NotRepeatable, ExpectNoData, "2302", cancellationToken).ConfigureAwait(false);
 
     // ---- Used by the protocol-neutral members ----
 
-    private async ValueTask<ushort[]> FinsReadWordsAsync(PlcAddress address, int count, CancellationToken cancellationToken)
+    private async Task<ushort[]> FinsReadWordsAsync(PlcAddress address, int count, CancellationToken cancellationToken)
     {
         // Beyond one command's limit the read is split into the fewest commands; the words are then not one snapshot.
         var words = new ushort[count];
@@ -139,7 +139,7 @@ public partial class HostLinkUnit
         return words;
     }
 
-    private async ValueTask FinsWriteWordsAsync(PlcAddress address, ReadOnlyMemory<ushort> words, CancellationToken cancellationToken)
+    private async Task FinsWriteWordsAsync(PlcAddress address, ReadOnlyMemory<ushort> words, CancellationToken cancellationToken)
     {
         for (int done = 0; done < words.Length;)
         {
@@ -178,7 +178,7 @@ public partial class HostLinkUnit
         return flags;
     }
 
-    private async ValueTask<PlcStatus> FinsReadStatusAsync(CancellationToken cancellationToken)
+    private async Task<PlcStatus> FinsReadStatusAsync(CancellationToken cancellationToken)
     {
         FinsCpuStatus status = await ReadCpuStatusAsync(cancellationToken).ConfigureAwait(false);
         PlcMode mode = status.Mode switch

@@ -49,7 +49,7 @@ public partial class HostLinkUnit
     /// <exception cref="NotSupportedException"><typeparamref name="T"/> is not one of the supported types (nothing is sent).</exception>
     /// <exception cref="FormatException">The address is not valid (nothing is sent), or the words read are not BCD for a BCD type.</exception>
     /// <exception cref="ArgumentException">The address does not suit the type (a bit address for a number, a word address for a bool) or the words run past the area (nothing is sent).</exception>
-    public async ValueTask<T> ReadAsync<T>(string address, CancellationToken cancellationToken = default)
+    public async Task<T> ReadAsync<T>(string address, CancellationToken cancellationToken = default)
         where T : struct
     {
         PlcValueType type = PlcTypeInfo<T>.Get(nameof(ReadAsync));
@@ -69,7 +69,7 @@ public partial class HostLinkUnit
     /// <exception cref="NotSupportedException"><typeparamref name="T"/> is not one of the supported types (nothing is sent).</exception>
     /// <exception cref="FormatException">The address is not valid (nothing is sent), or the words read are not BCD for a BCD type.</exception>
     /// <exception cref="ArgumentException">The address does not suit the type, or the values run past the area or the command set's reach (nothing is sent).</exception>
-    public async ValueTask<T[]> ReadAsync<T>(string address, int count, CancellationToken cancellationToken = default)
+    public async Task<T[]> ReadAsync<T>(string address, int count, CancellationToken cancellationToken = default)
         where T : struct
     {
         PlcValueType type = PlcTypeInfo<T>.Get(nameof(ReadAsync));
@@ -91,7 +91,7 @@ public partial class HostLinkUnit
     /// <exception cref="NotSupportedException"><typeparamref name="T"/> is not one of the supported types (nothing is sent).</exception>
     /// <exception cref="ArgumentException">The address does not suit the type, or the words run past the area (nothing is sent).</exception>
     /// <exception cref="HostLinkEndCodeException">The PLC refused the write (for example: C-mode writes in RUN mode).</exception>
-    public ValueTask WriteAsync<T>(string address, T value, CancellationToken cancellationToken = default)
+    public Task WriteAsync<T>(string address, T value, CancellationToken cancellationToken = default)
         where T : struct
     {
         PlcValueType type = PlcTypeInfo<T>.Get(nameof(WriteAsync));
@@ -99,7 +99,7 @@ public partial class HostLinkUnit
     }
 
     /// <inheritdoc cref="WriteAsync{T}(string, ReadOnlyMemory{T}, CancellationToken)"/>
-    public ValueTask WriteAsync<T>(string address, T[] values, CancellationToken cancellationToken = default)
+    public Task WriteAsync<T>(string address, T[] values, CancellationToken cancellationToken = default)
         where T : struct
         => WriteAsync(address, new ReadOnlyMemory<T>(Guard.NotNull(values)), cancellationToken);
 
@@ -115,7 +115,7 @@ public partial class HostLinkUnit
     /// <exception cref="NotSupportedException"><typeparamref name="T"/> is not one of the supported types (nothing is sent).</exception>
     /// <exception cref="ArgumentException">No values, the address does not suit the type, or the values run past the area (nothing is sent).</exception>
     /// <exception cref="HostLinkEndCodeException">The PLC refused the write.</exception>
-    public ValueTask WriteAsync<T>(string address, ReadOnlyMemory<T> values, CancellationToken cancellationToken = default)
+    public Task WriteAsync<T>(string address, ReadOnlyMemory<T> values, CancellationToken cancellationToken = default)
         where T : struct
     {
         PlcValueType type = PlcTypeInfo<T>.Get(nameof(WriteAsync));
@@ -151,7 +151,7 @@ public partial class HostLinkUnit
         return PlcValueCodec.DecodeValues(type, words, count, Options.WordOrder);
     }
 
-    private async ValueTask WriteValuesAsync(PlcAddress address, PlcValueType type, PlcValue[] values, string typeName, CancellationToken cancellationToken)
+    private async Task WriteValuesAsync(PlcAddress address, PlcValueType type, PlcValue[] values, string typeName, CancellationToken cancellationToken)
     {
         if (values.Length == 0)
         {

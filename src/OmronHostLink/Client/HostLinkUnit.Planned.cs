@@ -18,7 +18,7 @@ public partial class HostLinkUnit
     /// <param name="cancellationToken">Cancels the reads.</param>
     /// <returns>One value per tag, in the order of <paramref name="tags"/>.</returns>
     /// <exception cref="ArgumentException">A tag cannot be read with this view's command set (nothing is sent).</exception>
-    public ValueTask<PlcTagValue[]> ReadTagsAsync(IReadOnlyList<PlcTag> tags, CancellationToken cancellationToken = default)
+    public Task<PlcTagValue[]> ReadTagsAsync(IReadOnlyList<PlcTag> tags, CancellationToken cancellationToken = default)
         => ReadTagsAsync(Plan(tags), cancellationToken);
 
     /// <summary>
@@ -30,7 +30,7 @@ public partial class HostLinkUnit
     /// <returns>One value per tag, in the order of <paramref name="tags"/>.</returns>
     /// <exception cref="FormatException">A text is not a tag (nothing is sent).</exception>
     /// <exception cref="ArgumentException">A tag cannot be read with this view's command set (nothing is sent).</exception>
-    public ValueTask<PlcTagValue[]> ReadTagsAsync(IReadOnlyList<string> tags, CancellationToken cancellationToken = default)
+    public Task<PlcTagValue[]> ReadTagsAsync(IReadOnlyList<string> tags, CancellationToken cancellationToken = default)
     {
         Guard.NotNull(tags);
         var parsed = new PlcTag[tags.Count];
@@ -49,7 +49,7 @@ public partial class HostLinkUnit
     /// <param name="plan">The plan.</param>
     /// <param name="cancellationToken">Cancels the reads.</param>
     /// <returns>One value per tag of the plan, in its order.</returns>
-    public async ValueTask<PlcTagValue[]> ReadTagsAsync(ReadPlan plan, CancellationToken cancellationToken = default)
+    public async Task<PlcTagValue[]> ReadTagsAsync(ReadPlan plan, CancellationToken cancellationToken = default)
     {
         Guard.NotNull(plan);
         var results = new ushort[plan.Reads.Count][];
@@ -79,7 +79,7 @@ public partial class HostLinkUnit
                 return FlagWordsAsync(FinsReadCompletionFlagsAsync(read.Start, read.Count, cancellationToken));
             case PlannedReadKind.FinsArea:
                 read.Start.EnsureRange(read.Count, HostLinkCommandSet.Fins, forWrite: false);
-                return FinsReadWordsAsync(read.Start, read.Count, cancellationToken);
+                return new ValueTask<ushort[]>(FinsReadWordsAsync(read.Start, read.Count, cancellationToken));
             default:
                 read.Start.EnsureRange(read.Count, HostLinkCommandSet.CMode, forWrite: false);
                 return CModeReadWordsAsync(read.Start, read.Count, cancellationToken);

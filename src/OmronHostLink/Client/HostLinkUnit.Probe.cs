@@ -15,7 +15,7 @@ public partial class HostLinkUnit
     /// <returns>The round-trip time, or null when the unit did not answer in time.</returns>
     /// <exception cref="ArgumentOutOfRangeException">The turnaround is not more than 0 and at most 1 minute.</exception>
     /// <exception cref="HostLinkConnectionException">The port or connection cannot be opened, or was lost.</exception>
-    public ValueTask<TimeSpan?> ProbeAsync(TimeSpan? turnaround = null, CancellationToken cancellationToken = default)
+    public Task<TimeSpan?> ProbeAsync(TimeSpan? turnaround = null, CancellationToken cancellationToken = default)
     {
         TimeSpan wait = turnaround ?? Options.TurnaroundAllowance;
         if (wait <= TimeSpan.Zero || wait > TimeSpan.FromMinutes(1))
@@ -23,6 +23,6 @@ public partial class HostLinkUnit
             throw new ArgumentOutOfRangeException(nameof(turnaround), wait, "The turnaround must be more than 0 and at most 1 minute.");
         }
 
-        return Connection.ProbeAsync(UnitNumber, wait, cancellationToken);
+        return Connection.ProbeAsync(UnitNumber, wait, cancellationToken).AsTask();
     }
 }

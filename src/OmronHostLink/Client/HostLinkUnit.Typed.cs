@@ -4,76 +4,76 @@ namespace OmronHostLink;
 public partial class HostLinkUnit
 {
     /// <summary>Reads a signed 16-bit value (INT); the same as <c>ReadAsync&lt;short&gt;</c>.</summary>
-    public ValueTask<short> ReadInt16Async(string address, CancellationToken cancellationToken = default)
+    public Task<short> ReadInt16Async(string address, CancellationToken cancellationToken = default)
         => ReadAsync<short>(address, cancellationToken);
 
     /// <summary>Reads an unsigned 16-bit value (UINT); the same as <c>ReadAsync&lt;ushort&gt;</c>.</summary>
-    public ValueTask<ushort> ReadUInt16Async(string address, CancellationToken cancellationToken = default)
+    public Task<ushort> ReadUInt16Async(string address, CancellationToken cancellationToken = default)
         => ReadAsync<ushort>(address, cancellationToken);
 
     /// <summary>Reads a signed 32-bit value (DINT) from two words in <see cref="WordOrder"/>; the same as <c>ReadAsync&lt;int&gt;</c>.</summary>
-    public ValueTask<int> ReadInt32Async(string address, CancellationToken cancellationToken = default)
+    public Task<int> ReadInt32Async(string address, CancellationToken cancellationToken = default)
         => ReadAsync<int>(address, cancellationToken);
 
     /// <summary>Reads an unsigned 32-bit value (UDINT) from two words; the same as <c>ReadAsync&lt;uint&gt;</c>.</summary>
-    public ValueTask<uint> ReadUInt32Async(string address, CancellationToken cancellationToken = default)
+    public Task<uint> ReadUInt32Async(string address, CancellationToken cancellationToken = default)
         => ReadAsync<uint>(address, cancellationToken);
 
     /// <summary>Reads an IEEE 754 single (REAL) from two words; the same as <c>ReadAsync&lt;float&gt;</c>.</summary>
-    public ValueTask<float> ReadSingleAsync(string address, CancellationToken cancellationToken = default)
+    public Task<float> ReadSingleAsync(string address, CancellationToken cancellationToken = default)
         => ReadAsync<float>(address, cancellationToken);
 
     /// <summary>Reads a 4-digit BCD word (0-9999); the same as <c>ReadAsync&lt;Bcd16&gt;</c>.</summary>
     /// <exception cref="FormatException">The word holds a nibble above 9: it is not BCD.</exception>
-    public async ValueTask<int> ReadBcdAsync(string address, CancellationToken cancellationToken = default)
+    public async Task<int> ReadBcdAsync(string address, CancellationToken cancellationToken = default)
         => (await ReadAsync<Bcd16>(address, cancellationToken).ConfigureAwait(false)).Value;
 
     /// <summary>Reads ASCII text stored two characters a word, high byte first, up to <paramref name="length"/> characters or the first NUL.</summary>
-    public async ValueTask<string> ReadStringAsync(string address, int length, CancellationToken cancellationToken = default)
+    public async Task<string> ReadStringAsync(string address, int length, CancellationToken cancellationToken = default)
     {
         Guard.InRange(length, 1, 20000);
         return PlcWords.ReadString(await ReadWordsAsync(address, PlcWords.WordsForString(length), cancellationToken).ConfigureAwait(false));
     }
 
     /// <summary>Writes a signed 16-bit value (INT).</summary>
-    public ValueTask WriteInt16Async(string address, short value, CancellationToken cancellationToken = default)
+    public Task WriteInt16Async(string address, short value, CancellationToken cancellationToken = default)
         => WriteAsync(address, value, cancellationToken);
 
     /// <summary>Writes an unsigned 16-bit value (UINT).</summary>
-    public ValueTask WriteUInt16Async(string address, ushort value, CancellationToken cancellationToken = default)
+    public Task WriteUInt16Async(string address, ushort value, CancellationToken cancellationToken = default)
         => WriteAsync(address, value, cancellationToken);
 
     /// <summary>Writes a signed 32-bit value (DINT) to two words in <see cref="WordOrder"/>.</summary>
-    public ValueTask WriteInt32Async(string address, int value, CancellationToken cancellationToken = default)
+    public Task WriteInt32Async(string address, int value, CancellationToken cancellationToken = default)
         => WriteAsync(address, value, cancellationToken);
 
     /// <summary>Writes an unsigned 32-bit value (UDINT) to two words.</summary>
-    public ValueTask WriteUInt32Async(string address, uint value, CancellationToken cancellationToken = default)
+    public Task WriteUInt32Async(string address, uint value, CancellationToken cancellationToken = default)
         => WriteAsync(address, value, cancellationToken);
 
     /// <summary>Writes an IEEE 754 single (REAL) to two words.</summary>
-    public ValueTask WriteSingleAsync(string address, float value, CancellationToken cancellationToken = default)
+    public Task WriteSingleAsync(string address, float value, CancellationToken cancellationToken = default)
         => WriteAsync(address, value, cancellationToken);
 
     /// <summary>Writes a value 0-9999 as a 4-digit BCD word; the same as <c>WriteAsync(address, new Bcd16(value))</c>.</summary>
     /// <exception cref="ArgumentOutOfRangeException">The value is outside 0-9999 (nothing is sent).</exception>
-    public ValueTask WriteBcdAsync(string address, int value, CancellationToken cancellationToken = default)
+    public Task WriteBcdAsync(string address, int value, CancellationToken cancellationToken = default)
         => WriteAsync(address, new Bcd16(value), cancellationToken);
 
     /// <summary>Writes ASCII text two characters a word, high byte first (an odd length is padded with NUL).</summary>
     /// <exception cref="ArgumentException">The text holds a character outside ASCII (nothing is sent).</exception>
-    public ValueTask WriteStringAsync(string address, string text, CancellationToken cancellationToken = default)
+    public Task WriteStringAsync(string address, string text, CancellationToken cancellationToken = default)
         => WriteWordsAsync(address, PlcWords.FromString(text), cancellationToken);
 
     /// <summary>
     /// Reads one bit: <c>CIO100.05</c>, <c>W30.06</c>, <c>D100.15</c>, or a timer/counter completion flag (<c>T5</c>, <c>C7</c>).
     /// </summary>
     /// <exception cref="ArgumentException">The address names a word, not a bit.</exception>
-    public ValueTask<bool> ReadBitAsync(string address, CancellationToken cancellationToken = default)
+    public Task<bool> ReadBitAsync(string address, CancellationToken cancellationToken = default)
         => ReadBitAsync(PlcAddress.Parse(address), cancellationToken);
 
     /// <inheritdoc cref="ReadBitAsync(string, CancellationToken)"/>
-    public async ValueTask<bool> ReadBitAsync(PlcAddress address, CancellationToken cancellationToken = default)
+    public async Task<bool> ReadBitAsync(PlcAddress address, CancellationToken cancellationToken = default)
     {
         if (address.Area is PlcArea.Timer or PlcArea.Counter)
         {
@@ -95,11 +95,11 @@ public partial class HostLinkUnit
     /// back instead: anything the PLC program writes to that word in between is lost.
     /// </summary>
     /// <exception cref="ArgumentException">The address names a word, not a bit.</exception>
-    public ValueTask WriteBitAsync(string address, bool value, CancellationToken cancellationToken = default)
+    public Task WriteBitAsync(string address, bool value, CancellationToken cancellationToken = default)
         => WriteBitAsync(PlcAddress.Parse(address), value, cancellationToken);
 
     /// <inheritdoc cref="WriteBitAsync(string, bool, CancellationToken)"/>
-    public async ValueTask WriteBitAsync(PlcAddress address, bool value, CancellationToken cancellationToken = default)
+    public async Task WriteBitAsync(PlcAddress address, bool value, CancellationToken cancellationToken = default)
     {
         if (!address.IsBit)
         {

@@ -56,21 +56,21 @@ public partial class HostLinkUnit
     /// </summary>
     /// <exception cref="FormatException">The address is not valid.</exception>
     /// <exception cref="ArgumentException">The range does not fit the area or the protocol (nothing is sent).</exception>
-    public ValueTask<ushort[]> ReadWordsAsync(string address, int count, CancellationToken cancellationToken = default)
+    public Task<ushort[]> ReadWordsAsync(string address, int count, CancellationToken cancellationToken = default)
         => ReadWordsAsync(PlcAddress.Parse(address), count, cancellationToken);
 
     /// <inheritdoc cref="ReadWordsAsync(string, int, CancellationToken)"/>
-    public ValueTask<ushort[]> ReadWordsAsync(PlcAddress address, int count, CancellationToken cancellationToken = default)
+    public Task<ushort[]> ReadWordsAsync(PlcAddress address, int count, CancellationToken cancellationToken = default)
     {
         address = address.AsWord();
         address.EnsureRange(count, Options.CommandSet, forWrite: false);
         return Options.CommandSet == HostLinkCommandSet.Fins
             ? FinsReadWordsAsync(address, count, cancellationToken)
-            : CModeReadWordsAsync(address, count, cancellationToken);
+            : CModeReadWordsAsync(address, count, cancellationToken).AsTask();
     }
 
     /// <summary>Reads one word.</summary>
-    public async ValueTask<ushort> ReadWordAsync(string address, CancellationToken cancellationToken = default)
+    public async Task<ushort> ReadWordAsync(string address, CancellationToken cancellationToken = default)
         => (await ReadWordsAsync(address, 1, cancellationToken).ConfigureAwait(false))[0];
 
     /// <summary>
@@ -78,11 +78,11 @@ public partial class HostLinkUnit
     /// 267 words, what one FA command frame holds). Completes only when the PLC answered end code 00.
     /// </summary>
     /// <exception cref="HostLinkEndCodeException">The PLC refused the write (for example 01: C-mode writes are refused in RUN mode).</exception>
-    public ValueTask WriteWordsAsync(string address, ReadOnlyMemory<ushort> words, CancellationToken cancellationToken = default)
+    public Task WriteWordsAsync(string address, ReadOnlyMemory<ushort> words, CancellationToken cancellationToken = default)
         => WriteWordsAsync(PlcAddress.Parse(address), words, cancellationToken);
 
     /// <inheritdoc cref="WriteWordsAsync(string, ReadOnlyMemory{ushort}, CancellationToken)"/>
-    public ValueTask WriteWordsAsync(PlcAddress address, ReadOnlyMemory<ushort> words, CancellationToken cancellationToken = default)
+    public Task WriteWordsAsync(PlcAddress address, ReadOnlyMemory<ushort> words, CancellationToken cancellationToken = default)
     {
         address = address.AsWord();
         address.EnsureRange(words.Length, Options.CommandSet, forWrite: true);
@@ -92,22 +92,22 @@ public partial class HostLinkUnit
     }
 
     /// <summary>Writes one word.</summary>
-    public ValueTask WriteWordAsync(string address, ushort value, CancellationToken cancellationToken = default)
+    public Task WriteWordAsync(string address, ushort value, CancellationToken cancellationToken = default)
         => WriteWordsAsync(address, new[] { value }, cancellationToken);
 
     // ---- Status, mode, errors, model, test ----
 
     /// <summary>Reads the operating mode, the status word and any FAL/FALS message (C-mode MS; FINS 0601 when the protocol is FINS).</summary>
-    public ValueTask<PlcStatus> ReadStatusAsync(CancellationToken cancellationToken = default)
+    public Task<PlcStatus> ReadStatusAsync(CancellationToken cancellationToken = default)
         => Options.CommandSet == HostLinkCommandSet.Fins
             ? FinsReadStatusAsync(cancellationToken)
-            : CModeAsync(StatusReadCommand.Instance, static (data, _) => CModeResponse.ReadStatus(data), 0, cancellationToken);
+            : CModeAsync(StatusReadCommand.Instance, static (data, _) => CModeResponse.ReadStatus(data), 0, cancellationToken).AsTask();
 
     /// <summary>
     /// Changes the operating mode (C-mode SC; FINS 0401/0402 when the protocol is FINS). Leaving RUN or MONITOR stops
     /// the machine's program: callers decide that, not the library.
     /// </summary>
-    public async ValueTask SetModeAsync(PlcMode mode, CancellationToken cancellationToken = default)
+    public async Task SetModeAsync(PlcMode mode, CancellationToken cancellationToken = default)
     {
         if (Options.CommandSet == HostLinkCommandSet.Fins)
         {
@@ -119,18 +119,18 @@ public partial class HostLinkUnit
     }
 
     /// <summary>Reads the error information (MF), clearing the errors afterwards when <paramref name="clear"/> is true.</summary>
-    public ValueTask<PlcErrorInfo> ReadErrorsAsync(bool clear = false, CancellationToken cancellationToken = default)
-        => CModeAsync(new ErrorReadCommand(clear), static (data, _) => CModeResponse.ReadErrors(data), 0, cancellationToken);
+    public Task<PlcErrorInfo> ReadErrorsAsync(bool clear = false, CancellationToken cancellationToken = default)
+        => CModeAsync(new ErrorReadCommand(clear), static (data, _) => CModeResponse.ReadErrors(data), 0, cancellationToken).AsTask();
 
     /// <summary>Reads the PLC model code (MM).</summary>
-    public ValueTask<PlcModel> ReadModelAsync(CancellationToken cancellationToken = default)
-        => CModeAsync(ModelReadCommand.Instance, static (data, _) => CModeResponse.ReadModel(data), 0, cancellationToken);
+    public Task<PlcModel> ReadModelAsync(CancellationToken cancellationToken = default)
+        => CModeAsync(ModelReadCommand.Instance, static (data, _) => CModeResponse.ReadModel(data), 0, cancellationToken).AsTask();
 
     /// <summary>
     /// Sends TS (TEST) with <paramref name="text"/> and checks that the PLC echoes it unchanged. Returns the round-trip time.
     /// </summary>
     /// <exception cref="ArgumentException">The text is over 122 characters or holds characters that cannot travel in a frame.</exception>
-    public async ValueTask<TimeSpan> TestAsync(string text = "OMRONHOSTLINK", CancellationToken cancellationToken = default)
+    public async Task<TimeSpan> TestAsync(string text = "OMRONHOSTLINK", CancellationToken cancellationToken = default)
     {
         var command = new TestCommand(text);
         byte[] sent = Encoding.ASCII.GetBytes(text);
@@ -149,12 +149,12 @@ public partial class HostLinkUnit
     }
 
     /// <summary>Sends XZ (ABORT) to this unit: it drops the exchange it is in. The PLC sends no answer.</summary>
-    public async ValueTask AbortAsync(CancellationToken cancellationToken = default)
+    public async Task AbortAsync(CancellationToken cancellationToken = default)
         => await Connection.ExecuteAsync(Request(AbortCommand.Instance), RetriesFor(AbortCommand.Instance.Effect), static (_, _) => true, 0, cancellationToken).ConfigureAwait(false);
 
     /// <summary>Sends <c>@**</c> (INITIALIZE): every unit on the line resets its Host Link transmission control. No answer.</summary>
-    public ValueTask InitializeAsync(CancellationToken cancellationToken = default)
-        => Connection.InitializeAsync(cancellationToken);
+    public Task InitializeAsync(CancellationToken cancellationToken = default)
+        => Connection.InitializeAsync(cancellationToken).AsTask();
 
     // ---- C-mode plumbing ----
 
@@ -211,7 +211,7 @@ public partial class HostLinkUnit
         }
     }
 
-    private async ValueTask CModeWriteWordsAsync(PlcAddress address, ReadOnlyMemory<ushort> words, CancellationToken cancellationToken)
+    private async Task CModeWriteWordsAsync(PlcAddress address, ReadOnlyMemory<ushort> words, CancellationToken cancellationToken)
     {
         (CModeArea area, int begin) = CModeAddressing.Map(address);
         var command = new AreaWriteCommand(area, begin, words.Span, address.Bank);

@@ -36,51 +36,51 @@ public interface IHostLinkUnit
     IHostLinkUnit WithWordOrder(WordOrder order);
 
     /// <inheritdoc cref="HostLinkUnit.ReadWordsAsync(string, int, CancellationToken)"/>
-    ValueTask<ushort[]> ReadWordsAsync(string address, int count, CancellationToken cancellationToken = default);
+    Task<ushort[]> ReadWordsAsync(string address, int count, CancellationToken cancellationToken = default);
 
     /// <inheritdoc cref="HostLinkUnit.WriteWordsAsync(string, ReadOnlyMemory{ushort}, CancellationToken)"/>
-    ValueTask WriteWordsAsync(string address, ReadOnlyMemory<ushort> words, CancellationToken cancellationToken = default);
+    Task WriteWordsAsync(string address, ReadOnlyMemory<ushort> words, CancellationToken cancellationToken = default);
 
     /// <inheritdoc cref="HostLinkUnit.ReadAsync{T}(string, CancellationToken)"/>
-    ValueTask<T> ReadAsync<T>(string address, CancellationToken cancellationToken = default)
+    Task<T> ReadAsync<T>(string address, CancellationToken cancellationToken = default)
         where T : struct;
 
     /// <inheritdoc cref="HostLinkUnit.ReadAsync{T}(string, int, CancellationToken)"/>
-    ValueTask<T[]> ReadAsync<T>(string address, int count, CancellationToken cancellationToken = default)
+    Task<T[]> ReadAsync<T>(string address, int count, CancellationToken cancellationToken = default)
         where T : struct;
 
     /// <inheritdoc cref="HostLinkUnit.WriteAsync{T}(string, T, CancellationToken)"/>
-    ValueTask WriteAsync<T>(string address, T value, CancellationToken cancellationToken = default)
+    Task WriteAsync<T>(string address, T value, CancellationToken cancellationToken = default)
         where T : struct;
 
     /// <inheritdoc cref="HostLinkUnit.WriteAsync{T}(string, T[], CancellationToken)"/>
-    ValueTask WriteAsync<T>(string address, T[] values, CancellationToken cancellationToken = default)
+    Task WriteAsync<T>(string address, T[] values, CancellationToken cancellationToken = default)
         where T : struct;
 
     /// <inheritdoc cref="HostLinkUnit.WriteAsync{T}(string, ReadOnlyMemory{T}, CancellationToken)"/>
-    ValueTask WriteAsync<T>(string address, ReadOnlyMemory<T> values, CancellationToken cancellationToken = default)
+    Task WriteAsync<T>(string address, ReadOnlyMemory<T> values, CancellationToken cancellationToken = default)
         where T : struct;
 
     /// <inheritdoc cref="HostLinkUnit.ReadBitAsync(string, CancellationToken)"/>
-    ValueTask<bool> ReadBitAsync(string address, CancellationToken cancellationToken = default);
+    Task<bool> ReadBitAsync(string address, CancellationToken cancellationToken = default);
 
     /// <inheritdoc cref="HostLinkUnit.WriteBitAsync(string, bool, CancellationToken)"/>
-    ValueTask WriteBitAsync(string address, bool value, CancellationToken cancellationToken = default);
+    Task WriteBitAsync(string address, bool value, CancellationToken cancellationToken = default);
 
     /// <inheritdoc cref="HostLinkUnit.ReadStringAsync(string, int, CancellationToken)"/>
-    ValueTask<string> ReadStringAsync(string address, int length, CancellationToken cancellationToken = default);
+    Task<string> ReadStringAsync(string address, int length, CancellationToken cancellationToken = default);
 
     /// <inheritdoc cref="HostLinkUnit.WriteStringAsync(string, string, CancellationToken)"/>
-    ValueTask WriteStringAsync(string address, string text, CancellationToken cancellationToken = default);
+    Task WriteStringAsync(string address, string text, CancellationToken cancellationToken = default);
 
     /// <inheritdoc cref="HostLinkUnit.ReadTagsAsync(IReadOnlyList{PlcTag}, CancellationToken)"/>
-    ValueTask<PlcTagValue[]> ReadTagsAsync(IReadOnlyList<PlcTag> tags, CancellationToken cancellationToken = default);
+    Task<PlcTagValue[]> ReadTagsAsync(IReadOnlyList<PlcTag> tags, CancellationToken cancellationToken = default);
 
     /// <inheritdoc cref="HostLinkUnit.ReadTagsAsync(IReadOnlyList{string}, CancellationToken)"/>
-    ValueTask<PlcTagValue[]> ReadTagsAsync(IReadOnlyList<string> tags, CancellationToken cancellationToken = default);
+    Task<PlcTagValue[]> ReadTagsAsync(IReadOnlyList<string> tags, CancellationToken cancellationToken = default);
 
     /// <inheritdoc cref="HostLinkUnit.ReadTagsAsync(ReadPlan, CancellationToken)"/>
-    ValueTask<PlcTagValue[]> ReadTagsAsync(ReadPlan plan, CancellationToken cancellationToken = default);
+    Task<PlcTagValue[]> ReadTagsAsync(ReadPlan plan, CancellationToken cancellationToken = default);
 
     /// <inheritdoc cref="HostLinkUnit.WatchAsync(IReadOnlyList{PlcTag}, TimeSpan, CancellationToken)"/>
     IAsyncEnumerable<WatchEvent> WatchAsync(IReadOnlyList<PlcTag> tags, TimeSpan interval, CancellationToken cancellationToken = default);
@@ -89,59 +89,59 @@ public interface IHostLinkUnit
     IAsyncEnumerable<WatchEvent> WatchAsync(IReadOnlyList<PlcTag> tags, WatchOptions options, CancellationToken cancellationToken = default);
 
     /// <inheritdoc cref="HostLinkUnit.ReadScatteredAsync(IReadOnlyList{string}, CancellationToken)"/>
-    ValueTask<ushort[]> ReadScatteredAsync(IReadOnlyList<string> addresses, CancellationToken cancellationToken = default);
+    Task<ushort[]> ReadScatteredAsync(IReadOnlyList<string> addresses, CancellationToken cancellationToken = default);
 
     /// <inheritdoc cref="HostLinkUnit.ReadStatusAsync(CancellationToken)"/>
-    ValueTask<PlcStatus> ReadStatusAsync(CancellationToken cancellationToken = default);
+    Task<PlcStatus> ReadStatusAsync(CancellationToken cancellationToken = default);
 
     /// <inheritdoc cref="HostLinkUnit.SetModeAsync(PlcMode, CancellationToken)"/>
-    ValueTask SetModeAsync(PlcMode mode, CancellationToken cancellationToken = default);
+    Task SetModeAsync(PlcMode mode, CancellationToken cancellationToken = default);
 
     /// <inheritdoc cref="HostLinkUnit.ReadErrorsAsync(bool, CancellationToken)"/>
-    ValueTask<PlcErrorInfo> ReadErrorsAsync(bool clear = false, CancellationToken cancellationToken = default);
+    Task<PlcErrorInfo> ReadErrorsAsync(bool clear = false, CancellationToken cancellationToken = default);
 
     /// <inheritdoc cref="HostLinkUnit.ReadModelAsync(CancellationToken)"/>
-    ValueTask<PlcModel> ReadModelAsync(CancellationToken cancellationToken = default);
+    Task<PlcModel> ReadModelAsync(CancellationToken cancellationToken = default);
 
     /// <inheritdoc cref="HostLinkUnit.TestAsync(string, CancellationToken)"/>
-    ValueTask<TimeSpan> TestAsync(string text = "OMRONHOSTLINK", CancellationToken cancellationToken = default);
+    Task<TimeSpan> TestAsync(string text = "OMRONHOSTLINK", CancellationToken cancellationToken = default);
 
     /// <inheritdoc cref="HostLinkUnit.ReadCpuUnitDataAsync(CancellationToken)"/>
-    ValueTask<FinsCpuUnitData> ReadCpuUnitDataAsync(CancellationToken cancellationToken = default);
+    Task<FinsCpuUnitData> ReadCpuUnitDataAsync(CancellationToken cancellationToken = default);
 
     /// <inheritdoc cref="HostLinkUnit.ReadCpuStatusAsync(CancellationToken)"/>
-    ValueTask<FinsCpuStatus> ReadCpuStatusAsync(CancellationToken cancellationToken = default);
+    Task<FinsCpuStatus> ReadCpuStatusAsync(CancellationToken cancellationToken = default);
 
     /// <inheritdoc cref="HostLinkUnit.ReadCycleTimeAsync(bool, CancellationToken)"/>
-    ValueTask<FinsCycleTime?> ReadCycleTimeAsync(bool initialize = false, CancellationToken cancellationToken = default);
+    Task<FinsCycleTime?> ReadCycleTimeAsync(bool initialize = false, CancellationToken cancellationToken = default);
 
     /// <inheritdoc cref="HostLinkUnit.ReadClockAsync(CancellationToken)"/>
-    ValueTask<FinsClock> ReadClockAsync(CancellationToken cancellationToken = default);
+    Task<FinsClock> ReadClockAsync(CancellationToken cancellationToken = default);
 
     /// <inheritdoc cref="HostLinkUnit.WriteClockAsync(DateTime, CancellationToken)"/>
-    ValueTask WriteClockAsync(DateTime time, CancellationToken cancellationToken = default);
+    Task WriteClockAsync(DateTime time, CancellationToken cancellationToken = default);
 
     /// <inheritdoc cref="HostLinkUnit.RunAsync(PlcMode, CancellationToken)"/>
-    ValueTask RunAsync(PlcMode mode = PlcMode.Monitor, CancellationToken cancellationToken = default);
+    Task RunAsync(PlcMode mode = PlcMode.Monitor, CancellationToken cancellationToken = default);
 
     /// <inheritdoc cref="HostLinkUnit.StopAsync(CancellationToken)"/>
-    ValueTask StopAsync(CancellationToken cancellationToken = default);
+    Task StopAsync(CancellationToken cancellationToken = default);
 
     /// <inheritdoc cref="HostLinkUnit.ClearErrorsAsync(ushort, CancellationToken)"/>
-    ValueTask ClearErrorsAsync(ushort errorCode = 0xFFFF, CancellationToken cancellationToken = default);
+    Task ClearErrorsAsync(ushort errorCode = 0xFFFF, CancellationToken cancellationToken = default);
 
     /// <inheritdoc cref="HostLinkUnit.ReadErrorLogAsync(int, int, CancellationToken)"/>
-    ValueTask<FinsErrorLog> ReadErrorLogAsync(int firstRecord = 0, int count = 20, CancellationToken cancellationToken = default);
+    Task<FinsErrorLog> ReadErrorLogAsync(int firstRecord = 0, int count = 20, CancellationToken cancellationToken = default);
 
     /// <inheritdoc cref="HostLinkUnit.FillAsync(string, int, ushort, CancellationToken)"/>
-    ValueTask FillAsync(string address, int count, ushort value, CancellationToken cancellationToken = default);
+    Task FillAsync(string address, int count, ushort value, CancellationToken cancellationToken = default);
 
     /// <inheritdoc cref="HostLinkUnit.TransferAsync(string, string, int, CancellationToken)"/>
-    ValueTask TransferAsync(string source, string destination, int count, CancellationToken cancellationToken = default);
+    Task TransferAsync(string source, string destination, int count, CancellationToken cancellationToken = default);
 
     /// <inheritdoc cref="HostLinkUnit.ForceBitAsync(string, FinsForceAction, CancellationToken)"/>
-    ValueTask ForceBitAsync(string address, FinsForceAction action, CancellationToken cancellationToken = default);
+    Task ForceBitAsync(string address, FinsForceAction action, CancellationToken cancellationToken = default);
 
     /// <inheritdoc cref="HostLinkUnit.CancelForcedBitsAsync(CancellationToken)"/>
-    ValueTask CancelForcedBitsAsync(CancellationToken cancellationToken = default);
+    Task CancelForcedBitsAsync(CancellationToken cancellationToken = default);
 }

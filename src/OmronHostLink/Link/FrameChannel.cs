@@ -48,6 +48,7 @@ internal sealed class FrameChannel : IValueTaskSource<bool>
     private bool _reading;
     private bool _closed;
     private HostLinkConnectionException? _closedReason;
+    private HostLinkConnectionException? _abortReason;
     private bool _waiting;
     private bool _deadlinePassed;
     private bool _cancelled;
@@ -150,6 +151,7 @@ internal sealed class FrameChannel : IValueTaskSource<bool>
         CancellationTokenSource? spent = null;
         lock (_lock)
         {
+            ThrowIfAbortedLocked();
             if (_writeAbort.IsCancellationRequested && !_cancelled)
             {
                 // The last frame's deadline passed and the transaction goes on (a second fence): this write is a new frame.
@@ -171,6 +173,10 @@ internal sealed class FrameChannel : IValueTaskSource<bool>
         {
             throw new OperationCanceledException(_callerToken);
         }
+        catch (Exception e) when (AbortReason is { } reason && e is OperationCanceledException or IOException or ObjectDisposedException or System.Net.Sockets.SocketException or InvalidOperationException)
+        {
+            throw new HostLinkConnectionException(reason.Message, reason.InnerException);
+        }
         catch (OperationCanceledException) when (DeadlinePassed)
         {
             throw new HostLinkTimeoutException($"Could not send to {_description} within {_deadlineTimeout.TotalMilliseconds:0} ms.", _deadlineTimeout);
@@ -178,6 +184,58 @@ internal sealed class FrameChannel : IValueTaskSource<bool>
         catch (Exception e) when (e is IOException or ObjectDisposedException or System.Net.Sockets.SocketException or InvalidOperationException)
         {
             throw new HostLinkConnectionException($"Lost {_description} while sending: {e.Message}", e);
+        }
+    }
+
+    /// <summary>
+    /// Ends the channel at once, from any thread, without waiting for anything: a frame read or write in progress (and
+    /// any later one) fails with a copy of <paramref name="reason"/>, the receive loop stops, and the transaction's
+    /// caller resumes on the thread pool, never on the thread that aborts. The stream is the caller's to close.
+    /// </summary>
+    public void Abort(HostLinkConnectionException reason)
+    {
+        bool wake;
+        lock (_lock)
+        {
+            if (_abortReason is not null)
+            {
+                return;
+            }
+
+            _abortReason = reason;
+            _closedReason = reason;
+            _closed = true;
+            CancelWritesLocked();
+            wake = TakeWaiterLocked();
+
+            // A read still pending on the stream only lands in the buffer now; nothing waits for it to end.
+            _readingStopped.TrySetResult(true);
+        }
+
+        try
+        {
+            _stopReading.Cancel();
+        }
+        catch (AggregateException)
+        {
+            // A stream's cancellation callback failed; the stream is being closed anyway.
+        }
+
+        if (wake)
+        {
+            ThreadPool.UnsafeQueueUserWorkItem(static s => ((FrameChannel)s!)._waiter.SetResult(true), this);
+        }
+    }
+
+    /// <summary>Why the channel was aborted, or null.</summary>
+    private HostLinkConnectionException? AbortReason
+    {
+        get
+        {
+            lock (_lock)
+            {
+                return _abortReason;
+            }
         }
     }
 
@@ -214,6 +272,7 @@ internal sealed class FrameChannel : IValueTaskSource<bool>
             Exception? error = null;
             lock (_lock)
             {
+                ThrowIfAbortedLocked();
                 ThrowIfCancelledLocked();
                 int held = _end - _start;
                 var buffer = new ReadOnlySequence<byte>(_buffer, _start, held);
@@ -286,6 +345,7 @@ internal sealed class FrameChannel : IValueTaskSource<bool>
             Exception? error = null;
             lock (_lock)
             {
+                ThrowIfAbortedLocked();
                 ThrowIfCancelledLocked();
                 if (_end - _start >= length)
                 {
@@ -387,6 +447,14 @@ internal sealed class FrameChannel : IValueTaskSource<bool>
         }
 
         _deadline.Change(timeout, Timeout.InfiniteTimeSpan);
+    }
+
+    private void ThrowIfAbortedLocked()
+    {
+        if (_abortReason is { } reason)
+        {
+            throw new HostLinkConnectionException(reason.Message, reason.InnerException);
+        }
     }
 
     private void ThrowIfCancelledLocked()

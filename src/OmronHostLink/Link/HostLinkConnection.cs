@@ -20,7 +20,7 @@ namespace OmronHostLink.Link;
 /// <see cref="TimeProvider"/> of the options. Telemetry is per command, not per attempt: one duration measurement
 /// and one span (<see cref="HostLinkActivities"/>) from the call to its result or final error, each retry counted.
 /// </remarks>
-internal sealed class HostLinkConnection : IAsyncDisposable
+internal sealed class HostLinkConnection : IAsyncDisposable, IDisposable
 {
     private readonly IHostLinkTransport _transport;
     private readonly HostLinkConnectionOptions _options;
@@ -31,7 +31,9 @@ internal sealed class HostLinkConnection : IAsyncDisposable
     private readonly Resynchroniser _resynchroniser;
     private readonly HostLinkInstruments _instruments;
 
-    private FrameChannel? _channel;
+    private volatile FrameChannel? _channel;
+    private volatile bool _disposed;
+    private int _closedAtOnce;
     private Action<bool, ReadOnlyMemory<byte>>? _frameObserver;
     private int _resyncUnit;
     private int _sid;
@@ -243,10 +245,47 @@ internal sealed class HostLinkConnection : IAsyncDisposable
         }
     }
 
+    /// <summary>
+    /// Closes the link at once, from any thread, waiting for nothing: an exchange in progress fails with a
+    /// <see cref="HostLinkConnectionException"/> (its inner exception an <see cref="ObjectDisposedException"/>), the
+    /// transport is closed synchronously, and later calls throw <see cref="ObjectDisposedException"/>.
+    /// </summary>
+    public void Dispose()
+    {
+        _disposed = true;
+        if (Interlocked.Exchange(ref _closedAtOnce, 1) == 1)
+        {
+            return;
+        }
+
+        _channel?.Abort(DisposedDuringExchange());
+        CloseTransportAtOnce();
+
+        // Between exchanges the link is tidied here; during one, the exchange does it as it fails.
+        if (_gate.Wait(0))
+        {
+            try
+            {
+                if (_channel is not null)
+                {
+                    _channel = null;
+                    _instruments.Connection(LinkName, -1);
+                }
+
+                State = LinkState.Disposed;
+            }
+            finally
+            {
+                _gate.Release();
+            }
+        }
+    }
+
     public async ValueTask DisposeAsync()
     {
-        if (State == LinkState.Disposed)
+        if (State == LinkState.Disposed || Volatile.Read(ref _closedAtOnce) == 1)
         {
+            _disposed = true;
             return;
         }
 
@@ -258,6 +297,7 @@ internal sealed class HostLinkConnection : IAsyncDisposable
                 return;
             }
 
+            _disposed = true;
             await CloseAsync(lost: false).ConfigureAwait(false);
             State = LinkState.Disposed;
             await _transport.DisposeAsync().ConfigureAwait(false);
@@ -265,6 +305,40 @@ internal sealed class HostLinkConnection : IAsyncDisposable
         finally
         {
             _gate.Release();
+        }
+    }
+
+    private HostLinkConnectionException DisposedDuringExchange()
+        => new($"The client was disposed: the link to {_transport.Description} was closed during the exchange.", new ObjectDisposedException(nameof(HostLinkClient)));
+
+    /// <summary>Closes the transport without waiting: synchronously where it can (every built-in transport does).</summary>
+    private void CloseTransportAtOnce()
+    {
+        try
+        {
+            if (_transport is IDisposable disposable)
+            {
+                disposable.Dispose();
+            }
+            else
+            {
+                _ = ObserveAsync(_transport.DisposeAsync());
+            }
+        }
+        catch (Exception e) when (e is IOException or ObjectDisposedException or InvalidOperationException or UnauthorizedAccessException or System.Net.Sockets.SocketException)
+        {
+            // Closing is all that was asked; a port that fails to close is closed as far as this link goes.
+        }
+
+        static async Task ObserveAsync(ValueTask closing)
+        {
+            try
+            {
+                await closing.ConfigureAwait(false);
+            }
+            catch (Exception e) when (e is IOException or ObjectDisposedException or InvalidOperationException or System.Net.Sockets.SocketException)
+            {
+            }
         }
     }
 
@@ -370,7 +444,7 @@ internal sealed class HostLinkConnection : IAsyncDisposable
 
     private async ValueTask<FrameChannel> OpenedAsync(CancellationToken cancellationToken)
     {
-        if (State == LinkState.Disposed)
+        if (State == LinkState.Disposed || _disposed)
         {
             throw new ObjectDisposedException(nameof(HostLinkConnection), $"The link to {_transport.Description} is closed.");
         }
@@ -383,6 +457,15 @@ internal sealed class HostLinkConnection : IAsyncDisposable
         Stream stream = await _transport.OpenAsync(cancellationToken).ConfigureAwait(false);
         var channel = new FrameChannel(stream, _transport.Description, _logger, _time) { FrameObserver = _frameObserver };
         _channel = channel;
+        if (_disposed)
+        {
+            // Dispose ran while the transport was opening: it may have missed this stream and this channel.
+            channel.Abort(DisposedDuringExchange());
+            CloseTransportAtOnce();
+            _channel = null;
+            throw DisposedDuringExchange();
+        }
+
         State = LinkState.Ready;
         channel.Start();
         _instruments.Connection(LinkName, +1);
@@ -422,6 +505,6 @@ internal sealed class HostLinkConnection : IAsyncDisposable
             _instruments.Connection(LinkName, -1);
         }
 
-        State = LinkState.Closed;
+        State = _disposed ? LinkState.Disposed : LinkState.Closed;
     }
 }

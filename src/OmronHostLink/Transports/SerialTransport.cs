@@ -13,7 +13,7 @@ namespace OmronHostLink.Transports;
 /// kernels refuse to change its framing after its first user closed it. Deadlines are still timed from the configured
 /// settings.</para>
 /// </remarks>
-public sealed class SerialTransport : IHostLinkTransport
+public sealed class SerialTransport : IHostLinkTransport, IDisposable
 {
     private readonly SerialLineSettings _settings;
     private readonly Func<SerialLineSettings, ISerialPort> _createPort;
@@ -60,14 +60,15 @@ public sealed class SerialTransport : IHostLinkTransport
     /// <inheritdoc/>
     public ValueTask CloseAsync()
     {
-        SerialLineStream? stream = _stream;
-        _stream = null;
-        stream?.Dispose();
+        Dispose();
         return default;
     }
 
     /// <inheritdoc/>
     public ValueTask DisposeAsync() => CloseAsync();
+
+    /// <summary>Closes the port at once; the next open opens it again.</summary>
+    public void Dispose() => Interlocked.Exchange(ref _stream, null)?.Dispose();
 
     private SerialLineStream Open()
     {

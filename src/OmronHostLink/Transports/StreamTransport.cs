@@ -1,7 +1,7 @@
 namespace OmronHostLink.Transports;
 
 /// <summary>A transport over a stream the caller already opened (an in-memory pipe in tests, a custom port). It cannot reopen a lost stream.</summary>
-public sealed class StreamTransport : IHostLinkTransport
+public sealed class StreamTransport : IHostLinkTransport, IDisposable
 {
     private readonly bool _leaveOpen;
     private Stream? _stream;
@@ -37,8 +37,7 @@ public sealed class StreamTransport : IHostLinkTransport
     /// <inheritdoc/>
     public async ValueTask CloseAsync()
     {
-        Stream? s = _stream;
-        _stream = null;
+        Stream? s = Interlocked.Exchange(ref _stream, null);
         if (s is not null && !_leaveOpen)
         {
             await StreamCompat.DisposeAsync(s).ConfigureAwait(false);
@@ -47,4 +46,14 @@ public sealed class StreamTransport : IHostLinkTransport
 
     /// <inheritdoc/>
     public ValueTask DisposeAsync() => CloseAsync();
+
+    /// <summary>Closes the stream synchronously (unless it is to be left open); the transport cannot reopen it.</summary>
+    public void Dispose()
+    {
+        Stream? s = Interlocked.Exchange(ref _stream, null);
+        if (s is not null && !_leaveOpen)
+        {
+            s.Dispose();
+        }
+    }
 }

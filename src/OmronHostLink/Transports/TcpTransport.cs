@@ -6,7 +6,7 @@ namespace OmronHostLink.Transports;
 /// A TCP connection to a serial-device server (or the simulator). It connects on first use and reconnects on the next
 /// call after a drop. Nagle's delay is off: Host Link frames are small and every one waits for an answer.
 /// </summary>
-public sealed class TcpTransport : IHostLinkTransport
+public sealed class TcpTransport : IHostLinkTransport, IDisposable
 {
     private TcpClient? _client;
 
@@ -64,6 +64,9 @@ public sealed class TcpTransport : IHostLinkTransport
 
         _client?.Dispose();
         var client = new TcpClient { NoDelay = true };
+
+        // Held from the start, so that closing the transport also abandons a connection attempt.
+        _client = client;
         using var timeout = CancellationTokenSource.CreateLinkedTokenSource(cancellationToken);
         timeout.CancelAfter(ConnectTimeout);
         try
@@ -80,22 +83,31 @@ public sealed class TcpTransport : IHostLinkTransport
         catch (Exception e) when (e is SocketException or OperationCanceledException or ObjectDisposedException && !cancellationToken.IsCancellationRequested)
         {
             client.Dispose();
+            Interlocked.CompareExchange(ref _client, null, client);
             string why = e is SocketException se ? se.Message : $"no connection within {ConnectTimeout.TotalSeconds:0.#} s";
             throw new HostLinkConnectionException($"Cannot connect to {Description}: {why}.", e);
         }
 
-        _client = client;
+        if (!ReferenceEquals(Volatile.Read(ref _client), client))
+        {
+            // Closed while connecting.
+            client.Dispose();
+            throw new HostLinkConnectionException($"The connection to {Description} was closed while it was being made.", new ObjectDisposedException(nameof(TcpTransport)));
+        }
+
         return client.GetStream();
     }
 
     /// <inheritdoc/>
     public ValueTask CloseAsync()
     {
-        _client?.Dispose();
-        _client = null;
+        Dispose();
         return default;
     }
 
     /// <inheritdoc/>
     public ValueTask DisposeAsync() => CloseAsync();
+
+    /// <summary>Closes the socket at once (a connection attempt in progress is abandoned); the next open reconnects.</summary>
+    public void Dispose() => Interlocked.Exchange(ref _client, null)?.Dispose();
 }

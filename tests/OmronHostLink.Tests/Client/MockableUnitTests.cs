@@ -45,12 +45,12 @@ public sealed class MockableUnitTests
     public async Task A_transient_link_failure_leaves_the_alarm_alone_and_a_refusal_is_not_hidden()
     {
         IHostLinkUnit plc = Substitute.For<IHostLinkUnit>();
-        plc.ReadAsync<float>("D100", Arg.Any<CancellationToken>()).Returns(ValueTask.FromException<float>(new HostLinkTimeoutException("No answer from unit 00.", TimeSpan.FromMilliseconds(300))));
+        plc.ReadAsync<float>("D100", Arg.Any<CancellationToken>()).Returns(Task.FromException<float>(new HostLinkTimeoutException("No answer from unit 00.", TimeSpan.FromMilliseconds(300))));
 
         (await new TankAlarm(plc).CheckAsync()).Should().Be(Alarm.Unknown);
         await plc.DidNotReceiveWithAnyArgs().WriteAsync<bool>(default!, default(bool), default);
 
-        plc.ReadAsync<float>("D100", Arg.Any<CancellationToken>()).Returns(ValueTask.FromException<float>(new InvalidOperationException("not a link failure")));
+        plc.ReadAsync<float>("D100", Arg.Any<CancellationToken>()).Returns(Task.FromException<float>(new InvalidOperationException("not a link failure")));
         await FluentActions.Awaiting(() => new TankAlarm(plc).CheckAsync()).Should().ThrowAsync<InvalidOperationException>();
     }
 

@@ -145,7 +145,7 @@ public sealed class ClientSimulatorTests
         await using Rig rig = await Rig.StartAsync(wire);
         rig.Plc.Mode = PlcMode.Run;
 
-        var e = await FluentActions.Awaiting(() => rig.Client.WriteWordAsync("D10", 99).AsTask()).Should().ThrowAsync<HostLinkEndCodeException>();
+        var e = await FluentActions.Awaiting(() => rig.Client.WriteWordAsync("D10", 99)).Should().ThrowAsync<HostLinkEndCodeException>();
 
         e.Which.EndCode.Should().Be(EndCode.NotExecutableInRunMode);
         rig.Plc.ReadWord(PlcArea.Dm, 10).Should().Be(0);
@@ -168,7 +168,7 @@ public sealed class ClientSimulatorTests
 
         rig.Plc.WriteWords(PlcArea.Dm, 0, new ushort[] { 42 });
         (await rig.Client.Unit(3).ReadWordsAsync("D0", 1)).Should().Equal(new ushort[] { 42 });
-        await FluentActions.Awaiting(() => rig.Client.Unit(4).ReadWordsAsync("D0", 1).AsTask()).Should().ThrowAsync<HostLinkTimeoutException>("the simulator owns units 0 and 3 only");
+        await FluentActions.Awaiting(() => rig.Client.Unit(4).ReadWordsAsync("D0", 1)).Should().ThrowAsync<HostLinkTimeoutException>("the simulator owns units 0 and 3 only");
         (await rig.Client.ReadWordsAsync("D0", 1)).Should().Equal(new ushort[] { 42 }, "the link resynchronises after the silent unit");
     }
 

@@ -49,13 +49,13 @@ public sealed class LinkDeadlineTests
         await using var _ = plc;
         await using var __ = client;
 
-        ValueTask<PlcStatus> call = client.ReadStatusAsync();
+        Task<PlcStatus> call = client.ReadStatusAsync();
         time.Advance(StatusDeadline - TimeSpan.FromMilliseconds(1));
         call.IsCompleted.Should().BeFalse("the deadline is the wire time of the command and the longest answer plus the allowance");
 
         time.Advance(TimeSpan.FromMilliseconds(1));
         call.IsCompleted.Should().BeTrue();
-        var e = await FluentActions.Awaiting(() => call.AsTask()).Should().ThrowAsync<HostLinkTimeoutException>();
+        var e = await FluentActions.Awaiting(() => call).Should().ThrowAsync<HostLinkTimeoutException>();
         e.Which.Timeout.Should().Be(StatusDeadline);
     });
 
@@ -66,7 +66,7 @@ public sealed class LinkDeadlineTests
         await using var _ = plc;
         await using var __ = client;
 
-        ValueTask<PlcStatus> call = client.ReadStatusAsync();
+        Task<PlcStatus> call = client.ReadStatusAsync();
         time.Advance(StatusDeadline);
         call.IsCompleted.Should().BeFalse("the first attempt timed out; the retry resynchronises first");
 
@@ -79,7 +79,7 @@ public sealed class LinkDeadlineTests
         call.IsCompleted.Should().BeFalse();
         time.Advance(TimeSpan.FromMilliseconds(1));
         call.IsCompleted.Should().BeTrue();
-        var e = await FluentActions.Awaiting(() => call.AsTask()).Should().ThrowAsync<HostLinkTimeoutException>();
+        var e = await FluentActions.Awaiting(() => call).Should().ThrowAsync<HostLinkTimeoutException>();
         e.Which.Message.Should().Contain("to MS").And.Contain("2 attempts");
         e.Which.InnerException!.Message.Should().Contain("TS check");
         plc.ReceivedCount(f => f.StartsWith("@00TS", StringComparison.Ordinal)).Should().BeLessThanOrEqualTo(2);
@@ -93,17 +93,17 @@ public sealed class LinkDeadlineTests
         await using var __ = client;
         using var cts = new CancellationTokenSource();
 
-        ValueTask<PlcStatus> call = client.ReadStatusAsync(cts.Token);
+        Task<PlcStatus> call = client.ReadStatusAsync(cts.Token);
         time.Advance(TimeSpan.FromMilliseconds(10));
         await cts.CancelAsync();
 
         call.IsCompleted.Should().BeTrue("cancellation does not wait for the deadline");
-        await FluentActions.Awaiting(() => call.AsTask()).Should().ThrowAsync<OperationCanceledException>();
+        await FluentActions.Awaiting(() => call).Should().ThrowAsync<OperationCanceledException>();
 
-        ValueTask<PlcStatus> next = client.ReadStatusAsync();
+        Task<PlcStatus> next = client.ReadStatusAsync();
         time.Advance(FenceDeadline);
         time.Advance(FenceDeadline);
-        var e = await FluentActions.Awaiting(() => next.AsTask()).Should().ThrowAsync<HostLinkTimeoutException>();
+        var e = await FluentActions.Awaiting(() => next).Should().ThrowAsync<HostLinkTimeoutException>();
         e.Which.InnerException!.Message.Should().Contain("TS check", "the link fences after a cancelled exchange");
     });
 }

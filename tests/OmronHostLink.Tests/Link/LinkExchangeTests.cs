@@ -58,7 +58,7 @@ public sealed class LinkExchangeTests
         await using var _ = plc;
         await using var __ = client;
 
-        var e = await FluentActions.Awaiting(() => client.ReadWordsAsync("D100", 2).AsTask()).Should().ThrowAsync<HostLinkFrameException>();
+        var e = await FluentActions.Awaiting(() => client.ReadWordsAsync("D100", 2)).Should().ThrowAsync<HostLinkFrameException>();
         e.Which.Error.Should().Be(FrameError.BadFcs);
     }
 
@@ -70,7 +70,7 @@ public sealed class LinkExchangeTests
         await using var _ = plc;
         await using var __ = client;
 
-        var e = await FluentActions.Awaiting(() => client.WriteWordAsync("CIO0", 0x000C).AsTask()).Should().ThrowAsync<HostLinkFrameException>();
+        var e = await FluentActions.Awaiting(() => client.WriteWordAsync("CIO0", 0x000C)).Should().ThrowAsync<HostLinkFrameException>();
         e.Which.Error.Should().Be(FrameError.WrongUnit);
         plc.Received.Should().Contain("@00WR0000000C36*\r");
     }
@@ -82,7 +82,7 @@ public sealed class LinkExchangeTests
         await using var _ = plc;
         await using var __ = client;
 
-        var e = await FluentActions.Awaiting(() => client.ReadWordsAsync("D100", 3).AsTask()).Should().ThrowAsync<HostLinkFrameException>();
+        var e = await FluentActions.Awaiting(() => client.ReadWordsAsync("D100", 3)).Should().ThrowAsync<HostLinkFrameException>();
         e.Which.Error.Should().Be(FrameError.WrongHeader);
     }
 
@@ -93,7 +93,7 @@ public sealed class LinkExchangeTests
         await using var _ = plc;
         await using var __ = client;
 
-        var e = await FluentActions.Awaiting(() => client.ReadWordsAsync("D100", 3).AsTask()).Should().ThrowAsync<HostLinkFrameException>();
+        var e = await FluentActions.Awaiting(() => client.ReadWordsAsync("D100", 3)).Should().ThrowAsync<HostLinkFrameException>();
         e.Which.Error.Should().Be(FrameError.WrongLength);
     }
 
@@ -104,7 +104,7 @@ public sealed class LinkExchangeTests
         await using var _ = plc;
         await using var __ = client;
 
-        await FluentActions.Awaiting(() => client.ReadWordsAsync("D100", 3).AsTask()).Should().ThrowAsync<HostLinkTimeoutException>();
+        await FluentActions.Awaiting(() => client.ReadWordsAsync("D100", 3)).Should().ThrowAsync<HostLinkTimeoutException>();
     }
 
     [Fact]
@@ -115,7 +115,7 @@ public sealed class LinkExchangeTests
         await using var _ = plc;
         await using var __ = client;
 
-        var e = await FluentActions.Awaiting(() => client.WriteWordAsync("D9", 1).AsTask()).Should().ThrowAsync<HostLinkEndCodeException>();
+        var e = await FluentActions.Awaiting(() => client.WriteWordAsync("D9", 1)).Should().ThrowAsync<HostLinkEndCodeException>();
         e.Which.EndCode.Should().Be(EndCode.NotExecutableInRunMode);
         e.Which.Header.Should().Be("WD");
         e.Which.Unit.Should().Be(0);
@@ -130,7 +130,7 @@ public sealed class LinkExchangeTests
         await using var _ = plc;
         await using var __ = client;
 
-        var e = await FluentActions.Awaiting(() => client.ReadModelAsync().AsTask()).Should().ThrowAsync<HostLinkEndCodeException>();
+        var e = await FluentActions.Awaiting(() => client.ReadModelAsync()).Should().ThrowAsync<HostLinkEndCodeException>();
         e.Which.EndCode.Should().Be(EndCode.UndefinedHeader);
         e.Which.Category.Should().Be(EndCodeCategory.NotSupported);
     }
@@ -156,7 +156,7 @@ public sealed class LinkExchangeTests
         using (var once = new CancellationTokenSource(TimeSpan.FromMilliseconds(250)))
         {
             // Cut the first call at its deadline-ish point so that it cannot retry into the late answer.
-            await FluentActions.Awaiting(() => client.ReadWordsAsync("D100", 3, once.Token).AsTask()).Should().ThrowAsync<Exception>();
+            await FluentActions.Awaiting(() => client.ReadWordsAsync("D100", 3, once.Token)).Should().ThrowAsync<Exception>();
         }
 
         ushort[] next = await client.ReadWordsAsync("D100", 3);
@@ -193,7 +193,7 @@ public sealed class LinkExchangeTests
         (await client.ReadWordsAsync("D100", 3)).Should().Equal(0x000A, 0xFFFF, 0x8000);
         reads.Should().Be(2);
 
-        var e = await FluentActions.Awaiting(() => client.WriteWordAsync("D9", 1).AsTask()).Should().ThrowAsync<HostLinkEndCodeException>();
+        var e = await FluentActions.Awaiting(() => client.WriteWordAsync("D9", 1)).Should().ThrowAsync<HostLinkEndCodeException>();
         e.Which.EndCode.Should().Be(EndCode.AbortedFcsError);
         writes.Should().Be(1);
     }
@@ -259,7 +259,7 @@ public sealed class LinkExchangeTests
             }
         };
 
-        await FluentActions.Awaiting(() => client.ReadWordsAsync("D0", 40, cts.Token).AsTask()).Should().ThrowAsync<OperationCanceledException>();
+        await FluentActions.Awaiting(() => client.ReadWordsAsync("D0", 40, cts.Token)).Should().ThrowAsync<OperationCanceledException>();
         client.FrameObserver = null;
         (await client.ReadWordsAsync("D100", 3)).Should().Equal(0x000A, 0xFFFF, 0x8000);
 
@@ -283,7 +283,7 @@ public sealed class LinkExchangeTests
         await using var _ = plc;
         await using var __ = client;
 
-        ushort[][] results = await Task.WhenAll(Enumerable.Range(0, 50).Select(i => client.ReadWordsAsync($"D{i}", 1).AsTask()));
+        ushort[][] results = await Task.WhenAll(Enumerable.Range(0, 50).Select(i => client.ReadWordsAsync($"D{i}", 1)));
 
         results.Select(r => r[0]).Should().Equal(Enumerable.Range(0, 50).Select(i => (ushort)i));
     }
@@ -304,7 +304,7 @@ public sealed class LinkExchangeTests
         await using var _ = plc;
         await using var __ = client;
 
-        PlcModel[] models = await Task.WhenAll(client.Unit(5).ReadModelAsync().AsTask(), client.Unit(7).ReadModelAsync().AsTask());
+        PlcModel[] models = await Task.WhenAll(client.Unit(5).ReadModelAsync(), client.Unit(7).ReadModelAsync());
 
         models[0].Code.Should().Be(0x30);
         models[1].Code.Should().Be(0x12);
@@ -319,7 +319,7 @@ public sealed class LinkExchangeTests
         await using var __ = client;
         var clock = System.Diagnostics.Stopwatch.StartNew();
 
-        await FluentActions.Awaiting(() => client.ReadStatusAsync().AsTask()).Should().ThrowAsync<HostLinkTimeoutException>();
+        await FluentActions.Awaiting(() => client.ReadStatusAsync()).Should().ThrowAsync<HostLinkTimeoutException>();
 
         clock.Elapsed.Should().BeLessThan(TimeSpan.FromSeconds(1));
     }
@@ -331,7 +331,7 @@ public sealed class LinkExchangeTests
         await using var client = HostLinkClient.ForStream(host, FastOptions());
         await plcEnd.DisposeAsync();
 
-        await FluentActions.Awaiting(() => client.ReadStatusAsync().AsTask()).Should().ThrowAsync<HostLinkConnectionException>();
+        await FluentActions.Awaiting(() => client.ReadStatusAsync()).Should().ThrowAsync<HostLinkConnectionException>();
     }
 
     [Fact]
@@ -367,7 +367,7 @@ public sealed class LinkExchangeTests
         await using var _ = plc;
         await using var __ = client;
 
-        await FluentActions.Awaiting(() => client.ReadWordsAsync("D100", 3).AsTask()).Should().ThrowAsync<HostLinkTimeoutException>();
+        await FluentActions.Awaiting(() => client.ReadWordsAsync("D100", 3)).Should().ThrowAsync<HostLinkTimeoutException>();
         (await client.ReadWordsAsync("D100", 3)).Should().Equal(0x000A, 0xFFFF, 0x8000);
 
         fences.Should().Be(2);

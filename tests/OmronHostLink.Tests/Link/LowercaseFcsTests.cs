@@ -26,7 +26,7 @@ public sealed class LowercaseFcsTests
             ReadRetries = 0,
         });
 
-        var e = await FluentActions.Awaiting(() => client.ReadWordsAsync("D100", 3).AsTask()).Should().ThrowAsync<HostLinkFrameException>();
+        var e = await FluentActions.Awaiting(() => client.ReadWordsAsync("D100", 3)).Should().ThrowAsync<HostLinkFrameException>();
 
         e.Which.Error.Should().Be(FrameError.BadFcs);
     }

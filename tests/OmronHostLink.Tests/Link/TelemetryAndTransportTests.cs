@@ -26,7 +26,7 @@ public sealed class TelemetryAndTransportTests
     {
         await using var client = HostLinkClient.ForSerialPort("/tmp/no-such-port-for-hostlink", Fast());
 
-        var e = await FluentActions.Awaiting(() => client.ReadStatusAsync().AsTask()).Should().ThrowAsync<HostLinkConnectionException>();
+        var e = await FluentActions.Awaiting(() => client.ReadStatusAsync()).Should().ThrowAsync<HostLinkConnectionException>();
 
         e.Which.Message.Should().Contain("/tmp/no-such-port-for-hostlink").And.Contain("does not exist");
     }
@@ -40,7 +40,7 @@ public sealed class TelemetryAndTransportTests
         listener.Stop();
         await using var client = HostLinkClient.ForTcp("127.0.0.1", port, Fast(), TimeSpan.FromSeconds(2));
 
-        var e = await FluentActions.Awaiting(() => client.ReadStatusAsync().AsTask()).Should().ThrowAsync<HostLinkConnectionException>();
+        var e = await FluentActions.Awaiting(() => client.ReadStatusAsync()).Should().ThrowAsync<HostLinkConnectionException>();
 
         e.Which.Message.Should().Contain($"127.0.0.1:{port}");
     }
@@ -71,8 +71,8 @@ public sealed class TelemetryAndTransportTests
         await using (var client = HostLinkClient.ForStream(host, options))
         {
             await client.ReadWordsAsync("D0", 2);
-            await FluentActions.Awaiting(() => client.WriteWordAsync("D0", 1).AsTask()).Should().ThrowAsync<HostLinkEndCodeException>();
-            await FluentActions.Awaiting(() => client.Unit(9).ReadWordsAsync("D0", 1).AsTask()).Should().ThrowAsync<HostLinkTimeoutException>();
+            await FluentActions.Awaiting(() => client.WriteWordAsync("D0", 1)).Should().ThrowAsync<HostLinkEndCodeException>();
+            await FluentActions.Awaiting(() => client.Unit(9).ReadWordsAsync("D0", 1)).Should().ThrowAsync<HostLinkTimeoutException>();
         }
 
         stop.Cancel();

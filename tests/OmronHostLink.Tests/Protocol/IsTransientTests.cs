@@ -85,7 +85,7 @@ public sealed class IsTransientTests
         await using var _ = plc;
         await using var __ = client;
 
-        var e = await FluentActions.Awaiting(() => client.ReadWordsAsync("D100", 3).AsTask()).Should().ThrowAsync<HostLinkTimeoutException>();
+        var e = await FluentActions.Awaiting(() => client.ReadWordsAsync("D100", 3)).Should().ThrowAsync<HostLinkTimeoutException>();
         e.Which.IsTransient.Should().BeTrue();
     }
 
@@ -96,7 +96,7 @@ public sealed class IsTransientTests
         await using var _ = plc;
         await using var __ = client;
 
-        var e = await FluentActions.Awaiting(() => client.ReadWordsAsync("D100", 3).AsTask()).Should().ThrowAsync<HostLinkFrameException>();
+        var e = await FluentActions.Awaiting(() => client.ReadWordsAsync("D100", 3)).Should().ThrowAsync<HostLinkFrameException>();
         e.Which.Error.Should().Be(FrameError.BadFcs);
         e.Which.IsTransient.Should().BeTrue();
     }
@@ -110,7 +110,7 @@ public sealed class IsTransientTests
         await using var _ = plc;
         await using var __ = client;
 
-        var e = await FluentActions.Awaiting(() => client.ReadWordsAsync("D100", 3).AsTask()).Should().ThrowAsync<HostLinkEndCodeException>();
+        var e = await FluentActions.Awaiting(() => client.ReadWordsAsync("D100", 3)).Should().ThrowAsync<HostLinkEndCodeException>();
         e.Which.IsTransient.Should().Be(transient);
     }
 

@@ -122,7 +122,7 @@ public sealed class FuzzTests(ITestOutputHelper output)
             ReadRetries = 0,
         });
 
-        Exception e = (await FluentActions.Awaiting(() => client.ReadWordsAsync("D0", 1).AsTask()).Should().ThrowAsync<HostLinkException>()).Which;
+        Exception e = (await FluentActions.Awaiting(() => client.ReadWordsAsync("D0", 1)).Should().ThrowAsync<HostLinkException>()).Which;
         if (withAt)
         {
             e.Should().BeOfType<HostLinkFrameException>().Which.Error.Should().Be(FrameError.TooLong);

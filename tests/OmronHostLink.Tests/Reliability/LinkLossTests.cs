@@ -55,7 +55,7 @@ public sealed class LinkLossTests
 
         await using (HostLinkClient client = HostLinkClient.ForTcp("127.0.0.1", port, Options))
         {
-            var e = await FluentActions.Awaiting(() => client.ReadWordsAsync("D0", 1).AsTask()).Should().ThrowAsync<HostLinkConnectionException>();
+            var e = await FluentActions.Awaiting(() => client.ReadWordsAsync("D0", 1)).Should().ThrowAsync<HostLinkConnectionException>();
             e.Which.Message.Should().Contain("127.0.0.1");
 
             (await client.ReadWordsAsync("D0", 1)).Should().Equal(new ushort[] { 0x1234 });
@@ -77,7 +77,7 @@ public sealed class LinkLossTests
         {
             // The PLC end: read the command, send half an answer, then the line vanishes while the client reads.
             using Stream plcEnd = await SocatPtyPair.OpenAsync(pty.PathB);
-            Task<ushort[]> call = client.ReadWordsAsync("D0", 1).AsTask();
+            Task<ushort[]> call = client.ReadWordsAsync("D0", 1);
             await ReadLineAsync(plcEnd).WaitAsync(TimeSpan.FromSeconds(5));
             await plcEnd.WriteAsync(Encoding.ASCII.GetBytes("@00RD0012"));
             await plcEnd.FlushAsync();
@@ -88,7 +88,7 @@ public sealed class LinkLossTests
             e.Which.Message.Should().Contain(pty.PathA).And.Contain("hung up");
 
             // Gone: the next call says so, typed.
-            await FluentActions.Awaiting(() => client.ReadWordsAsync("D0", 1).AsTask()).Should().ThrowAsync<HostLinkConnectionException>();
+            await FluentActions.Awaiting(() => client.ReadWordsAsync("D0", 1)).Should().ThrowAsync<HostLinkConnectionException>();
 
             // Back on the same names, with a PLC behind it: the same client reopens the port.
             again = await pty.RestartAsync();

@@ -65,7 +65,7 @@ public sealed class SerialHostingTests
 
             await using (HostLinkClient client = HostLinkClient.ForSerialPort(again.PathA, Options))
             {
-                (await client.ReadWordsAsync("D0", 1).AsTask().WaitAsync(Patience)).Should().Equal((ushort)0x4242);
+                (await client.ReadWordsAsync("D0", 1).WaitAsync(Patience)).Should().Equal((ushort)0x4242);
             }
 
             host.Reopened.Should().Be(1);

@@ -71,8 +71,8 @@ public sealed class ActivityTests : IDisposable
         options.ReadRetries = 1;
         await using var line = TelemetryLine.Start(options, new VirtualPlcOptions { InitialMode = PlcMode.Run });
 
-        await FluentActions.Awaiting(() => line.Client.WriteWordAsync("D0", 1).AsTask()).Should().ThrowAsync<HostLinkEndCodeException>();
-        await FluentActions.Awaiting(() => line.Client.Unit(9).ReadWordsAsync("D0", 1).AsTask()).Should().ThrowAsync<HostLinkTimeoutException>();
+        await FluentActions.Awaiting(() => line.Client.WriteWordAsync("D0", 1)).Should().ThrowAsync<HostLinkEndCodeException>();
+        await FluentActions.Awaiting(() => line.Client.Unit(9).ReadWordsAsync("D0", 1)).Should().ThrowAsync<HostLinkTimeoutException>();
 
         Activity[] spans = Spans("span-fail");
         spans.Should().HaveCount(2);

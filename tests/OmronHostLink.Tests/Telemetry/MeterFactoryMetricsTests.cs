@@ -96,8 +96,8 @@ public sealed class MeterFactoryMetricsTests : IDisposable
         options.TurnaroundAllowance = TimeSpan.FromMilliseconds(100);
         await using var line = TelemetryLine.Start(options, new VirtualPlcOptions { InitialMode = PlcMode.Run });
 
-        await FluentActions.Awaiting(() => line.Client.WriteWordAsync("D0", 1).AsTask()).Should().ThrowAsync<HostLinkEndCodeException>();
-        await FluentActions.Awaiting(() => line.Client.Unit(9).ReadWordsAsync("D0", 1).AsTask()).Should().ThrowAsync<HostLinkTimeoutException>();
+        await FluentActions.Awaiting(() => line.Client.WriteWordAsync("D0", 1)).Should().ThrowAsync<HostLinkEndCodeException>();
+        await FluentActions.Awaiting(() => line.Client.Unit(9).ReadWordsAsync("D0", 1)).Should().ThrowAsync<HostLinkTimeoutException>();
 
         IReadOnlyList<CollectedMeasurement<double>> all = durations.GetMeasurementSnapshot();
         all.Should().HaveCount(2);

@@ -36,7 +36,7 @@ public sealed class SerialDeadlineTests
 
         HostLinkClient client = HostLinkClient.Create(new SerialTransport(settings, _ => port), Options);
         var clock = Stopwatch.StartNew();
-        var e = await FluentActions.Awaiting(() => client.ReadWordsAsync("D0", 1).AsTask()).Should().ThrowAsync<HostLinkTimeoutException>();
+        var e = await FluentActions.Awaiting(() => client.ReadWordsAsync("D0", 1)).Should().ThrowAsync<HostLinkTimeoutException>();
         clock.Elapsed.Should().BeLessThan(e.Which.Timeout + Slack, "the deadline does not wait for the stream read");
         line.IgnoredTokens.Should().BePositive("the pump's read was given a token the stream ignored");
         Task pending = line.LastRead!;
@@ -58,7 +58,7 @@ public sealed class SerialDeadlineTests
         await using HostLinkClient client = HostLinkClient.Create(new SerialTransport(settings, _ => port), Options);
 
         // Nobody answers at first.
-        await FluentActions.Awaiting(() => client.ReadWordsAsync("D0", 1).AsTask()).Should().ThrowAsync<HostLinkTimeoutException>();
+        await FluentActions.Awaiting(() => client.ReadWordsAsync("D0", 1)).Should().ThrowAsync<HostLinkTimeoutException>();
 
         var plc = new VirtualPlc();
         plc.WriteWords(PlcArea.Dm, 0, [0x1234, 0x5678]);
