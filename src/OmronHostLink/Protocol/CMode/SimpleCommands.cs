@@ -1,21 +1,31 @@
 namespace OmronHostLink.Protocol.CMode;
 
-/// <summary>A command without text (MS, MM, KC, XZ): everything about it is its row in <see cref="CModeCommands"/>.</summary>
+/// <summary>
+/// A command that is only its row and its text (MS, MM, KC, XZ, QQIR, and any command added to a table as a row alone):
+/// everything about it is its row in a <see cref="CModeCommandTable"/>.
+/// </summary>
 internal sealed class SimpleCommand : CModeCommand
 {
-    /// <summary>Creates the command of <paramref name="row"/>.</summary>
-    public SimpleCommand(CModeCommandRow row) => Row = Guard.NotNull(row);
+    private readonly byte[] _text;
+
+    /// <summary>Creates the command of <paramref name="row"/> with <paramref name="text"/> after the header (sub-header included).</summary>
+    public SimpleCommand(CModeCommandRow row, ReadOnlySpan<byte> text = default)
+    {
+        Row = Guard.NotNull(row);
+        _text = text.ToArray();
+    }
 
     /// <inheritdoc/>
     public override CModeCommandRow Row { get; }
 
-    /// <inheritdoc/>
-    public override int TextLength => 0;
+    /// <summary>The text after the header.</summary>
+    public ReadOnlySpan<byte> Text => _text;
 
     /// <inheritdoc/>
-    public override void WriteText(Span<byte> destination)
-    {
-    }
+    public override int TextLength => _text.Length;
+
+    /// <inheritdoc/>
+    public override void WriteText(Span<byte> destination) => _text.CopyTo(destination);
 }
 
 /// <summary>SC: STATUS CHANGE to PROGRAM (00), MONITOR (02) or RUN (03).</summary>
