@@ -246,6 +246,7 @@ public sealed class VirtualPlc : OmronHostLink.Protocol.CMode.ICModePlc
     /// <exception cref="ArgumentOutOfRangeException">The range is outside the area.</exception>
     public ushort[] ReadWords(PlcArea area, int start, int count, int bank = 0)
     {
+        (area, start) = PlcAreaInfo.CioAlias(area, start);
         ushort[] storage = Storage(area, bank);
         CheckRange(storage, area, start, count);
         var result = new ushort[count];
@@ -275,6 +276,7 @@ public sealed class VirtualPlc : OmronHostLink.Protocol.CMode.ICModePlc
     /// <exception cref="ArgumentOutOfRangeException">The range is outside the area.</exception>
     public void WriteWords(PlcArea area, int start, ReadOnlySpan<ushort> words, int bank = 0)
     {
+        (area, start) = PlcAreaInfo.CioAlias(area, start);
         ushort[] storage = Storage(area, bank);
         CheckRange(storage, area, start, words.Length);
         lock (_gate)
@@ -337,6 +339,7 @@ public sealed class VirtualPlc : OmronHostLink.Protocol.CMode.ICModePlc
     public void SetBit(PlcArea area, int word, int bit, bool value, int bank = 0)
     {
         CheckBit(area, bit);
+        (area, word) = PlcAreaInfo.CioAlias(area, word);
         ushort[] storage = Storage(area, bank);
         CheckRange(storage, area, word, 1);
         lock (_gate)
