@@ -29,7 +29,7 @@ public static class LinkClients
         }
 
         var options = new GatewayOptions();
-        configuration.GetSection(GatewayOptions.SectionName).Bind(options);
+        ConfigurationSchema.Bind(configuration.GetSection(GatewayOptions.SectionName), options);
         foreach ((string name, LinkOptions link) in options.Links)
         {
             if (link.Enabled)
