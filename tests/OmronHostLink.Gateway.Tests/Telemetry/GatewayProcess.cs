@@ -1,19 +1,19 @@
 using System.Diagnostics;
 using System.Runtime.InteropServices;
 
-namespace OmronHostLink.Tests.Telemetry;
+namespace OmronHostLink.Gateway.Tests.Telemetry;
 
 /// <summary>
-/// <c>OmronHostLink.Worker</c> (from beside the test assembly) as a separate process, configured by command-line
+/// <c>OmronHostLink.Gateway</c> (from beside the test assembly) as a separate process, configured by command-line
 /// arguments only: it runs in an empty working directory, so no appsettings.json is read.
 /// </summary>
-internal sealed class WorkerProcess : IAsyncDisposable
+internal sealed class GatewayProcess : IAsyncDisposable
 {
     private readonly Process _process;
     private readonly string _directory;
     private readonly List<string> _output = new();
 
-    private WorkerProcess(Process process, string directory)
+    private GatewayProcess(Process process, string directory)
     {
         _process = process;
         _directory = directory;
@@ -35,7 +35,7 @@ internal sealed class WorkerProcess : IAsyncDisposable
         }
     }
 
-    public static WorkerProcess Start(IEnumerable<string> args, IReadOnlyDictionary<string, string>? environment = null)
+    public static GatewayProcess Start(IEnumerable<string> args, IReadOnlyDictionary<string, string>? environment = null)
     {
         string directory = Path.Combine(Path.GetTempPath(), $"ohl-worker-{Guid.NewGuid():N}");
         Directory.CreateDirectory(directory);
@@ -46,7 +46,7 @@ internal sealed class WorkerProcess : IAsyncDisposable
             RedirectStandardError = true,
             WorkingDirectory = directory,
         };
-        start.ArgumentList.Add(Path.Combine(AppContext.BaseDirectory, "OmronHostLink.Worker.dll"));
+        start.ArgumentList.Add(Path.Combine(AppContext.BaseDirectory, "OmronHostLink.Gateway.dll"));
         foreach (string arg in args)
         {
             start.ArgumentList.Add(arg);
@@ -59,7 +59,7 @@ internal sealed class WorkerProcess : IAsyncDisposable
         }
 
         var process = new Process { StartInfo = start };
-        var worker = new WorkerProcess(process, directory);
+        var worker = new GatewayProcess(process, directory);
         process.OutputDataReceived += (_, e) => worker.Add(e.Data);
         process.ErrorDataReceived += (_, e) => worker.Add(e.Data);
         process.Start();

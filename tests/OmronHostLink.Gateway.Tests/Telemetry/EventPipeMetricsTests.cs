@@ -4,7 +4,7 @@ using OmronHostLink.Simulator.Faults;
 using OmronHostLink.Simulator.Hosting;
 using Xunit.Abstractions;
 
-namespace OmronHostLink.Tests.Telemetry;
+namespace OmronHostLink.Gateway.Tests.Telemetry;
 
 /// <summary>
 /// The library's instruments read from outside the process, through the runtime's <c>System.Diagnostics.Metrics</c>
@@ -28,7 +28,7 @@ public sealed class EventPipeMetricsTests(ITestOutputHelper output)
         await using var oven = new TcpSimulatorHost(ovenPlc);
         await oven.StartAsync();
 
-        await using WorkerProcess worker = WorkerProcess.Start(
+        await using GatewayProcess worker = GatewayProcess.Start(
         [
             $"--HostLink:Links:press:Tcp=127.0.0.1:{press.EndPoint.Port}",
             "--HostLink:Links:press:LineBaudRate=9600",
@@ -48,7 +48,7 @@ public sealed class EventPipeMetricsTests(ITestOutputHelper output)
             "--HostLink:Links:oven:Groups:temperature:Type=float",
             "--HostLink:Links:oven:Groups:temperature:Interval=00:00:00.100",
             "--Logging:LogLevel:Default=Warning",
-            "--Logging:LogLevel:OmronHostLink.Worker=Information",
+            "--Logging:LogLevel:OmronHostLink.Gateway=Information",
         ]);
         (await worker.WaitForOutputAsync("link oven: polling", Patience) && await worker.WaitForOutputAsync("link press: polling", Patience))
             .Should().BeTrue("the worker starts both links: {0}", worker.Output);

@@ -4,7 +4,7 @@ using System.Globalization;
 using Microsoft.Diagnostics.NETCore.Client;
 using Microsoft.Diagnostics.Tracing;
 
-namespace OmronHostLink.Tests.Telemetry;
+namespace OmronHostLink.Gateway.Tests.Telemetry;
 
 /// <summary>One value the runtime's metrics event source published for an instrument in another process.</summary>
 /// <param name="Event">The event: CounterRateValuePublished, HistogramValuePublished, UpDownCounterRateValuePublished…</param>
