@@ -17,12 +17,20 @@ public partial class HostLinkUnit
     private protected readonly HostLinkConnection Connection;
     private protected readonly HostLinkClientOptions Options;
 
+    private protected readonly CompoundReadRegistry CompoundReads;
+
     private protected HostLinkUnit(HostLinkConnection connection, HostLinkClientOptions options, int unitNumber)
+        : this(connection, options, unitNumber, new CompoundReadRegistry())
+    {
+    }
+
+    private protected HostLinkUnit(HostLinkConnection connection, HostLinkClientOptions options, int unitNumber, CompoundReadRegistry compoundReads)
     {
         Guard.Unit(unitNumber);
         Connection = connection;
         Options = options;
         UnitNumber = unitNumber;
+        CompoundReads = compoundReads;
     }
 
     /// <summary>The unit number (0-31) this view addresses.</summary>
@@ -36,7 +44,7 @@ public partial class HostLinkUnit
 
     /// <summary>A view of another unit on the same line (multidrop), sharing this link.</summary>
     /// <exception cref="ArgumentOutOfRangeException">The unit number is not 0-31.</exception>
-    public HostLinkUnit Unit(int unitNumber) => new UnitView(Connection, Options, unitNumber);
+    public HostLinkUnit Unit(int unitNumber) => new UnitView(Connection, Options, unitNumber, CompoundReads);
 
     /// <summary>A view of a unit on the same line that uses <paramref name="commandSet"/> where both command sets can do a job.</summary>
     /// <exception cref="ArgumentOutOfRangeException">The unit number is not 0-31.</exception>
@@ -44,7 +52,7 @@ public partial class HostLinkUnit
     {
         HostLinkClientOptions options = Options.Clone();
         options.CommandSet = commandSet;
-        return new UnitView(Connection, options, unitNumber);
+        return new UnitView(Connection, options, unitNumber, CompoundReads);
     }
 
     // ---- Words ----
@@ -256,6 +264,6 @@ public partial class HostLinkUnit
         return true;
     }
 
-    private sealed class UnitView(HostLinkConnection connection, HostLinkClientOptions options, int unitNumber)
-        : HostLinkUnit(connection, options, unitNumber);
+    private sealed class UnitView(HostLinkConnection connection, HostLinkClientOptions options, int unitNumber, CompoundReadRegistry compoundReads)
+        : HostLinkUnit(connection, options, unitNumber, compoundReads);
 }
