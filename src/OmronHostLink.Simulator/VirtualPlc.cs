@@ -61,13 +61,17 @@ public sealed class VirtualPlc
         }
 
         _mode = Options.InitialMode;
-        _modelCode = Options.ModelCode;
+        Model = Options.Model is { } name ? PlcModelProfile.Parse(name) : null;
+        _modelCode = Model?.ModelCode ?? Options.ModelCode;
         Faults = new FaultInjector(Options.Faults);
         if (Options.InitialMemoryFile is { } file)
         {
             LoadJsonFile(file);
         }
     }
+
+    /// <summary>The model the PLC emulates (<see cref="VirtualPlcOptions.Model"/>), or null for a CS/CJ CPU.</summary>
+    public PlcModelProfile? Model { get; }
 
     /// <summary>The options the PLC was created with.</summary>
     public VirtualPlcOptions Options { get; }
@@ -245,7 +249,7 @@ public sealed class VirtualPlc
     /// <exception cref="ArgumentOutOfRangeException">The range is outside the area.</exception>
     public ushort[] ReadWords(PlcArea area, int start, int count, int bank = 0)
     {
-        (area, start) = PlcAreaInfo.CioAlias(area, start);
+        (area, start) = Alias(area, start);
         ushort[] storage = Storage(area, bank);
         CheckRange(storage, area, start, count);
         var result = new ushort[count];
@@ -275,7 +279,7 @@ public sealed class VirtualPlc
     /// <exception cref="ArgumentOutOfRangeException">The range is outside the area.</exception>
     public void WriteWords(PlcArea area, int start, ReadOnlySpan<ushort> words, int bank = 0)
     {
-        (area, start) = PlcAreaInfo.CioAlias(area, start);
+        (area, start) = Alias(area, start);
         ushort[] storage = Storage(area, bank);
         CheckRange(storage, area, start, words.Length);
         lock (_gate)
@@ -338,7 +342,7 @@ public sealed class VirtualPlc
     public void SetBit(PlcArea area, int word, int bit, bool value, int bank = 0)
     {
         CheckBit(area, bit);
-        (area, word) = PlcAreaInfo.CioAlias(area, word);
+        (area, word) = Alias(area, word);
         ushort[] storage = Storage(area, bank);
         CheckRange(storage, area, word, 1);
         lock (_gate)
@@ -393,6 +397,7 @@ public sealed class VirtualPlc
     /// <returns>Whether the flag is on.</returns>
     public bool GetFlag(PlcArea area, int number)
     {
+        (area, number) = Alias(area, number);
         bool[] flags = Flags(area, number);
         lock (_gate)
         {
@@ -406,6 +411,7 @@ public sealed class VirtualPlc
     /// <param name="value">The new state.</param>
     public void SetFlag(PlcArea area, int number, bool value)
     {
+        (area, number) = Alias(area, number);
         bool[] flags = Flags(area, number);
         lock (_gate)
         {
@@ -548,6 +554,17 @@ public sealed class VirtualPlc
 
         CheckBit(area, bit);
         CheckRange(Storage(area, 0), area, word, 1);
+    }
+
+    // LR n is CIO 1000 + n; on a model whose timers and counters share one TC space, counter n is timer n.
+    private (PlcArea Area, int Word) Alias(PlcArea area, int word)
+    {
+        if (area == PlcArea.Counter && Model is { SharesTimerCounterNumbers: true })
+        {
+            return (PlcArea.Timer, word);
+        }
+
+        return PlcAreaInfo.CioAlias(area, word);
     }
 
     private bool[] Flags(PlcArea area, int number)

@@ -80,6 +80,11 @@ public sealed class HostLinkResponder
             throw new ArgumentException("A header has two characters.", nameof(header));
         }
 
+        if (_plc.Model is { } model && !Accepts(model, header))
+        {
+            return EndCodeOnly(unit, header, EndCode.UndefinedHeader);
+        }
+
         if (CModeHeaders.Is(header, CModeHeaders.Fins))
         {
             return _fins.Respond(unit, text);
@@ -142,6 +147,11 @@ public sealed class HostLinkResponder
                     return EndCodeOnly(unit, Encoding.ASCII.GetBytes(write.Header), EndCode.NotExecutableInRunMode);
                 }
 
+                if (_plc.Model is { } writeModel && !ModelHas(writeModel, write.Area, write.Begin, write.Words.Length, write.Bank, forWrite: true))
+                {
+                    return EndCodeOnly(unit, Encoding.ASCII.GetBytes(write.Header), EndCode.EntryNumberDataError);
+                }
+
                 for (int i = 0; i < write.Words.Length; i++)
                 {
                     (PlcArea area, int word) = CModeAddressing.Locate(write.Area, write.Begin + i);
@@ -180,6 +190,9 @@ public sealed class HostLinkResponder
                 return Ok(unit, CModeHeaders.ErrorRead, data);
             }
 
+            case ModelReadCommand when _plc.Model is { ModelCode: null }:
+                // No manual found gives this model's MM code: it is not invented.
+                return EndCodeOnly(unit, Encoding.ASCII.GetBytes(CModeHeaders.ModelRead), EndCode.UndefinedHeader);
             case ModelReadCommand:
             {
                 Span<byte> data = stackalloc byte[2];
@@ -224,10 +237,23 @@ public sealed class HostLinkResponder
 
     private SimResponse Read(int unit, AreaReadCommand read)
     {
+        PlcModelProfile? model = _plc.Model;
+        if (model is not null && !ModelHas(model, read.Area, read.Begin, read.Count, read.Bank, forWrite: false))
+        {
+            return EndCodeOnly(unit, Encoding.ASCII.GetBytes(read.Header), EndCode.EntryNumberDataError);
+        }
+
         int atom = read.ResponseAtomLength;
         var data = new byte[read.Count * atom];
         for (int i = 0; i < read.Count; i++)
         {
+            if (model is not null && read.Area != CModeArea.TimerCounterStatus && ReadsZero(model, read.Area, read.Begin + i, read.Bank))
+            {
+                // The manual's hazard: memory the model does not have reads 0000 with end code 00.
+                "0000"u8.CopyTo(data.AsSpan(i * 4, 4));
+                continue;
+            }
+
             (PlcArea area, int word) = CModeAddressing.Locate(read.Area, read.Begin + i);
             if (read.Area == CModeArea.TimerCounterStatus)
             {
@@ -241,6 +267,60 @@ public sealed class HostLinkResponder
 
         return Ok(unit, read.Header, data, atom);
     }
+
+    // The header is one the model accepts: FA only with FINS, the rest from its C-mode list (TS is answered by every model).
+    private static bool Accepts(PlcModelProfile model, ReadOnlySpan<byte> header)
+    {
+        if (CModeHeaders.Is(header, CModeHeaders.Fins))
+        {
+            return model.SupportsFins;
+        }
+
+        return CModeHeaders.Is(header, CModeHeaders.Test) || model.AcceptsCMode(HeaderString(header));
+    }
+
+    // Every entry is memory the model has (or, for a read, memory its manual says reads 0000) and, for a write, may be written.
+    private static bool ModelHas(PlcModelProfile model, CModeArea area, int begin, int count, int bank, bool forWrite)
+    {
+        for (int entry = begin; entry < begin + count; entry++)
+        {
+            (PlcArea plcArea, int word) = ModelAddress(model, area, entry);
+            PlcAreaRange? range = model.Find(plcArea, word, bank);
+            if (range is null ? forWrite || !InZeroRange(model, plcArea, word, bank) : forWrite && !range.Writable)
+            {
+                return false;
+            }
+        }
+
+        return true;
+    }
+
+    private static bool ReadsZero(PlcModelProfile model, CModeArea area, int entry, int bank)
+    {
+        (PlcArea plcArea, int word) = ModelAddress(model, area, entry);
+        return model.Find(plcArea, word, bank) is null && InZeroRange(model, plcArea, word, bank);
+    }
+
+    private static bool InZeroRange(PlcModelProfile model, PlcArea area, int word, int bank)
+    {
+        foreach (PlcAreaRange range in model.ZeroReadRanges)
+        {
+            if (range.Area == area && range.Contains(word, bank))
+            {
+                return true;
+            }
+        }
+
+        return false;
+    }
+
+    // A C-mode entry as the model's profile names it: LR stays LR, and on a shared TC space every entry is a timer number.
+    private static (PlcArea Area, int Word) ModelAddress(PlcModelProfile model, CModeArea area, int entry) => area switch
+    {
+        CModeArea.Lr => (PlcArea.Link, entry),
+        CModeArea.TimerCounterPv or CModeArea.TimerCounterStatus when model.SharesTimerCounterNumbers => (PlcArea.Timer, entry),
+        _ => CModeAddressing.Locate(area, entry),
+    };
 
     private void MultipleForce(MultipleForceCommand command)
     {
