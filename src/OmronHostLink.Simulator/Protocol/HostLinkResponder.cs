@@ -162,7 +162,7 @@ public sealed class HostLinkResponder
     private static EndCode? Refusal(PlcModelProfile model, CModeCommand command) => command switch
     {
         AreaReadCommand read when !ModelHas(model, read.Area, read.Begin, read.Count, read.Bank, forWrite: false) => EndCode.EntryNumberDataError,
-        AreaWriteCommand write when !ModelHas(model, write.Area, write.Begin, write.Count, write.Bank, forWrite: true) => EndCode.EntryNumberDataError,
+        AreaWriteCommand write when !ModelHas(model, write.Area, write.Begin, write.Words.Length, write.Bank, forWrite: true) => EndCode.EntryNumberDataError,
         _ when command.Header == CModeHeaders.ModelRead && model.ModelCode is null => EndCode.UndefinedHeader,
         _ => null,
     };
