@@ -35,6 +35,7 @@ internal sealed class HostLinkConnection : IAsyncDisposable
     private Action<bool, ReadOnlyMemory<byte>>? _frameObserver;
     private int _resyncUnit;
     private int _sid;
+    private long _lastExchangeEnded;
 
     public HostLinkConnection(IHostLinkTransport transport, HostLinkConnectionOptions options)
     {
@@ -203,6 +204,7 @@ internal sealed class HostLinkConnection : IAsyncDisposable
         try
         {
             FrameChannel channel = await OpenedAsync(cancellationToken).ConfigureAwait(false);
+            await KeepSendIntervalAsync(unit, cancellationToken).ConfigureAwait(false);
             channel.Begin(cancellationToken);
             try
             {
@@ -284,6 +286,7 @@ internal sealed class HostLinkConnection : IAsyncDisposable
     {
         _attempt.ResetFrames();
         FrameChannel channel = await OpenedAsync(cancellationToken).ConfigureAwait(false);
+        await KeepSendIntervalAsync(request.Unit, cancellationToken).ConfigureAwait(false);
         channel.Begin(cancellationToken);
         try
         {
@@ -393,9 +396,35 @@ internal sealed class HostLinkConnection : IAsyncDisposable
     /// <summary>The stream failed: the link is broken until its channel is closed at the end of the transaction.</summary>
     private void Break() => State = LinkState.Broken;
 
+    /// <summary>
+    /// The one place the next command waits for the send interval: until the gap since the last exchange ended (whatever
+    /// it was, answered or not) is the longer of the link's and the unit's.
+    /// </summary>
+    private Task KeepSendIntervalAsync(int unit, CancellationToken cancellationToken)
+    {
+        TimeSpan gap = _options.SendIntervalFor(unit);
+        if (gap <= TimeSpan.Zero || _lastExchangeEnded == 0)
+        {
+            return Task.CompletedTask;
+        }
+
+        TimeSpan remaining = gap - _time.GetElapsedTime(_lastExchangeEnded);
+        if (remaining <= TimeSpan.Zero)
+        {
+            return Task.CompletedTask;
+        }
+
+#if NET
+        return Task.Delay(remaining, _time, cancellationToken);
+#else
+        return _time.Delay(remaining, cancellationToken);
+#endif
+    }
+
     private async ValueTask EndAsync(FrameChannel channel)
     {
         channel.End();
+        _lastExchangeEnded = _time.GetTimestamp();
         if (State == LinkState.Broken)
         {
             await CloseAsync(lost: true).ConfigureAwait(false);
