@@ -32,21 +32,6 @@ public static class WorkerHost
     /// <summary>The generic host's own log category, where a failed start is logged with its stack trace.</summary>
     private const string HostCategory = "Microsoft.Extensions.Hosting.Internal.Host";
 
-    /// <summary>
-    /// Binds without throwing: a value the binder cannot convert is reported, with its key, by the validators'
-    /// <see cref="ConfigurationSchema"/> check, and the host then refuses to start.
-    /// </summary>
-    private static void BindLeniently(IConfiguration section, object options)
-    {
-        try
-        {
-            section.Bind(options);
-        }
-        catch (InvalidOperationException)
-        {
-        }
-    }
-
     private static HostApplicationBuilder Configure(HostApplicationBuilder builder)
     {
         IServiceCollection services = builder.Services;
@@ -54,14 +39,14 @@ public static class WorkerHost
 
         IConfigurationSection hostLink = builder.Configuration.GetSection(WorkerOptions.SectionName);
         services.AddOptions<WorkerOptions>()
-            .Configure(options => BindLeniently(hostLink, options))
+            .Configure(options => ConfigurationSchema.Bind(hostLink, options))
             .ValidateOnStart();
         services.AddSingleton<IValidateOptions<WorkerOptions>, WorkerOptionsValidator>();
         services.AddLinkClients(builder.Configuration);
 
         IConfigurationSection simulator = builder.Configuration.GetSection(SimulatorOptions.SectionName);
         services.AddOptions<SimulatorOptions>()
-            .Configure(options => BindLeniently(simulator, options))
+            .Configure(options => ConfigurationSchema.Bind(simulator, options))
             .ValidateDataAnnotations()
             .ValidateOnStart();
         services.AddSingleton<IValidateOptions<SimulatorOptions>, SimulatorOptionsValidator>();

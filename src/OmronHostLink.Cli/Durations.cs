@@ -5,14 +5,11 @@ using System.Globalization;
 namespace OmronHostLink.Cli;
 
 /// <summary>
-/// The one rule for every time option: <c>500ms</c>, <c>1s</c>, <c>1.5s</c>, <c>2m</c>, <c>1h</c>; a bare number is
-/// milliseconds. A bad value is a parse error naming the option, so nothing is sent.
+/// Time options, read with the library's one duration grammar (<see cref="Duration"/>, docs/durations.md): the same
+/// text means the same time here as in configuration. A bad value is a parse error naming the option, so nothing is sent.
 /// </summary>
 internal static class Durations
 {
-    /// <summary>The hint every duration error ends with.</summary>
-    public const string Hint = "use 500ms, 1s or 2m";
-
     /// <summary>A time option parsed with the duration rule.</summary>
     /// <param name="name">The option, e.g. <c>--timeout</c>.</param>
     /// <param name="description">Help text; the rule is appended.</param>
@@ -23,7 +20,7 @@ internal static class Durations
     {
         var option = new Option<TimeSpan?>(name)
         {
-            Description = description + " A duration: 500ms, 1s, 2m (a bare number is milliseconds).",
+            Description = description + " A duration: 500ms, 2s, 1.5min or 00:00:02.",
             HelpName = "time",
             CustomParser = result => Parse(result, name, min, max),
         };
@@ -33,45 +30,6 @@ internal static class Durations
         }
 
         return option;
-    }
-
-    /// <summary>Parses <paramref name="text"/> with the duration rule.</summary>
-    /// <returns>False when the text is not a duration.</returns>
-    public static bool TryParse(string text, out TimeSpan value)
-    {
-        value = default;
-        string t = text.Trim().ToLowerInvariant();
-        double factor = 1;
-        if (t.EndsWith("ms", StringComparison.Ordinal))
-        {
-            t = t[..^2];
-        }
-        else if (t.EndsWith('s'))
-        {
-            factor = 1000;
-            t = t[..^1];
-        }
-        else if (t.EndsWith('m'))
-        {
-            factor = 60_000;
-            t = t[..^1];
-        }
-        else if (t.EndsWith('h'))
-        {
-            factor = 3_600_000;
-            t = t[..^1];
-        }
-
-        if (t.Length == 0
-            || !double.TryParse(t, NumberStyles.AllowDecimalPoint, CultureInfo.InvariantCulture, out double n)
-            || !double.IsFinite(n)
-            || n * factor > TimeSpan.MaxValue.TotalMilliseconds / 2)
-        {
-            return false;
-        }
-
-        value = TimeSpan.FromMilliseconds(n * factor);
-        return true;
     }
 
     /// <summary>A duration the way a user writes one: <c>250 ms</c>, <c>1.5 s</c>, <c>2 min</c>.</summary>
@@ -84,14 +42,14 @@ internal static class Durations
     {
         if (result.Tokens.Count == 0)
         {
-            result.AddError($"{name}: give a duration; {Hint}.");
+            result.AddError($"{name}: give a duration; write {Duration.Forms}.");
             return null;
         }
 
         string text = result.Tokens[^1].Value;
-        if (!TryParse(text, out TimeSpan value))
+        if (!Duration.TryParse(text, out TimeSpan value, out string? error))
         {
-            result.AddError($"{name}: '{text}' is not a duration; {Hint}.");
+            result.AddError($"{name}: {error}.");
             return null;
         }
 

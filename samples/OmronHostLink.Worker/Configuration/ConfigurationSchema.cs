@@ -11,8 +11,9 @@ namespace OmronHostLink.Worker.Configuration;
 /// time span of that many days. Here every such value is a failure that names its key.
 /// </summary>
 /// <remarks>
-/// Time spans are written <c>hh:mm:ss[.fff]</c> (<c>00:00:00.500</c> is 500 ms) or <c>d.hh:mm:ss</c>; a bare number is
-/// refused rather than guessed. Enums take their member names in any case, not numbers. Empty values count as unset.
+/// Time spans are durations in the library's one grammar (<see cref="Duration"/>, docs/durations.md): <c>500ms</c>,
+/// <c>2s</c>, <c>1.5min</c> or <c>00:00:02</c>; a bare number is refused rather than guessed. <see cref="Bind"/> reads
+/// them so; the binder alone would not. Enums take their member names in any case, not numbers. Empty values count as unset.
 /// </remarks>
 public static class ConfigurationSchema
 {
@@ -27,13 +28,47 @@ public static class ConfigurationSchema
         var failures = new List<string>();
         if (section.Exists())
         {
-            CheckObject(section, section.Path, type, failures);
+            CheckObject(section, section.Path, type, failures, null);
         }
 
         return failures;
     }
 
-    private static void CheckObject(IConfigurationSection section, string path, Type type, List<string> failures)
+    /// <summary>
+    /// Binds <paramref name="section"/> to <paramref name="options"/>, durations read with the library's grammar. Never
+    /// throws for a value it cannot convert: <see cref="Check"/> reports that value by its key.
+    /// </summary>
+    /// <param name="section">The section (<c>HostLink</c>, <c>Simulator</c>).</param>
+    /// <param name="options">The options it binds to.</param>
+    public static void Bind(IConfigurationSection section, object options)
+    {
+        ArgumentNullException.ThrowIfNull(section);
+        ArgumentNullException.ThrowIfNull(options);
+        var values = new Dictionary<string, string?>(StringComparer.OrdinalIgnoreCase);
+        if (section.Exists())
+        {
+            CheckObject(section, section.Path, options.GetType(), [], new Values(section.Path.Length + 1, values));
+        }
+
+        try
+        {
+            new ConfigurationBuilder().AddInMemoryCollection(values).Build().Bind(options);
+        }
+        catch (InvalidOperationException)
+        {
+        }
+    }
+
+    /// <summary>The values to bind, by their path below the bound section; durations rewritten in the binder's form.</summary>
+    private sealed record Values(int PrefixLength, Dictionary<string, string?> ByKey)
+    {
+        public void Add(string path, string? value, Type type)
+            => ByKey[path.Substring(PrefixLength)] = type == typeof(TimeSpan) && Duration.TryParse(value, out TimeSpan t, out _)
+                ? t.ToString("c", CultureInfo.InvariantCulture)
+                : value;
+    }
+
+    private static void CheckObject(IConfigurationSection section, string path, Type type, List<string> failures, Values? values)
     {
         Dictionary<string, PropertyInfo> settings = Settings(type);
         foreach (IConfigurationSection child in section.GetChildren())
@@ -45,11 +80,11 @@ public static class ConfigurationSchema
                 continue;
             }
 
-            CheckValue(child, childPath, property.PropertyType, failures);
+            CheckValue(child, childPath, property.PropertyType, failures, values);
         }
     }
 
-    private static void CheckValue(IConfigurationSection section, string path, Type type, List<string> failures)
+    private static void CheckValue(IConfigurationSection section, string path, Type type, List<string> failures, Values? values)
     {
         type = Nullable.GetUnderlyingType(type) ?? type;
         bool hasChildren = section.GetChildren().Any();
@@ -64,6 +99,7 @@ public static class ConfigurationSchema
                 CheckScalar(section.Value, path, type, failures);
             }
 
+            values?.Add(path, section.Value, type);
             return;
         }
 
@@ -81,7 +117,7 @@ public static class ConfigurationSchema
         {
             foreach (IConfigurationSection child in section.GetChildren())
             {
-                CheckValue(child, $"{path}:{child.Key}", valueType, failures);
+                CheckValue(child, $"{path}:{child.Key}", valueType, failures, values);
             }
         }
         else if (ElementType(type) is { } elementType)
@@ -94,26 +130,33 @@ public static class ConfigurationSchema
                     continue;
                 }
 
-                CheckValue(child, $"{path}:{child.Key}", elementType, failures);
+                CheckValue(child, $"{path}:{child.Key}", elementType, failures, values);
             }
         }
         else
         {
-            CheckObject(section, path, type, failures);
+            CheckObject(section, path, type, failures, values);
         }
     }
 
     private static void CheckScalar(string value, string path, Type type, List<string> failures)
     {
+        if (type == typeof(TimeSpan))
+        {
+            if (!Duration.TryParse(value, out _, out string? error))
+            {
+                failures.Add($"{path} {error}.");
+            }
+
+            return;
+        }
+
         string? problem = type switch
         {
             _ when type == typeof(string) => null,
             _ when type == typeof(bool) => bool.TryParse(value, out _) ? null : "is not true or false",
             _ when type == typeof(int) => int.TryParse(value, NumberStyles.AllowLeadingSign, CultureInfo.InvariantCulture, out _) ? null : "is not a whole number",
             _ when type == typeof(double) => double.TryParse(value, NumberStyles.Float, CultureInfo.InvariantCulture, out _) ? null : "is not a number",
-            _ when type == typeof(TimeSpan) => IsTimeSpan(value)
-                ? null
-                : "is not a time span: write hh:mm:ss[.fff], for example 00:00:05 for 5 s or 00:00:00.500 for 500 ms (a bare number is refused: it would be read as days)",
             _ when type.IsEnum => Enum.GetNames(type).Contains(value.Trim(), StringComparer.OrdinalIgnoreCase)
                 ? null
                 : $"is not one of {string.Join(", ", Enum.GetNames(type))}",
@@ -124,10 +167,6 @@ public static class ConfigurationSchema
             failures.Add($"{path} '{value}' {problem}.");
         }
     }
-
-    /// <summary><c>hh:mm:ss[.fff]</c> or <c>d.hh:mm:ss[.fff]</c>: what the binder reads as a time span, minus the bare number it reads as days.</summary>
-    private static bool IsTimeSpan(string value)
-        => value.Contains(':', StringComparison.Ordinal) && TimeSpan.TryParse(value, CultureInfo.InvariantCulture, out _);
 
     private static bool IsScalar(Type type)
         => type.IsPrimitive || type.IsEnum || type == typeof(string) || type == typeof(TimeSpan) || type == typeof(decimal);

@@ -29,7 +29,7 @@ public static class LinkClients
         }
 
         var options = new WorkerOptions();
-        configuration.GetSection(WorkerOptions.SectionName).Bind(options);
+        ConfigurationSchema.Bind(configuration.GetSection(WorkerOptions.SectionName), options);
         foreach ((string name, LinkOptions link) in options.Links)
         {
             if (link.Enabled)

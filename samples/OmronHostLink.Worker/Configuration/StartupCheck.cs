@@ -21,9 +21,9 @@ internal static class StartupCheck
         try
         {
             var worker = new WorkerOptions();
-            hostLink.Bind(worker);
+            ConfigurationSchema.Bind(hostLink, worker);
             var sim = new SimulatorOptions();
-            simulator.Bind(sim);
+            ConfigurationSchema.Bind(simulator, sim);
             return new WorkerOptionsValidator().Validate(null, worker).Succeeded
                 && new LinkClients.LineSpeedValidator().Validate(null, worker).Succeeded
                 && new SimulatorOptionsValidator().Validate(null, sim).Succeeded

@@ -280,7 +280,7 @@ internal static class HostLinkSettingsReader
                 return null;
             }
 
-            if (DurationText.TryParse(text, out TimeSpan value, out string? error))
+            if (OmronHostLink.Duration.TryParse(text, out TimeSpan value, out string? error))
             {
                 return value;
             }

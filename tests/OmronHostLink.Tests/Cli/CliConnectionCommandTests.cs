@@ -118,7 +118,7 @@ public sealed class CliConnectionCommandTests
     {
         await using var sim = await SimulatedPlc.StartAsync(PlcMode.Run, units: [0, 3]);
 
-        CliResult r = await sim.RunAsync("scan", "--units", "0-4", "--timeout", "50", "--json");
+        CliResult r = await sim.RunAsync("scan", "--units", "0-4", "--timeout", "50ms", "--json");
 
         r.ExitCode.Should().Be(0, r.ToString());
         JsonElement[] units = r.Json().GetProperty("units").EnumerateArray().ToArray();
@@ -131,7 +131,7 @@ public sealed class CliConnectionCommandTests
     {
         await using var sim = await SimulatedPlc.StartAsync(units: [7]);
 
-        CliResult r = await sim.RunAsync("scan", "--units", "1,2", "--timeout", "50");
+        CliResult r = await sim.RunAsync("scan", "--units", "1,2", "--timeout", "50ms");
 
         r.ExitCode.Should().Be(4, r.ToString());
         r.Err.Should().Contain("No unit answered");

@@ -2,17 +2,27 @@ using System.Diagnostics;
 
 namespace OmronHostLink.Tests.Cli;
 
-/// <summary>One duration rule for every time option: 500ms, 1s, 2m; a bare number is milliseconds.</summary>
+/// <summary>Every time option reads the library's one duration grammar: 500ms, 1s, 2m, 00:00:02; a bare number is refused.</summary>
 public sealed class CliDurationTests
 {
     [Fact]
-    public async Task A_bare_interval_is_milliseconds()
+    public async Task A_bare_interval_is_refused_with_a_hint_showing_the_units()
+    {
+        // 100 is 100 ms to one reader and 100 s to another: nothing is polled until the unit is written.
+        CliResult r = await Cli.RunAsync("monitor", "D0", "--interval", "100", "--count", "3", "--tcp", "127.0.0.1:1");
+
+        r.ExitCode.Should().Be(2, r.ToString());
+        r.Err.Should().Contain("--interval: '100' has no unit; write 100ms, 100s or 100m (or 00:00:00.300)");
+    }
+
+    [Fact]
+    public async Task An_interval_in_the_TimeSpan_form_is_read_as_configuration_reads_it()
     {
         await using var sim = await SimulatedPlc.StartAsync();
         var clock = Stopwatch.StartNew();
 
-        // Three polls 100 apart: 0.2 s when 100 means milliseconds, 200 s when it means seconds.
-        CliResult r = await sim.RunAsync("monitor", "D0", "--interval", "100", "--count", "3").WaitAsync(TimeSpan.FromSeconds(30));
+        // Three polls 100 ms apart: 0.2 s; 100 s if the form were misread as seconds.
+        CliResult r = await sim.RunAsync("monitor", "D0", "--interval", "00:00:00.100", "--count", "3").WaitAsync(TimeSpan.FromSeconds(30));
 
         r.ExitCode.Should().Be(0, r.ToString());
         clock.Elapsed.Should().BeLessThan(TimeSpan.FromSeconds(30));
@@ -34,7 +44,7 @@ public sealed class CliDurationTests
     [InlineData("1s")]
     [InlineData("0.5s")]
     [InlineData("1m")]
-    [InlineData("400")]
+    [InlineData("00:00:00.400")]
     public async Task Timeout_takes_a_duration(string timeout)
     {
         await using var sim = await SimulatedPlc.StartAsync();
@@ -58,7 +68,7 @@ public sealed class CliDurationTests
         CliResult r = await Cli.RunAsync(args);
 
         r.ExitCode.Should().Be(2, r.ToString());
-        r.Err.Should().Contain($"{option}: '{value}' is not a duration; use 500ms, 1s or 2m");
+        r.Err.Should().Contain($"{option}: '{value}' is not a duration; write 300ms, 1.5s, 2m or 00:00:00.300");
         r.Err.Should().NotContain("System.", "the message is in the user's words, not a .NET type name");
     }
 

@@ -86,7 +86,7 @@ public sealed class CliExitCodeTests
     {
         await using var sim = await SimulatedPlc.StartAsync(units: [0]);
 
-        CliResult r = await sim.RunAsync("read", "D0", "--unit", "5", "--timeout", "50", "--retries", "0");
+        CliResult r = await sim.RunAsync("read", "D0", "--unit", "5", "--timeout", "50ms", "--retries", "0");
 
         r.ExitCode.Should().Be(4, r.ToString());
         r.Err.Should().Contain("ms");
@@ -98,7 +98,7 @@ public sealed class CliExitCodeTests
     {
         await using var sim = await SimulatedPlc.StartAsync(units: [0]);
 
-        CliResult r = await sim.RunAsync("status", "--unit", "6", "--timeout", "30", "--retries", "0", "--verbose");
+        CliResult r = await sim.RunAsync("status", "--unit", "6", "--timeout", "30ms", "--retries", "0", "--verbose");
 
         r.ExitCode.Should().Be(4, r.ToString());
         r.Err.Should().Contain("HostLinkTimeoutException").And.Contain(" at ");
@@ -131,7 +131,7 @@ public sealed class CliExitCodeTests
         await using var sim = await SimulatedPlc.StartAsync(turnaround: TimeSpan.FromSeconds(3));
         using var cts = new CancellationTokenSource(TimeSpan.FromMilliseconds(300));
 
-        CliResult r = await Cli.RunAsync(cts.Token, "status", "--timeout", "10000", "--tcp", sim.Endpoint);
+        CliResult r = await Cli.RunAsync(cts.Token, "status", "--timeout", "10s", "--tcp", sim.Endpoint);
 
         r.ExitCode.Should().Be(1, r.ToString());
         r.Err.Should().Contain("Cancelled");

@@ -14,7 +14,7 @@ public sealed class WorkerConfigurationTests
     {
         { "HostLink:Links:plc:Groups:g:Interval", "abc", "HostLink:Links:plc:Groups:g:Interval 'abc'" },
         { "HostLink:Links:plc:Groups:g:Interval", "5", "HostLink:Links:plc:Groups:g:Interval '5'" },
-        { "HostLink:Links:plc:Groups:g:Interval", "500ms", "HostLink:Links:plc:Groups:g:Interval '500ms'" },
+        { "HostLink:Links:plc:Groups:g:Interval", "500 parsecs", "HostLink:Links:plc:Groups:g:Interval '500 parsecs' is not a duration" },
         { "HostLink:Links:plc:Groups:g:Count", "abc", "HostLink:Links:plc:Groups:g:Count 'abc'" },
         { "HostLink:Links:plc:Groups:g:Unit", "one", "HostLink:Links:plc:Groups:g:Unit 'one'" },
         { "HostLink:Links:plc:Protocol", "Finz", "HostLink:Links:plc:Protocol 'Finz'" },
