@@ -245,6 +245,7 @@ public sealed class VirtualPlc
     /// <exception cref="ArgumentOutOfRangeException">The range is outside the area.</exception>
     public ushort[] ReadWords(PlcArea area, int start, int count, int bank = 0)
     {
+        (area, start) = PlcAreaInfo.CioAlias(area, start);
         ushort[] storage = Storage(area, bank);
         CheckRange(storage, area, start, count);
         var result = new ushort[count];
@@ -274,6 +275,7 @@ public sealed class VirtualPlc
     /// <exception cref="ArgumentOutOfRangeException">The range is outside the area.</exception>
     public void WriteWords(PlcArea area, int start, ReadOnlySpan<ushort> words, int bank = 0)
     {
+        (area, start) = PlcAreaInfo.CioAlias(area, start);
         ushort[] storage = Storage(area, bank);
         CheckRange(storage, area, start, words.Length);
         lock (_gate)
@@ -336,6 +338,7 @@ public sealed class VirtualPlc
     public void SetBit(PlcArea area, int word, int bit, bool value, int bank = 0)
     {
         CheckBit(area, bit);
+        (area, word) = PlcAreaInfo.CioAlias(area, word);
         ushort[] storage = Storage(area, bank);
         CheckRange(storage, area, word, 1);
         lock (_gate)
