@@ -47,6 +47,7 @@ internal sealed class FrameChannel : IValueTaskSource<bool>
     private int _end;
     private bool _reading;
     private bool _closed;
+    private bool _stopped;
     private HostLinkConnectionException? _closedReason;
     private bool _waiting;
     private bool _deadlinePassed;
@@ -116,13 +117,19 @@ internal sealed class FrameChannel : IValueTaskSource<bool>
     /// <summary>Ends the transaction: the deadline is disarmed and the caller's token let go.</summary>
     public void End()
     {
-        _deadline.Change(Timeout.InfiniteTimeSpan, Timeout.InfiniteTimeSpan);
         _callerRegistration.Dispose();
         _callerRegistration = default;
         _callerToken = default;
         CancellationTokenSource? spent = null;
         lock (_lock)
         {
+            if (_stopped)
+            {
+                // The link broke during the transaction: the timer and the write source are gone with the stream.
+                return;
+            }
+
+            _deadline.Change(Timeout.InfiniteTimeSpan, Timeout.InfiniteTimeSpan);
             _deadlineTimeout = Timeout.InfiniteTimeSpan;
             if (_writeAbort.IsCancellationRequested)
             {
@@ -363,9 +370,10 @@ internal sealed class FrameChannel : IValueTaskSource<bool>
     public async ValueTask WaitStoppedAsync()
     {
         await _readingStopped.Task.ConfigureAwait(false);
-        _deadline.Dispose();
         lock (_lock)
         {
+            _stopped = true;
+            _deadline.Dispose();
             _writeAbort.Dispose();
         }
     }
