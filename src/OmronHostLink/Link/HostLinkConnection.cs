@@ -25,6 +25,7 @@ internal sealed class HostLinkConnection : IAsyncDisposable, IDisposable
     private readonly IHostLinkTransport _transport;
     private readonly ILogger _logger;
     private readonly TimeProvider _time;
+    private readonly HostLinkConnectionOptions _options;
     private readonly SemaphoreSlim _gate = new(1, 1);
     private readonly TransactionAttempt _attempt;
     private readonly Resynchroniser _resynchroniser;
@@ -35,11 +36,13 @@ internal sealed class HostLinkConnection : IAsyncDisposable, IDisposable
     private int _closedAtOnce;
     private LinkStatus _status = new(LinkState.Closed);
     private int _sid;
+    private long _lastExchangeEnded;
 
     public HostLinkConnection(IHostLinkTransport transport, HostLinkConnectionOptions options)
     {
         _transport = transport;
         _time = options.TimeProvider;
+        _options = options;
         Timing = transport.LineTiming ?? options.LineTiming;
         _logger = options.LoggerFactory?.CreateLogger("OmronHostLink") ?? NullLogger.Instance;
         _attempt = new TransactionAttempt(Timing, options.TurnaroundAllowance, options.LocalEcho);
@@ -50,6 +53,9 @@ internal sealed class HostLinkConnection : IAsyncDisposable, IDisposable
 
     /// <summary>Where the link stands between transactions.</summary>
     public LinkState State => _status.State;
+
+    /// <summary>How often the transport has been opened: a change tells what a PLC held for this link (QQ registrations) may be gone.</summary>
+    public long Openings { get; private set; }
 
     /// <summary>The timing every deadline is computed from.</summary>
     public LineTiming Timing { get; }
@@ -253,6 +259,7 @@ internal sealed class HostLinkConnection : IAsyncDisposable, IDisposable
         {
             _attempt.Reset();
             FrameChannel channel = await OpenedAsync(cancellationToken).ConfigureAwait(false);
+            await KeepSendIntervalAsync(unit, cancellationToken).ConfigureAwait(false);
             channel.FrameObserver = FrameObserver;
             channel.Begin(cancellationToken);
             try
@@ -279,6 +286,7 @@ internal sealed class HostLinkConnection : IAsyncDisposable, IDisposable
             finally
             {
                 channel.End();
+                _lastExchangeEnded = _time.GetTimestamp();
             }
         }
         finally
@@ -286,6 +294,31 @@ internal sealed class HostLinkConnection : IAsyncDisposable, IDisposable
             frames?.Add(_attempt);
             _gate.Release();
         }
+    }
+
+    /// <summary>
+    /// The one place the next command waits for the send interval: until the gap since the last exchange ended (whatever
+    /// it was, answered or not) is the longer of the link's and the unit's.
+    /// </summary>
+    private Task KeepSendIntervalAsync(int unit, CancellationToken cancellationToken)
+    {
+        TimeSpan gap = _options.SendIntervalFor(unit);
+        if (gap <= TimeSpan.Zero || _lastExchangeEnded == 0)
+        {
+            return Task.CompletedTask;
+        }
+
+        TimeSpan remaining = gap - _time.GetElapsedTime(_lastExchangeEnded);
+        if (remaining <= TimeSpan.Zero)
+        {
+            return Task.CompletedTask;
+        }
+
+#if NET
+        return Task.Delay(remaining, _time, cancellationToken);
+#else
+        return _time.Delay(remaining, cancellationToken);
+#endif
     }
 
     /// <summary>Carries a request: resynchronises first if the last exchange failed.</summary>
@@ -389,6 +422,7 @@ internal sealed class HostLinkConnection : IAsyncDisposable, IDisposable
         }
 
         _status = new LinkStatus(LinkState.Ready);
+        Openings++;
         channel.Start();
         _instruments.Connection(LinkName, +1);
         HostLinkLog.Opened(_logger, _transport.Description);
