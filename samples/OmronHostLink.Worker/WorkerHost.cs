@@ -39,7 +39,7 @@ public static class WorkerHost
 
         IConfigurationSection hostLink = builder.Configuration.GetSection(WorkerOptions.SectionName);
         services.AddOptions<WorkerOptions>()
-            .Configure(options => ConfigurationSchema.Bind(hostLink, options))
+            .Configure(options => LinkClients.Bind(hostLink, options))
             .ValidateOnStart();
         services.AddSingleton<IValidateOptions<WorkerOptions>, WorkerOptionsValidator>();
         services.AddLinkClients(builder.Configuration);
