@@ -34,10 +34,11 @@ internal sealed class ConnectionOptions
         var line = new SerialLineSettings();
         TimeSpan timeout = defaultTimeout ?? new HostLinkClientOptions().TurnaroundAllowance;
         Port = new Option<string?>("--port") { Description = "Serial port: COM3, /dev/ttyUSB0, or any device path (a pty).", HelpName = "name" };
-        Baud = OptionValues.Integer("--baud", "Baud rate.", line.BaudRate, int.MinValue, int.MaxValue, "n");
-        DataBits = OptionValues.Integer("--data-bits", "Data bits: 7 or 8.", line.DataBits, int.MinValue, int.MaxValue, "7|8");
-        Parity = OptionValues.Choice("--parity", "Parity.", line.Parity.ToString().ToLowerInvariant(), Enum.GetNames(typeof(SerialParity)).Select(n => n.ToLowerInvariant()).ToArray());
-        StopBits = OptionValues.Integer("--stop-bits", "Stop bits: 1 or 2.", (int)line.StopBits, int.MinValue, int.MaxValue, "1|2");
+        Baud = OptionValues.OptionalInteger("--baud", $"Baud rate (default {line.BaudRate}).", int.MinValue, int.MaxValue, "n");
+        DataBits = OptionValues.OptionalInteger("--data-bits", $"Data bits: 7 or 8 (default {line.DataBits}).", int.MinValue, int.MaxValue, "7|8");
+        string[] parities = Enum.GetNames(typeof(SerialParity)).Select(n => n.ToLowerInvariant()).ToArray();
+        Parity = OptionValues.OptionalChoice("--parity", $"Parity (default {line.Parity.ToString().ToLowerInvariant()}).", string.Join('|', parities), parities);
+        StopBits = OptionValues.OptionalInteger("--stop-bits", $"Stop bits: 1 or 2 (default {(int)line.StopBits}).", int.MinValue, int.MaxValue, "1|2");
         Tcp = new Option<string?>("--tcp") { Description = "A serial device server or the simulator, as host:port.", HelpName = "host:port" };
         Unit = OptionValues.Integer("--unit", "The PLC's unit number, 0-31.", 0, int.MinValue, int.MaxValue, "n");
         Timeout = Durations.Option("--timeout", "Time the PLC may take to start answering a frame (the wire time is added); default " + Durations.Format(timeout) + ".", null, TimeSpan.MinValue, TimeSpan.MaxValue);
@@ -53,13 +54,13 @@ internal sealed class ConnectionOptions
 
     public Option<string?> Port { get; }
 
-    public Option<int> Baud { get; }
+    public Option<int?> Baud { get; }
 
-    public Option<int> DataBits { get; }
+    public Option<int?> DataBits { get; }
 
-    public Option<string> Parity { get; }
+    public Option<string?> Parity { get; }
 
-    public Option<int> StopBits { get; }
+    public Option<int?> StopBits { get; }
 
     public Option<string?> Tcp { get; }
 
@@ -114,7 +115,7 @@ internal sealed class ConnectionOptions
         settings.Serial.BaudRate = options.GetValue(Baud);
         settings.Serial.DataBits = options.GetValue(DataBits);
         settings.Serial.Parity = Enum.TryParse(options.GetValue(Parity), ignoreCase: true, out SerialParity parity) ? parity : null;
-        settings.Serial.StopBits = (SerialStopBits)options.GetValue(StopBits);
+        settings.Serial.StopBits = (SerialStopBits?)options.GetValue(StopBits);
         string? tcp = options.GetValue(Tcp);
         if (!string.IsNullOrWhiteSpace(tcp))
         {
@@ -191,6 +192,10 @@ internal sealed class ConnectionOptions
         catch (UsageException e)
         {
             result.AddError(e.Message);
+        }
+        catch (InvalidOperationException)
+        {
+            // An option's value could not be read at all: its own parse error says so.
         }
     }
 }
