@@ -16,11 +16,11 @@ internal static class FrameDirection
     /// both (<c>@00SC0050*</c>: SC to PROGRAM, and SC's normal completion; a TS echo) is ambiguous and explained as a
     /// command; one that is neither is explained as a command.
     /// </summary>
-    public static void Recognise(FrameExplanation x, string header, ReadOnlySpan<byte> text)
+    public static void Recognise(FrameExplanation x, string header, ReadOnlySpan<byte> text, CModeCommandTable table)
     {
         bool fins = header == CModeHeaders.Fins;
-        string? commandFault = fins ? FinsCommandFault(text) : CModeCommandFault(header, text, x.Final);
-        bool answer = fins ? IsFinsAnswer(text, x.Final) : IsCModeAnswer(header, text, x.Final);
+        string? commandFault = fins ? FinsCommandFault(text) : CModeCommandFault(header, text, x.Final, table);
+        bool answer = fins ? IsFinsAnswer(text, x.Final) : IsCModeAnswer(header, text, x.Final, table);
         if (answer && commandFault is not null)
         {
             x.IsResponse = true;
@@ -30,7 +30,8 @@ internal static class FrameDirection
         else if (answer)
         {
             x.DirectionFrom = FrameExplanation.FromAmbiguous;
-            string answerIs = header == CModeHeaders.Test ? "the PLC's echo of it" : $"an answer with end code {Encoding.ASCII.GetString(text[..CModeResponse.EndCodeLength])}";
+            int sub = table.Find(Encoding.ASCII.GetBytes(header), text)?.SubHeaderLength ?? 0;
+            string answerIs = header == CModeHeaders.Test ? "the PLC's echo of it" : $"an answer with end code {Encoding.ASCII.GetString(text.Slice(sub, CModeResponse.EndCodeLength))}";
             x.Notes.Add($"This frame is ambiguous: the same characters are a well-formed {header} command and {answerIs}. Explained as a command; give --response to explain it as the answer.");
         }
         else if (commandFault is null)
@@ -43,19 +44,19 @@ internal static class FrameDirection
         }
     }
 
-    /// <summary>Why the frame is not a command a PLC would take, or null when it is one (or may be the first frame of a divided write).</summary>
-    private static string? CModeCommandFault(string header, ReadOnlySpan<byte> text, bool final)
+    /// <summary>Why the frame is not a command a PLC would take, or null when it is one (or may be the first frame of a divided command).</summary>
+    private static string? CModeCommandFault(string header, ReadOnlySpan<byte> text, bool final, CModeCommandTable table)
     {
         byte[] h = Encoding.ASCII.GetBytes(header);
         if (!final)
         {
-            // Only writes are divided into frames by the host.
-            return CModeAreaInfo.TryFromHeader(h, out _, out bool write) && write ? null : $"{header} is never divided into frames by the host";
+            // Only commands whose rows allow it (writes, QQMR) are divided into frames by the host.
+            return table.Find(h, text) is { MultiFrameCommand: true } ? null : $"{header} is never divided into frames by the host";
         }
 
         try
         {
-            CModeCommand.Parse(h, text);
+            CModeCommandParser.Parse(table, h, text);
             return null;
         }
         catch (CModeCommandRejectedException e)
@@ -65,10 +66,11 @@ internal static class FrameDirection
     }
 
     /// <summary>
-    /// Whether the frame is a well-formed C-mode answer: an end code the manuals define, no data after an error end
-    /// code, and data of the shape the header's answer has (checked with the same decoders as <c>--response</c>).
+    /// Whether the frame is a well-formed C-mode answer: an end code the manuals define (after the sub-header of a
+    /// command that has one), no data after an error end code, and data of the shape the row's answer has (checked with
+    /// the same decoders as <c>--response</c>).
     /// </summary>
-    private static bool IsCModeAnswer(string header, ReadOnlySpan<byte> text, bool final)
+    private static bool IsCModeAnswer(string header, ReadOnlySpan<byte> text, bool final, CModeCommandTable table)
     {
         switch (header)
         {
@@ -79,22 +81,25 @@ internal static class FrameDirection
                 return final && text.IsEmpty;
             case CModeHeaders.Txd:
                 return final;
-            case CModeHeaders.Abort:
-                return false;
         }
 
-        if (!CModeHeaders.IsExecutable(Encoding.ASCII.GetBytes(header))
-            || text.Length < CModeResponse.EndCodeLength
-            || !EndCodes.TryParse(text[..CModeResponse.EndCodeLength], out EndCode code)
+        CModeCommandRow? row = table.Find(Encoding.ASCII.GetBytes(header), text);
+        if (row is null || !row.IsExecutable || !row.ExpectsAnswer || !row.AnswerHasEndCode)
+        {
+            return false;
+        }
+
+        ReadOnlySpan<byte> afterSub = text[row.SubHeaderLength..];
+        if (afterSub.Length < CModeResponse.EndCodeLength
+            || !EndCodes.TryParse(afterSub[..CModeResponse.EndCodeLength], out EndCode code)
             || code == EndCode.UndefinedHeader
             || !EndCodes.IsDefined(code))
         {
             return false;
         }
 
-        ReadOnlySpan<byte> data = text[CModeResponse.EndCodeLength..];
-        bool read = CModeAreaInfo.TryFromHeader(Encoding.ASCII.GetBytes(header), out _, out bool write) && !write;
-        if (code != EndCode.NormalCompletion || !(read || header is CModeHeaders.StatusRead or CModeHeaders.ErrorRead or CModeHeaders.ModelRead))
+        ReadOnlySpan<byte> data = afterSub[CModeResponse.EndCodeLength..];
+        if (code != EndCode.NormalCompletion || row.DescribeAnswer is null)
         {
             // Error answers, and the answers to writes, SC and the force commands, end with the end code.
             return final && data.IsEmpty;
@@ -103,7 +108,7 @@ internal static class FrameDirection
         var scratch = new FrameExplanation { Frame = string.Empty, Final = final };
         try
         {
-            FrameExplainer.DecodeData(scratch, header, data);
+            FrameExplainer.DecodeData(scratch, row, data);
         }
         catch (HostLinkFrameException)
         {

@@ -38,10 +38,13 @@ internal static class FrameExplainer
         return bytes;
     }
 
-    /// <summary>Explains one frame.</summary>
+    /// <summary>Explains one frame with the standard command table.</summary>
     /// <param name="input">The frame as the user typed it.</param>
     /// <param name="response">True for an answer, false for a command, null to tell from the frame where it can.</param>
-    public static FrameExplanation Explain(string input, bool? response)
+    public static FrameExplanation Explain(string input, bool? response) => Explain(input, response, CModeCommandTable.Standard);
+
+    /// <summary>Explains one frame, looking C-mode headers up in <paramref name="table"/>.</summary>
+    internal static FrameExplanation Explain(string input, bool? response, CModeCommandTable table)
     {
         byte[] typed = Normalise(input);
         var x = new FrameExplanation
@@ -107,11 +110,11 @@ internal static class FrameExplainer
         string header = Encoding.ASCII.GetString(frame, 3, 2);
         ReadOnlySpan<byte> text = frame.AsSpan(MessagePrefix.Length, check.FirstFrameTextLength);
         x.Header = header;
-        x.Name = CModeHeaders.Name(header);
+        x.Name = table.Name(header, text);
         x.Text = Encoding.ASCII.GetString(text);
         if (response is null)
         {
-            FrameDirection.Recognise(x, header, text);
+            FrameDirection.Recognise(x, header, text, table);
         }
 
         CheckLength(x, frame.Length, first: true, fins: header == CModeHeaders.Fins);
@@ -124,10 +127,10 @@ internal static class FrameExplainer
                 ExplainFinsCommand(x, text, check.Unit);
                 break;
             case (false, true):
-                ExplainResponse(x, header, text);
+                ExplainResponse(x, header, text, table);
                 break;
             default:
-                ExplainCommand(x, header, text);
+                ExplainCommand(x, header, text, table);
                 break;
         }
 
@@ -222,7 +225,7 @@ internal static class FrameExplainer
         return [.. typed, .. star ? "\r"u8 : "*\r"u8];
     }
 
-    private static void ExplainCommand(FrameExplanation x, string header, ReadOnlySpan<byte> text)
+    private static void ExplainCommand(FrameExplanation x, string header, ReadOnlySpan<byte> text, CModeCommandTable table)
     {
         if (!x.Final)
         {
@@ -232,7 +235,7 @@ internal static class FrameExplainer
         CModeCommand command;
         try
         {
-            command = CModeCommand.Parse(Encoding.ASCII.GetBytes(header), text);
+            command = CModeCommandParser.Parse(table, Encoding.ASCII.GetBytes(header), text);
         }
         catch (CModeCommandRejectedException) when (!x.Final)
         {
@@ -247,51 +250,10 @@ internal static class FrameExplainer
             return;
         }
 
-        switch (command)
-        {
-            case AreaReadCommand r:
-                AreaFields(x, r.Area, r.Bank, r.Begin, r.Count);
-                break;
-            case AreaWriteCommand w:
-                AreaFields(x, w.Area, w.Bank, w.Begin, w.Words.Length);
-                x.Field("words", Longs(w.Words));
-                break;
-            case StatusChangeCommand sc:
-                x.Field("mode", sc.Mode.ToString().ToUpperInvariant());
-                break;
-            case ErrorReadCommand mf:
-                x.Field("clear", mf.Clear);
-                break;
-            case Protocol.CMode.TestCommand ts:
-                x.Field("text", ts.Text);
-                break;
-            case ForceBitCommand k:
-                x.Field("action", k.Set ? "set" : "reset");
-                x.Field("area", ForceAreaInfo.Name(k.Area).Trim());
-                x.Field("word", (long)k.Word);
-                x.Field("bit", (long)k.Bit);
-                break;
-            case MultipleForceCommand fk:
-                x.Field("area", ForceAreaInfo.Name(fk.Area).Trim());
-                x.Field("word", (long)fk.Word);
-                x.Field("actionsBit15To0", fk.Actions.Select(a => a.ToString()).ToArray());
-                break;
-        }
+        command.Row.DescribeCommand?.Invoke(command, x);
     }
 
-    private static void AreaFields(FrameExplanation x, CModeArea area, int bank, int begin, int count)
-    {
-        x.Field("area", CModeAreaInfo.DisplayName(area));
-        if (area == CModeArea.Em)
-        {
-            x.Field("bank", (long)bank);
-        }
-
-        x.Field("begin", (long)begin);
-        x.Field("count", (long)count);
-    }
-
-    private static void ExplainResponse(FrameExplanation x, string header, ReadOnlySpan<byte> text)
+    private static void ExplainResponse(FrameExplanation x, string header, ReadOnlySpan<byte> text, CModeCommandTable table)
     {
         switch (header)
         {
@@ -315,12 +277,15 @@ internal static class FrameExplainer
                 return;
         }
 
-        if (!EndCodeOf(x, text, out EndCode endCode))
+        // A command with a sub-header (QQMR, QQIR) has it echoed before the end code.
+        CModeCommandRow? row = table.Find(Encoding.ASCII.GetBytes(header), text);
+        int sub = row?.SubHeaderLength ?? 0;
+        if (!EndCodeOf(x, text[sub..], out EndCode endCode))
         {
             return;
         }
 
-        ReadOnlySpan<byte> data = text[CModeResponse.EndCodeLength..];
+        ReadOnlySpan<byte> data = text[(sub + CModeResponse.EndCodeLength)..];
         x.Data = Encoding.ASCII.GetString(data);
         if (endCode != EndCode.NormalCompletion)
         {
@@ -334,7 +299,7 @@ internal static class FrameExplainer
 
         try
         {
-            DecodeData(x, header, data);
+            DecodeData(x, row, data);
         }
         catch (HostLinkFrameException e)
         {
@@ -342,63 +307,17 @@ internal static class FrameExplainer
         }
     }
 
-    /// <summary>Decodes the data of a normal-completion C-mode answer into fields.</summary>
+    /// <summary>Decodes the data of a normal-completion C-mode answer into fields, with its row's decoder.</summary>
     /// <exception cref="HostLinkFrameException">The data does not have the shape of the header's answer.</exception>
-    internal static void DecodeData(FrameExplanation x, string header, ReadOnlySpan<byte> data)
+    internal static void DecodeData(FrameExplanation x, CModeCommandRow? row, ReadOnlySpan<byte> data)
     {
-        if (CModeAreaInfo.TryFromHeader(Encoding.ASCII.GetBytes(header), out CModeArea area, out bool write) && !write)
+        if (row?.DescribeAnswer is { } describe)
         {
-            if (area == CModeArea.TimerCounterStatus)
-            {
-                var flags = new bool[data.Length];
-                CModeResponse.ReadFlags(data, flags);
-                x.Field("flags", flags);
-                return;
-            }
-
-            if (data.Length % 4 != 0)
-            {
-                x.Problems.Add($"Read data comes in 4-digit words; {data.Length} characters is not a whole number of words.");
-                return;
-            }
-
-            var words = new ushort[data.Length / 4];
-            CModeResponse.ReadWords(data, words);
-            x.Field("words", Longs(words));
-            if (!x.Final)
-            {
-                x.Notes.Add("More words follow in the next frames (the host asks for each with a bare CR).");
-            }
-
-            return;
+            describe(data, x);
         }
-
-        switch (header)
+        else if (!data.IsEmpty)
         {
-            case CModeHeaders.StatusRead:
-                PlcStatus status = CModeResponse.ReadStatus(data);
-                x.Field("mode", status.Mode.ToString().ToUpperInvariant());
-                x.Field("statusWord", (long)status.StatusWord!.Value);
-                x.Field("userMemoryWritable", status.UserMemoryWritable == true);
-                x.Field("message", status.Message);
-                break;
-            case CModeHeaders.ErrorRead:
-                PlcErrorInfo errors = CModeResponse.ReadErrors(data);
-                x.Field("errorWords", new long[] { errors.FirstWord, errors.SecondWord });
-                x.Field("hasErrors", errors.HasErrors);
-                break;
-            case CModeHeaders.ModelRead:
-                PlcModel model = CModeResponse.ReadModel(data);
-                x.Field("modelCode", model.Code.ToString("X2", CultureInfo.InvariantCulture));
-                x.Field("model", model.Name);
-                break;
-            default:
-                if (!data.IsEmpty)
-                {
-                    x.Field("data", Encoding.ASCII.GetString(data));
-                }
-
-                break;
+            x.Field("data", Encoding.ASCII.GetString(data));
         }
     }
 
@@ -529,16 +448,5 @@ internal static class FrameExplainer
         var text = new byte[bytes.Length * 2];
         FinsBytes.WriteHex(bytes, text);
         return Encoding.ASCII.GetString(text);
-    }
-
-    private static long[] Longs(ReadOnlySpan<ushort> words)
-    {
-        var result = new long[words.Length];
-        for (int i = 0; i < words.Length; i++)
-        {
-            result[i] = words[i];
-        }
-
-        return result;
     }
 }

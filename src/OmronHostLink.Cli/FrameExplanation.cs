@@ -6,7 +6,7 @@ namespace OmronHostLink.Cli;
 /// A decoded frame: what <c>explain</c> prints, and, property for property in this order, its JSON document (written by
 /// <see cref="ExplainJsonContext"/>).
 /// </summary>
-internal sealed class FrameExplanation
+internal sealed class FrameExplanation : OmronHostLink.Protocol.ICommandFields
 {
     /// <summary><see cref="DirectionFrom"/>: the user said which way the frame goes.</summary>
     public const string FromOption = "option";
@@ -69,6 +69,12 @@ internal sealed class FrameExplanation
     public string? FcsFound { get; set; }
 
     public void Field(string name, object? value) => Fields.Add(name, value);
+
+    /// <inheritdoc/>
+    public void Note(string note) => Notes.Add(note);
+
+    /// <inheritdoc/>
+    public void Problem(string problem) => Problems.Add(problem);
 
     /// <summary>Whether <paramref name="found"/> differs from <paramref name="expected"/> (upper case) only in letter case.</summary>
     public static bool IsLowercaseOf(string found, string expected)

@@ -15,7 +15,7 @@ namespace OmronHostLink.Simulator;
 /// read-only auxiliary words A0-A447. The rules a host meets (writes refused in RUN mode, A0-A447 read-only, C-mode
 /// ranges) are applied by <see cref="Protocol.HostLinkResponder"/>.
 /// </remarks>
-public sealed class VirtualPlc
+public sealed class VirtualPlc : OmronHostLink.Protocol.CMode.ICModePlc
 {
     /// <summary>The number of EM banks (0-C).</summary>
     public const int EmBankCount = PlcAreaInfo.EmBankCount;
@@ -42,6 +42,7 @@ public sealed class VirtualPlc
     private ushort _error2;
     private TimeSpan _clockOffset;
     private bool _umProtected;
+    private readonly Dictionary<(int Unit, string Key), object> _unitState = new();
 
     /// <summary>MS program area code 011: 30K steps.</summary>
     private const int ProgramAreaThirtyKSteps = 0b011;
@@ -245,6 +246,7 @@ public sealed class VirtualPlc
     /// <exception cref="ArgumentOutOfRangeException">The range is outside the area.</exception>
     public ushort[] ReadWords(PlcArea area, int start, int count, int bank = 0)
     {
+        (area, start) = PlcAreaInfo.CioAlias(area, start);
         ushort[] storage = Storage(area, bank);
         CheckRange(storage, area, start, count);
         var result = new ushort[count];
@@ -274,6 +276,7 @@ public sealed class VirtualPlc
     /// <exception cref="ArgumentOutOfRangeException">The range is outside the area.</exception>
     public void WriteWords(PlcArea area, int start, ReadOnlySpan<ushort> words, int bank = 0)
     {
+        (area, start) = PlcAreaInfo.CioAlias(area, start);
         ushort[] storage = Storage(area, bank);
         CheckRange(storage, area, start, words.Length);
         lock (_gate)
@@ -336,6 +339,7 @@ public sealed class VirtualPlc
     public void SetBit(PlcArea area, int word, int bit, bool value, int bank = 0)
     {
         CheckBit(area, bit);
+        (area, word) = PlcAreaInfo.CioAlias(area, word);
         ushort[] storage = Storage(area, bank);
         CheckRange(storage, area, word, 1);
         lock (_gate)
@@ -583,5 +587,44 @@ public sealed class VirtualPlc
             PlcArea.Em => throw new ArgumentOutOfRangeException(nameof(bank), bank, "EM banks are 0-12 (0-C)."),
             _ => throw new ArgumentOutOfRangeException(nameof(area), area, "Unknown area."),
         };
+    }
+
+    /// <summary>
+    /// Restarts the PLC as a power cycle does: what commands registered per unit (the QQMR registration) is lost; the
+    /// memory, mode and errors stay as they are (the simulator keeps its memory like a battery-backed one).
+    /// </summary>
+    public void Restart()
+    {
+        lock (_gate)
+        {
+            _unitState.Clear();
+        }
+    }
+
+    byte OmronHostLink.Protocol.CMode.ICModePlc.StatusLowByte => StatusLowByte;
+
+    void OmronHostLink.Protocol.CMode.ICModePlc.SetBit(PlcArea area, int word, int bit, bool value) => SetBit(area, word, bit, value);
+
+    object? OmronHostLink.Protocol.CMode.ICModePlc.GetUnitState(int unit, string key)
+    {
+        lock (_gate)
+        {
+            return _unitState.TryGetValue((unit, key), out object? value) ? value : null;
+        }
+    }
+
+    void OmronHostLink.Protocol.CMode.ICModePlc.SetUnitState(int unit, string key, object? value)
+    {
+        lock (_gate)
+        {
+            if (value is null)
+            {
+                _unitState.Remove((unit, key));
+            }
+            else
+            {
+                _unitState[(unit, key)] = value;
+            }
+        }
     }
 }

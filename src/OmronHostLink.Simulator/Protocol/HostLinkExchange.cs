@@ -19,6 +19,7 @@ internal sealed class HostLinkExchange
     private State _state;
     private int _unit;
     private byte[] _header = [];
+    private CModeCommandRow? _row;
     private readonly List<byte> _text = new();
     private SimResponse? _response;
     private int _responseOffset;
@@ -55,6 +56,7 @@ internal sealed class HostLinkExchange
     public void Reset()
     {
         _state = State.Idle;
+        _row = null;
         _text.Clear();
         _response = null;
         _responseOffset = 0;
@@ -149,8 +151,9 @@ internal sealed class HostLinkExchange
     private LinkReply Error(ReadOnlySpan<byte> header, EndCode code)
     {
         int unit = _unit;
+        string? subHeader = _row?.SubHeader;
         Reset();
-        return Send(HostLinkResponder.EndCodeOnly(unit, header, code));
+        return Send(HostLinkResponder.EndCodeOnly(unit, header, code, subHeader));
     }
 
     private LinkReply First(ReadOnlySpan<byte> frame)
@@ -180,24 +183,19 @@ internal sealed class HostLinkExchange
             return Send(_responders[unit].Respond(unit, header, text));
         }
 
-        if (!CModeAreaInfo.TryFromHeader(header, out CModeArea area, out bool write) || !write)
+        CModeCommandRow? row = _responders[unit].Table.Find(header, text);
+        if (row is null || !row.IsExecutable || !row.MultiFrameCommand)
         {
             return Error(header, CModeHeaders.IsExecutable(header) ? EndCode.FormatError : EndCode.UndefinedHeader);
         }
 
-        // A divided write: the address and at least the first word must be in the first frame, in whole words.
-        int fixedLength = AreaWriteCommand.GetFixedTextLength(area);
-        if (text.Length < fixedLength + 4 || (text.Length - fixedLength) % 4 != 0)
+        if (row.CheckFrame?.Invoke(text, first: true) is { } refused)
         {
-            return Error(header, EndCode.FormatError);
-        }
-
-        if (!HexAscii.IsHex(text.Slice(fixedLength)) || !HexAscii.IsDecimal(text.Slice(fixedLength - 4, 4)) || !HexAscii.IsHex(text.Slice(0, CModeAreaInfo.BankLength(area))))
-        {
-            return Error(header, EndCode.EntryNumberDataError);
+            return Error(header, refused);
         }
 
         _header = header.ToArray();
+        _row = row;
         _text.Clear();
         AddText(text);
         _state = State.ReceivingCommand;
@@ -223,12 +221,12 @@ internal sealed class HostLinkExchange
             return Error(_header, EndCode.AbortedFcsError);
         }
 
-        if (text.Length % 4 != 0)
+        if (_row?.CheckFrame?.Invoke(text, first: false) is { } refused)
         {
-            return Error(_header, EndCode.AbortedFormatError);
+            return Error(_header, refused);
         }
 
-        if (!HexAscii.IsHex(text) || _text.Count + text.Length > MaxCommandText)
+        if (_text.Count + text.Length > MaxCommandText)
         {
             return Error(_header, EndCode.AbortedEntryNumberDataError);
         }

@@ -6,9 +6,9 @@ namespace OmronHostLink.Simulator.Protocol;
 
 /// <summary>
 /// Executes one complete C-mode command (all its frames joined) against a <see cref="VirtualPlc"/> and returns the
-/// answer, as a CS/CJ CPU Unit does: every command <see cref="CModeCommand.Parse"/> knows, FINS over Host Link (FA,
-/// through <see cref="FinsResponder"/>), IC for any other header,
-/// end code 01 for area writes and forcing in RUN mode, 14 and 15 for format and range errors, no answer to XZ.
+/// answer, as a CS/CJ CPU Unit does: every command its <see cref="CModeCommandTable"/> executes (each row parses and
+/// executes its command against the PLC), FINS over Host Link (FA, through <see cref="FinsResponder"/>), IC for any
+/// other header, 14 and 15 for format and range errors.
 /// Frame-level checks (FCS, frame length, the CR handshake of multi-frame exchanges) belong to the caller.
 /// </summary>
 public sealed class HostLinkResponder
@@ -17,7 +17,7 @@ public sealed class HostLinkResponder
     public const int ResponseFixedLength = CModeResponse.PrefixLength + CModeResponse.EndCodeLength;
 
     /// <summary>Completion flags an RG answer carries in each frame after the first.</summary>
-    public const int MaxFlagsPerLaterFrame = 124;
+    public const int MaxFlagsPerLaterFrame = AreaReadCommand.MaxFlagsPerLaterFrame;
 
     private readonly VirtualPlc _plc;
     private readonly FinsResponder _fins;
@@ -25,11 +25,22 @@ public sealed class HostLinkResponder
     /// <summary>Creates a responder for <paramref name="plc"/>.</summary>
     /// <param name="plc">The PLC whose memory and state the commands use.</param>
     public HostLinkResponder(VirtualPlc plc)
+        : this(plc, CModeCommandTable.Standard)
+    {
+    }
+
+    /// <summary>Creates a responder that executes the commands of <paramref name="table"/>.</summary>
+    internal HostLinkResponder(VirtualPlc plc, CModeCommandTable table)
     {
         ArgumentNullException.ThrowIfNull(plc);
+        ArgumentNullException.ThrowIfNull(table);
         _plc = plc;
         _fins = new FinsResponder(plc);
+        Table = table;
     }
+
+    /// <summary>The C-mode commands this PLC executes.</summary>
+    internal CModeCommandTable Table { get; }
 
     /// <summary>An answer carrying only an end code (error answers carry no text).</summary>
     /// <param name="unit">The unit number 0-31.</param>
@@ -37,7 +48,19 @@ public sealed class HostLinkResponder
     /// <param name="code">The end code; <see cref="EndCode.UndefinedHeader"/> gives the IC answer.</param>
     /// <returns>The answer.</returns>
     public static SimResponse EndCodeOnly(int unit, ReadOnlySpan<byte> header, EndCode code)
+        => EndCodeOnly(unit, header, code, null);
+
+    /// <summary>An answer carrying only an end code, after the sub-header of a command that has one (QQMR, QQIR).</summary>
+    internal static SimResponse EndCodeOnly(int unit, ReadOnlySpan<byte> header, EndCode code, string? subHeader)
     {
+        if (subHeader is not null && code != EndCode.UndefinedHeader)
+        {
+            CModeReply reply = CModeReply.EndCodeOnly(code, subHeader);
+            var text = new byte[CModeCommand.PrefixLength + reply.Text.Length];
+            CModeResponse.WriteMessageWithoutEndCode(text, unit, Encoding.ASCII.GetString(header), reply.Text);
+            return new SimResponse(text, text.Length, 1);
+        }
+
         if (code == EndCode.UndefinedHeader)
         {
             var ic = new byte[CModeCommand.PrefixLength];
@@ -85,197 +108,49 @@ public sealed class HostLinkResponder
             return _fins.Respond(unit, text);
         }
 
-        if (CModeHeaders.Is(header, CModeHeaders.Test))
+        CModeCommandRow? row = Table.Find(header, text);
+        if (row is null || !row.IsExecutable || !row.IsCommand)
         {
-            // TS echoes its text exactly, without an end code (the text is not checked like a command's).
-            if (text.Length > TestCommand.MaxTextLength)
-            {
-                return EndCodeOnly(unit, header, EndCode.FrameLengthError);
-            }
-
-            var echo = new byte[CModeCommand.PrefixLength + text.Length];
-            CModeResponse.WriteMessageWithoutEndCode(echo, unit, CModeHeaders.Test, text);
-            return new SimResponse(echo, CModeCommand.PrefixLength, 1);
+            return EndCodeOnly(unit, header, EndCode.UndefinedHeader);
         }
 
         CModeCommand command;
         try
         {
-            command = CModeCommand.Parse(header, text);
+            command = CModeCommandParser.Parse(Table, header, text);
         }
         catch (CModeCommandRejectedException e)
         {
-            return EndCodeOnly(unit, header, e.EndCode);
+            return Reply(unit, row, CModeReply.EndCodeOnly(e.EndCode, row.SubHeader));
         }
         catch (ArgumentException)
         {
-            return EndCodeOnly(unit, header, EndCode.FormatError);
+            return Reply(unit, row, CModeReply.EndCodeOnly(EndCode.FormatError, row.SubHeader));
         }
 
         lock (_plc.SyncRoot)
         {
-            return Execute(unit, command);
+            return Reply(unit, row, row.Execute!(command, _plc, unit));
         }
     }
 
     private static string HeaderString(ReadOnlySpan<byte> header) => Encoding.ASCII.GetString(header);
 
-    private static SimResponse Ok(int unit, string header, ReadOnlySpan<byte> data, int atomLength = 4)
+    /// <summary>Frames a row's reply: <c>@</c>, unit, header, then its text; null for no answer.</summary>
+    private static SimResponse? Reply(int unit, CModeCommandRow row, CModeReply? reply)
     {
-        var message = new byte[ResponseFixedLength + data.Length];
-        CModeResponse.WriteMessage(message, unit, header, EndCode.NormalCompletion, data);
-
-        // RG: 121 points in the first frame, 124 in later ones (C200HX RG page), one short of what 128 characters hold.
-        bool flags = header == CModeAreaInfo.ReadHeader(CModeArea.TimerCounterStatus);
-        return new SimResponse(message, ResponseFixedLength, atomLength, flags ? MaxFlagsPerLaterFrame : 0);
-    }
-
-    private SimResponse? Execute(int unit, CModeCommand command)
-    {
-        switch (command)
+        if (reply is null)
         {
-            case AreaReadCommand read:
-                return Read(unit, read);
-            case AreaWriteCommand write:
-                if (_plc.Mode == PlcMode.Run)
-                {
-                    return EndCodeOnly(unit, Encoding.ASCII.GetBytes(write.Header), EndCode.NotExecutableInRunMode);
-                }
-
-                for (int i = 0; i < write.Words.Length; i++)
-                {
-                    (PlcArea area, int word) = CModeAddressing.Locate(write.Area, write.Begin + i);
-                    _plc.WriteWord(area, word, write.Words[i], write.Bank);
-                }
-
-                return Ok(unit, write.Header, default);
-            case StatusReadCommand:
-            {
-                string? message = _plc.FalMessage;
-                Span<byte> data = stackalloc byte[message is null ? 4 : 20];
-                HexAscii.WriteWord(CModeResponse.StatusWord(_plc.Mode, _plc.StatusLowByte), data);
-                if (message is not null)
-                {
-                    data.Slice(4).Fill((byte)' ');
-                    Encoding.ASCII.GetBytes(message, data.Slice(4));
-                }
-
-                return Ok(unit, CModeHeaders.StatusRead, data, 1);
-            }
-
-            case StatusChangeCommand change:
-                _plc.Mode = change.Mode;
-                return Ok(unit, CModeHeaders.StatusChange, default);
-            case ErrorReadCommand errorRead:
-            {
-                PlcErrorInfo errors = _plc.Errors;
-                Span<byte> data = stackalloc byte[8];
-                HexAscii.WriteWord(errors.FirstWord, data);
-                HexAscii.WriteWord(errors.SecondWord, data.Slice(4));
-                if (errorRead.Clear)
-                {
-                    _plc.ClearErrors();
-                }
-
-                return Ok(unit, CModeHeaders.ErrorRead, data);
-            }
-
-            case ModelReadCommand:
-            {
-                Span<byte> data = stackalloc byte[2];
-                HexAscii.WriteByte(_plc.ModelCode, data);
-                return Ok(unit, CModeHeaders.ModelRead, data, 2);
-            }
-
-            case ForceBitCommand force:
-            {
-                if (_plc.Mode == PlcMode.Run)
-                {
-                    return EndCodeOnly(unit, Encoding.ASCII.GetBytes(force.Header), EndCode.NotExecutableInRunMode);
-                }
-
-                (PlcArea area, int word) = CModeAddressing.Locate(force.Area, force.Word);
-                _plc.ForceBit(area, word, force.Bit, force.Set);
-                return Ok(unit, force.Header, default);
-            }
-
-            case MultipleForceCommand multiple:
-                if (_plc.Mode == PlcMode.Run)
-                {
-                    return EndCodeOnly(unit, Encoding.ASCII.GetBytes(multiple.Header), EndCode.NotExecutableInRunMode);
-                }
-
-                MultipleForce(multiple);
-                return Ok(unit, CModeHeaders.MultipleForcedSetReset, default);
-            case ForcedCancelCommand:
-                if (_plc.Mode == PlcMode.Run)
-                {
-                    return EndCodeOnly(unit, Encoding.ASCII.GetBytes(command.Header), EndCode.NotExecutableInRunMode);
-                }
-
-                _plc.ReleaseAllForced();
-                return Ok(unit, CModeHeaders.ForcedSetResetCancel, default);
-            case AbortCommand:
-                return null;
-            default:
-                return EndCodeOnly(unit, Encoding.ASCII.GetBytes(command.Header), EndCode.UndefinedHeader);
-        }
-    }
-
-    private SimResponse Read(int unit, AreaReadCommand read)
-    {
-        int atom = read.ResponseAtomLength;
-        var data = new byte[read.Count * atom];
-        for (int i = 0; i < read.Count; i++)
-        {
-            (PlcArea area, int word) = CModeAddressing.Locate(read.Area, read.Begin + i);
-            if (read.Area == CModeArea.TimerCounterStatus)
-            {
-                data[i] = _plc.GetFlag(area, word) ? (byte)'1' : (byte)'0';
-            }
-            else
-            {
-                HexAscii.WriteWord(_plc.ReadWord(area, word, read.Bank), data.AsSpan(i * 4, 4));
-            }
+            return null;
         }
 
-        return Ok(unit, read.Header, data, atom);
-    }
-
-    private void MultipleForce(MultipleForceCommand command)
-    {
-        (PlcArea area, int word) = CModeAddressing.Locate(command.Area, command.Word);
-        bool flag = area is PlcArea.Timer or PlcArea.Counter;
-        for (int i = 0; i < 16; i++)
+        if (reply.IsUndefined)
         {
-            int bit = 15 - i;
-            ForceAction action = command.Actions[i];
-            if (flag && bit != 15)
-            {
-                continue;
-            }
-
-            int target = flag ? 0 : bit;
-            switch (action)
-            {
-                case ForceAction.Reset or ForceAction.Set:
-                    if (flag)
-                    {
-                        _plc.SetFlag(area, word, action == ForceAction.Set);
-                    }
-                    else
-                    {
-                        _plc.SetBit(area, word, target, action == ForceAction.Set);
-                    }
-
-                    break;
-                case ForceAction.ForcedReset or ForceAction.ForcedSet:
-                    _plc.ForceBit(area, word, target, action == ForceAction.ForcedSet);
-                    break;
-                case ForceAction.Cancel:
-                    _plc.ReleaseForced(area, word, target);
-                    break;
-            }
+            return EndCodeOnly(unit, Encoding.ASCII.GetBytes(row.Header), EndCode.UndefinedHeader);
         }
+
+        var message = new byte[CModeCommand.PrefixLength + reply.Text.Length];
+        CModeResponse.WriteMessageWithoutEndCode(message, unit, row.Header, reply.Text);
+        return new SimResponse(message, CModeCommand.PrefixLength + reply.FixedText, reply.AtomLength, reply.MaxContinuationText);
     }
 }

@@ -18,6 +18,7 @@ internal static class CModeAddressing
         PlcArea.Dm => CModeArea.Dm,
         PlcArea.Timer or PlcArea.Counter => CModeArea.TimerCounterPv,
         PlcArea.Em => CModeArea.Em,
+        PlcArea.Link => CModeArea.Lr,
         _ => throw new ArgumentException($"The {PlcAreaInfo.Name(area)} is not reachable with C-mode; use FINS.", nameof(area)),
     };
 

@@ -13,6 +13,7 @@ internal static class FinsAddressing
     {
         PlcArea.Timer => new FinsMemoryAddress(FinsMemoryArea.TimerCounterPv, FinsMemoryArea.TimerAddress(a.Word)),
         PlcArea.Counter => new FinsMemoryAddress(FinsMemoryArea.TimerCounterPv, FinsMemoryArea.CounterAddress(a.Word)),
+        PlcArea.Link => new FinsMemoryAddress(FinsMemoryArea.WordCode(FinsAreaKind.Cio, 0), PlcAreaInfo.CioAlias(a.Area, a.Word).Word),
         _ => new FinsMemoryAddress(FinsMemoryArea.WordCode(Kind(a.Area), a.Bank), a.Word),
     };
 
@@ -21,6 +22,7 @@ internal static class FinsAddressing
     {
         PlcArea.Timer => new FinsMemoryAddress(FinsMemoryArea.TimerCounterFlag, FinsMemoryArea.TimerAddress(a.Word)),
         PlcArea.Counter => new FinsMemoryAddress(FinsMemoryArea.TimerCounterFlag, FinsMemoryArea.CounterAddress(a.Word)),
+        PlcArea.Link => new FinsMemoryAddress(FinsMemoryArea.BitCode(FinsAreaKind.Cio, 0), PlcAreaInfo.CioAlias(a.Area, a.Word).Word, a.Bit),
         _ => new FinsMemoryAddress(FinsMemoryArea.BitCode(Kind(a.Area), a.Bank), a.Word, a.Bit),
     };
 

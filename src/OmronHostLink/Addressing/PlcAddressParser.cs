@@ -17,6 +17,13 @@ internal static class PlcAddressParser
         ("HR", PlcArea.Holding),
         ("AR", PlcArea.Auxiliary),
         ("EM", PlcArea.Em),
+
+        // C200H/CQM1/CPM-era names: IR and SR words are CIO words (read with RR), LR is its own area (RL), and "TC" is the
+        // shared timer/counter number space of those PLCs, read as a present value with RC like a timer.
+        ("IR", PlcArea.Cio),
+        ("SR", PlcArea.Cio),
+        ("LR", PlcArea.Link),
+        ("TC", PlcArea.Timer),
         ("D", PlcArea.Dm),
         ("W", PlcArea.Work),
         ("H", PlcArea.Holding),
@@ -57,7 +64,7 @@ internal static class PlcAddressParser
         {
             if (!TryMatchPrefix(s, out area, out i))
             {
-                error = $"unknown area '{LeadingLetters(s)}'; expected CIO, W, H, A, D, T, C or E<bank>_ followed by a word number";
+                error = $"unknown area '{LeadingLetters(s)}'; expected CIO, W, H, A, D, T, C or E<bank>_ followed by a word number (or, for C-series PLCs, IR, SR, LR, HR, AR, DM, TC)";
                 return false;
             }
 

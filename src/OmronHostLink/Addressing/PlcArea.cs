@@ -1,6 +1,6 @@
 namespace OmronHostLink;
 
-/// <summary>A memory area of a CS/CJ-series PLC, as named in CX-Programmer.</summary>
+/// <summary>A memory area of an Omron PLC, as named in CX-Programmer (CS/CJ names; older C-series names map onto them).</summary>
 public enum PlcArea
 {
     /// <summary>Core I/O area (CIO0–CIO6143); a plain number such as <c>100</c> means this area.</summary>
@@ -26,4 +26,10 @@ public enum PlcArea
 
     /// <summary>Extended data memory (E0_0–EC_32767), addressed by bank and word.</summary>
     Em,
+
+    /// <summary>
+    /// The LR (link relay) area of C-series PLCs (<c>LR0</c>–<c>LR199</c>), read with C-mode RL and written with WL. On
+    /// CS/CJ it is CIO 1000–1199 (LR <c>n</c> is CIO 1000 + <c>n</c>); on older models it is an area of its own.
+    /// </summary>
+    Link,
 }

@@ -12,7 +12,7 @@ internal static class PlcAreaInfo
     /// <summary>A0–A447 are written by the CPU only.</summary>
     public const int FirstWritableAuxiliaryWord = 448;
 
-    public static bool IsDefined(PlcArea area) => area >= PlcArea.Cio && area <= PlcArea.Em;
+    public static bool IsDefined(PlcArea area) => area >= PlcArea.Cio && area <= PlcArea.Link;
 
     public static int Size(PlcArea area) => area switch
     {
@@ -24,6 +24,7 @@ internal static class PlcAreaInfo
         PlcArea.Timer => 4096,
         PlcArea.Counter => 4096,
         PlcArea.Em => 32768,
+        PlcArea.Link => CModeAreaInfo.Size(CModeArea.Lr),
         _ => throw new ArgumentOutOfRangeException(nameof(area), area, $"{area} is not a PLC area."),
     };
 
@@ -47,6 +48,13 @@ internal static class PlcAreaInfo
         return forWrite ? CModeAreaInfo.WriteHeader(cmode) : CModeAreaInfo.ReadHeader(cmode);
     }
 
+    /// <summary>
+    /// The CIO word an address of <paramref name="area"/> shares memory with on CS/CJ (LR <c>n</c> is CIO 1000 + <c>n</c>),
+    /// or the address itself for other areas; FINS and the simulator's memory use it.
+    /// </summary>
+    public static (PlcArea Area, int Word) CioAlias(PlcArea area, int word) =>
+        area == PlcArea.Link ? (PlcArea.Cio, CModeAreaInfo.LrCioStart + word) : (area, word);
+
     /// <summary>Timers and counters name a T/C, not a word of bits.</summary>
     public static bool AllowsBit(PlcArea area) => area is not (PlcArea.Timer or PlcArea.Counter);
 
@@ -59,6 +67,7 @@ internal static class PlcAreaInfo
         PlcArea.Dm => "DM area",
         PlcArea.Timer => "timer area",
         PlcArea.Counter => "counter area",
+        PlcArea.Link => "LR area",
         _ => "EM area",
     };
 
@@ -78,6 +87,7 @@ internal static class PlcAreaInfo
             PlcArea.Dm => "D",
             PlcArea.Timer => "T",
             PlcArea.Counter => "C",
+            PlcArea.Link => "LR",
             _ => "E" + bank.ToString("X", CultureInfo.InvariantCulture) + "_",
         } + word.ToString(CultureInfo.InvariantCulture);
         return bit < 0 ? text : text + "." + bit.ToString("00", CultureInfo.InvariantCulture);

@@ -104,7 +104,7 @@ public partial class HostLinkUnit
     public ValueTask<PlcStatus> ReadStatusAsync(CancellationToken cancellationToken = default)
         => Options.CommandSet == HostLinkCommandSet.Fins
             ? FinsReadStatusAsync(cancellationToken)
-            : CModeAsync(StatusReadCommand.Instance, static (data, _) => CModeResponse.ReadStatus(data), 0, cancellationToken);
+            : CModeAsync(CModeCommands.StatusReadCommand, static (data, _) => CModeResponse.ReadStatus(data), 0, cancellationToken);
 
     /// <summary>
     /// Changes the operating mode (C-mode SC; FINS 0401/0402 when the protocol is FINS). Leaving RUN or MONITOR stops
@@ -127,7 +127,7 @@ public partial class HostLinkUnit
 
     /// <summary>Reads the PLC model code (MM).</summary>
     public ValueTask<PlcModel> ReadModelAsync(CancellationToken cancellationToken = default)
-        => CModeAsync(ModelReadCommand.Instance, static (data, _) => CModeResponse.ReadModel(data), 0, cancellationToken);
+        => CModeAsync(CModeCommands.ModelReadCommand, static (data, _) => CModeResponse.ReadModel(data), 0, cancellationToken);
 
     /// <summary>
     /// Sends TS (TEST) with <paramref name="text"/> and checks that the PLC echoes it unchanged. Returns the round-trip time.
@@ -153,7 +153,7 @@ public partial class HostLinkUnit
 
     /// <summary>Sends XZ (ABORT) to this unit: it drops the exchange it is in. The PLC sends no answer.</summary>
     public async ValueTask AbortAsync(CancellationToken cancellationToken = default)
-        => await Connection.ExecuteAsync(Request(AbortCommand.Instance), RetriesFor(AbortCommand.Instance.Effect), static (_, _) => true, 0, cancellationToken).ConfigureAwait(false);
+        => await Connection.ExecuteAsync(Request(CModeCommands.AbortCommand), RetriesFor(CModeCommands.AbortCommand.Effect), static (_, _) => true, 0, cancellationToken).ConfigureAwait(false);
 
     /// <summary>Sends <c>@**</c> (INITIALIZE): every unit on the line resets its Host Link transmission control. No answer.</summary>
     public ValueTask InitializeAsync(CancellationToken cancellationToken = default)

@@ -1,6 +1,3 @@
-using System.Globalization;
-using OmronHostLink.Protocol.Fins;
-
 namespace OmronHostLink.Link;
 
 /// <summary>
@@ -21,12 +18,9 @@ internal static class ErrorTypes
     /// <summary>The caller's token was cancelled.</summary>
     public const string Cancelled = "cancelled";
 
-    private static readonly Dictionary<EndCode, string> EndCodeNames = EndCodes.All.ToDictionary(c => c, c => c.ToString());
-
     /// <summary>
-    /// The name for <paramref name="failure"/>: one of the constants here; a C-mode end code's name
-    /// (<c>NotExecutableInRunMode</c>); <c>fins_</c> and a FINS response code without its flags (<c>fins_0401</c>);
-    /// else the exception's type name, as OpenTelemetry advises.
+    /// The name for <paramref name="failure"/>: one of the constants here; the name an end code gives itself
+    /// (<see cref="EndCodeException.ErrorType"/>); else the exception's type name, as OpenTelemetry advises.
     /// </summary>
     public static string Of(Exception failure) => failure switch
     {
@@ -34,15 +28,7 @@ internal static class ErrorTypes
         HostLinkFrameException => FrameError,
         HostLinkConnectionException => Connection,
         OperationCanceledException => Cancelled,
-        HostLinkEndCodeException e => Name(e.EndCode),
-        FinsEndCodeException e => Name(e.EndCode),
+        EndCodeException e => e.ErrorType,
         _ => failure.GetType().FullName ?? "_OTHER",
     };
-
-    /// <summary>The end code's name, or <c>end_code_</c> and its two characters for one the manuals do not define.</summary>
-    public static string Name(EndCode code)
-        => EndCodeNames.TryGetValue(code, out string? name) ? name : "end_code_" + code.ToCode();
-
-    /// <summary><c>fins_</c> and the response code without its relay and CPU-error flags.</summary>
-    public static string Name(FinsEndCode code) => "fins_" + code.Code.ToString("X4", CultureInfo.InvariantCulture);
 }

@@ -19,6 +19,12 @@ namespace OmronHostLink.Link;
 /// and anything the caller then blocks on cannot stall the reception of later bytes. The buffer is bounded: past
 /// 64 KiB without a frame being taken the loop stops reading until the buffer drains.
 /// <para>
+/// Not a <c>System.IO.Pipelines</c> pipe: its reader resumes either inline in the writer's flush, where the loop could
+/// not read on until the caller returns (a caller that blocks would stall reception), or through a scheduler, one more
+/// hand-off and a work item per chunk; a pipe-based link measured slower and allocated more per read
+/// (docs/performance.md, read path).
+/// </para>
+/// <para>
 /// One transaction at a time (the connection's gate): <see cref="Begin"/>, frame reads and writes, <see cref="End"/>.
 /// The deadline is one timer from the <see cref="TimeProvider"/>, re-armed for each frame, so a transaction allocates
 /// nothing for it.
@@ -47,6 +53,7 @@ internal sealed class FrameChannel : IValueTaskSource<bool>
     private int _end;
     private bool _reading;
     private bool _closed;
+    private bool _stopped;
     private HostLinkConnectionException? _closedReason;
     private bool _waiting;
     private bool _deadlinePassed;
@@ -116,13 +123,19 @@ internal sealed class FrameChannel : IValueTaskSource<bool>
     /// <summary>Ends the transaction: the deadline is disarmed and the caller's token let go.</summary>
     public void End()
     {
-        _deadline.Change(Timeout.InfiniteTimeSpan, Timeout.InfiniteTimeSpan);
         _callerRegistration.Dispose();
         _callerRegistration = default;
         _callerToken = default;
         CancellationTokenSource? spent = null;
         lock (_lock)
         {
+            if (_stopped)
+            {
+                // The link broke during the transaction: the timer and the write source are gone with the stream.
+                return;
+            }
+
+            _deadline.Change(Timeout.InfiniteTimeSpan, Timeout.InfiniteTimeSpan);
             _deadlineTimeout = Timeout.InfiniteTimeSpan;
             if (_writeAbort.IsCancellationRequested)
             {
@@ -137,7 +150,8 @@ internal sealed class FrameChannel : IValueTaskSource<bool>
 
     /// <summary>Sends bytes as they are.</summary>
     /// <exception cref="HostLinkConnectionException">The stream failed.</exception>
-    /// <exception cref="OperationCanceledException">The caller cancelled, or the frame's deadline passed (<see cref="DeadlinePassed"/>).</exception>
+    /// <exception cref="OperationCanceledException">The caller cancelled.</exception>
+    /// <exception cref="HostLinkTimeoutException">The frame's deadline passed before the bytes were taken.</exception>
     public async ValueTask WriteAsync(ReadOnlyMemory<byte> bytes)
     {
         FrameObserver?.Invoke(true, bytes);
@@ -171,7 +185,7 @@ internal sealed class FrameChannel : IValueTaskSource<bool>
         {
             throw new OperationCanceledException(_callerToken);
         }
-        catch (OperationCanceledException) when (DeadlinePassed)
+        catch (OperationCanceledException) when (Volatile.Read(ref _deadlinePassed))
         {
             throw new HostLinkTimeoutException($"Could not send to {_description} within {_deadlineTimeout.TotalMilliseconds:0} ms.", _deadlineTimeout);
         }
@@ -181,152 +195,23 @@ internal sealed class FrameChannel : IValueTaskSource<bool>
         }
     }
 
-    /// <summary>Whether the current frame's deadline has passed.</summary>
-    public bool DeadlinePassed
-    {
-        get
-        {
-            lock (_lock)
-            {
-                return _deadlinePassed;
-            }
-        }
-    }
-
     /// <summary>Waits for the next CR-terminated frame within <paramref name="timeout"/>; <see cref="Frame"/> then holds it.</summary>
     /// <param name="expectStart">True where a frame starts with <c>@</c> (noise before it is skipped).</param>
     /// <param name="timeout">The frame's deadline from now.</param>
     /// <returns>The frame's length, CR included.</returns>
     /// <exception cref="HostLinkTimeoutException">No frame within the deadline.</exception>
-    /// <exception cref="HostLinkFrameException">More than <see cref="FrameReader.MaxFrameLength"/> characters without a CR.</exception>
+    /// <exception cref="HostLinkFrameException">More than <see cref="FrameReader.MaxFrameLength"/> characters arrived without a CR.</exception>
     /// <exception cref="HostLinkConnectionException">The stream ended or failed.</exception>
     /// <exception cref="OperationCanceledException">The caller cancelled.</exception>
-#if NET
-    [AsyncMethodBuilder(typeof(PoolingAsyncValueTaskMethodBuilder<>))]
-#endif
-    public async ValueTask<int> ReadFrameAsync(bool expectStart, TimeSpan timeout)
-    {
-        ArmDeadline(timeout);
-        while (true)
-        {
-            int length = 0;
-            bool resume;
-            Exception? error = null;
-            lock (_lock)
-            {
-                ThrowIfCancelledLocked();
-                int held = _end - _start;
-                var buffer = new ReadOnlySequence<byte>(_buffer, _start, held);
-                FrameScanResult scan = FrameReader.TryReadFrame(ref buffer, expectStart, out ReadOnlySequence<byte> frame, out _);
-                if (scan == FrameScanResult.Frame)
-                {
-                    length = (int)frame.Length;
-                    frame.CopyTo(_frame);
-                    _start += held - (int)buffer.Length;
-                }
-                else if (scan == FrameScanResult.Overflow)
-                {
-                    _start = _end;
-                    error = new HostLinkFrameException(FrameError.TooLong, $"More than {FrameReader.MaxFrameLength} characters arrived without a CR.");
-                }
-                else
-                {
-                    // Noise skipped before a frame's start is gone for good.
-                    _start += held - (int)buffer.Length;
-                    if (_deadlinePassed)
-                    {
-                        error = new HostLinkTimeoutException($"No answer from {_description} within {timeout.TotalMilliseconds:0} ms.", timeout);
-                    }
-                    else if (_closed)
-                    {
-                        error = _closedReason is { } reason
-                            ? new HostLinkConnectionException(reason.Message, reason.InnerException)
-                            : new HostLinkConnectionException($"{_description} closed the connection in the middle of an answer.");
-                    }
-                    else
-                    {
-                        _waiter.Reset();
-                        _waiting = true;
-                    }
-                }
-
-                resume = ConsumedLocked();
-            }
-
-            ResumeReading(resume);
-            if (error is not null)
-            {
-                throw error;
-            }
-
-            if (length > 0)
-            {
-                Observe(length);
-                return length;
-            }
-
-            await new ValueTask<bool>(this, _waiter.Version).ConfigureAwait(false);
-        }
-    }
+    public ValueTask<int> ReadFrameAsync(bool expectStart, TimeSpan timeout)
+        => TakeAsync(expectStart, ReadOnlyMemory<byte>.Empty, timeout);
 
     /// <summary>Reads back our own transmission from a line that echoes it, and checks it.</summary>
     /// <exception cref="HostLinkTimeoutException">The echo did not come within its deadline.</exception>
     /// <exception cref="HostLinkFrameException">The echo differs from what was sent.</exception>
-#if NET
-    [AsyncMethodBuilder(typeof(PoolingAsyncValueTaskMethodBuilder))]
-#endif
-    public async ValueTask ReadEchoAsync(ReadOnlyMemory<byte> sent, TimeSpan timeout)
-    {
-        ArmDeadline(timeout);
-        int length = sent.Length;
-        while (true)
-        {
-            bool resume = false;
-            bool done = false;
-            Exception? error = null;
-            lock (_lock)
-            {
-                ThrowIfCancelledLocked();
-                if (_end - _start >= length)
-                {
-                    bool same = _buffer.AsSpan(_start, length).SequenceEqual(sent.Span);
-                    _start += length;
-                    resume = ConsumedLocked();
-                    done = true;
-                    if (!same)
-                    {
-                        error = new HostLinkFrameException(FrameError.Unexpected, "The line's echo of our frame differs from what was sent.");
-                    }
-                }
-                else if (_deadlinePassed)
-                {
-                    error = new HostLinkTimeoutException($"The line did not echo our frame (LocalEcho is on) within {timeout.TotalMilliseconds:0} ms.", timeout);
-                }
-                else if (_closed)
-                {
-                    error = new HostLinkConnectionException($"{_description} closed the connection.");
-                }
-                else
-                {
-                    _waiter.Reset();
-                    _waiting = true;
-                }
-            }
-
-            ResumeReading(resume);
-            if (error is not null)
-            {
-                throw error;
-            }
-
-            if (done)
-            {
-                return;
-            }
-
-            await new ValueTask<bool>(this, _waiter.Version).ConfigureAwait(false);
-        }
-    }
+    /// <returns>The length of the echo.</returns>
+    public ValueTask<int> ReadEchoAsync(ReadOnlyMemory<byte> sent, TimeSpan timeout)
+        => TakeAsync(expectStart: false, sent, timeout);
 
     /// <summary>Throws away everything received and not yet read.</summary>
     /// <returns>The number of bytes discarded.</returns>
@@ -363,9 +248,10 @@ internal sealed class FrameChannel : IValueTaskSource<bool>
     public async ValueTask WaitStoppedAsync()
     {
         await _readingStopped.Task.ConfigureAwait(false);
-        _deadline.Dispose();
         lock (_lock)
         {
+            _stopped = true;
+            _deadline.Dispose();
             _writeAbort.Dispose();
         }
     }
@@ -376,6 +262,114 @@ internal sealed class FrameChannel : IValueTaskSource<bool>
 
     void IValueTaskSource<bool>.OnCompleted(Action<object?> continuation, object? state, short token, ValueTaskSourceOnCompletedFlags flags)
         => _waiter.OnCompleted(continuation, state, token, flags);
+
+    /// <summary>
+    /// Waits until the buffer holds what the caller wants: a frame, or (with <paramref name="echo"/>) the echo of what
+    /// was sent; else the deadline, the caller's token or the end of the stream ends the wait.
+    /// </summary>
+    /// <returns>The length taken: a frame's (then in <see cref="Frame"/>) or the echo's.</returns>
+#if NET
+    [AsyncMethodBuilder(typeof(PoolingAsyncValueTaskMethodBuilder<>))]
+#endif
+    private async ValueTask<int> TakeAsync(bool expectStart, ReadOnlyMemory<byte> echo, TimeSpan timeout)
+    {
+        ArmDeadline(timeout);
+        while (true)
+        {
+            int taken;
+            bool resume;
+            Exception? error;
+            lock (_lock)
+            {
+                ThrowIfCancelledLocked();
+                taken = echo.IsEmpty ? TakeFrameLocked(expectStart, out error) : TakeEchoLocked(echo.Span, out error);
+                if (taken == 0 && error is null)
+                {
+                    if (_deadlinePassed)
+                    {
+                        error = new HostLinkTimeoutException(
+                            echo.IsEmpty ? $"No answer from {_description} within {timeout.TotalMilliseconds:0} ms." : $"The line did not echo our frame (LocalEcho is on) within {timeout.TotalMilliseconds:0} ms.",
+                            timeout);
+                    }
+                    else if (_closed)
+                    {
+                        error = _closedReason is { } reason
+                            ? new HostLinkConnectionException(reason.Message, reason.InnerException)
+                            : new HostLinkConnectionException($"{_description} closed the connection in the middle of an exchange.");
+                    }
+                    else
+                    {
+                        _waiter.Reset();
+                        _waiting = true;
+                    }
+                }
+
+                resume = ConsumedLocked();
+            }
+
+            ResumeReading(resume);
+            if (error is not null)
+            {
+                throw error;
+            }
+
+            if (taken > 0)
+            {
+                if (echo.IsEmpty)
+                {
+                    Observe(taken);
+                }
+
+                return taken;
+            }
+
+            await new ValueTask<bool>(this, _waiter.Version).ConfigureAwait(false);
+        }
+    }
+
+    /// <summary>Takes the first complete frame from the buffer into <see cref="Frame"/>, skipping noise before it.</summary>
+    /// <returns>The frame's length, or 0 when no frame is complete yet (or on <paramref name="error"/>).</returns>
+    private int TakeFrameLocked(bool expectStart, out Exception? error)
+    {
+        error = null;
+        int held = _end - _start;
+        var buffer = new ReadOnlySequence<byte>(_buffer, _start, held);
+        FrameScanResult scan = FrameReader.TryReadFrame(ref buffer, expectStart, out ReadOnlySequence<byte> frame, out _);
+        if (scan == FrameScanResult.Overflow)
+        {
+            _start = _end;
+            error = new HostLinkFrameException(FrameError.TooLong, $"More than {FrameReader.MaxFrameLength} characters arrived without a CR.");
+            return 0;
+        }
+
+        // Taken: the frame, or the noise skipped before a frame's start, which is gone for good.
+        _start += held - (int)buffer.Length;
+        if (scan != FrameScanResult.Frame)
+        {
+            return 0;
+        }
+
+        frame.CopyTo(_frame);
+        return (int)frame.Length;
+    }
+
+    /// <summary>Takes our own echoed bytes from the buffer once they are all in, and checks them.</summary>
+    private int TakeEchoLocked(ReadOnlySpan<byte> sent, out Exception? error)
+    {
+        error = null;
+        if (_end - _start < sent.Length)
+        {
+            return 0;
+        }
+
+        if (!_buffer.AsSpan(_start, sent.Length).SequenceEqual(sent))
+        {
+            error = new HostLinkFrameException(FrameError.Unexpected, "The line's echo of our frame differs from what was sent.");
+        }
+
+        _start += sent.Length;
+        return error is null ? sent.Length : 0;
+    }
 
     private void ArmDeadline(TimeSpan timeout)
     {

@@ -1,6 +1,5 @@
 using System.Collections.Concurrent;
 using System.Diagnostics;
-using System.Globalization;
 using OmronHostLink.Transports;
 
 namespace OmronHostLink.Link;
@@ -62,16 +61,13 @@ internal static class HostLinkActivities
         {
             Counts(activity, framesSent, framesReceived, retries);
             activity.SetTag(TelemetryTags.ErrorType, ErrorTypes.Of(failure));
-            switch (failure)
+            if (failure is EndCodeException e)
             {
-                case HostLinkEndCodeException e:
-                    activity.SetTag(TelemetryTags.EndCode, e.EndCode.ToCode());
-                    break;
-                case FinsEndCodeException e:
-                    // FINS answers travel inside a Host Link frame whose own end code was 00.
-                    activity.SetTag(TelemetryTags.EndCode, NormalCompletion);
-                    activity.SetTag(TelemetryTags.FinsEndCode, e.EndCode.Raw.ToString("X4", CultureInfo.InvariantCulture));
-                    break;
+                activity.SetTag(TelemetryTags.EndCode, e.FrameEndCode);
+                if (e.CarriedEndCode is { } carried)
+                {
+                    activity.SetTag(TelemetryTags.FinsEndCode, carried);
+                }
             }
 
             activity.AddException(failure);

@@ -1,4 +1,3 @@
-using System.Diagnostics;
 using System.Runtime.CompilerServices;
 using Microsoft.Extensions.Logging;
 using Microsoft.Extensions.Logging.Abstractions;
@@ -9,21 +8,21 @@ using OmronHostLink.Transports;
 namespace OmronHostLink.Link;
 
 /// <summary>
-/// The one owner of the wire: one transaction at a time over one transport, with an explicit <see cref="LinkState"/>.
-/// Each call waits for the gate, opens the transport if the link is <see cref="LinkState.Closed"/>, resynchronises if
-/// the last exchange failed, runs one <see cref="TransactionAttempt"/> over the <see cref="FrameChannel"/>, and moves
-/// the state by how the attempt ended (<see cref="AttemptFailure"/>); retries and telemetry live here.
+/// The one owner of the wire: one transaction at a time over one transport, with its <see cref="LinkState"/> in one
+/// place. Every transaction (a request, an INITIALIZE, a presence probe) runs in the same scope: it waits for the gate,
+/// opens the transport if the link is <see cref="LinkState.Closed"/>, runs its exchange over the
+/// <see cref="FrameChannel"/>, and on failure takes the state the failure leaves (<see cref="TransactionAttempt.After"/>),
+/// closing a lost stream at once. Retries and telemetry live here.
 /// </summary>
 /// <remarks>
 /// The parts: <see cref="FrameChannel"/> (the stream's bytes, frames, per-frame deadlines), <see cref="TransactionAttempt"/>
-/// (one exchange, frame by frame), <see cref="Resynchroniser"/> (<c>@**</c> and the TS fence). Deadlines run on the
-/// <see cref="TimeProvider"/> of the options. Telemetry is per command, not per attempt: one duration measurement
-/// and one span (<see cref="HostLinkActivities"/>) from the call to its result or final error, each retry counted.
+/// (one exchange, frame by frame), <see cref="Resynchroniser"/> (<c>@**</c> and the TS fence). Deadlines come from the
+/// <see cref="LineTiming"/> and run on the <see cref="TimeProvider"/> of the options; <see cref="CommandTelemetry"/>
+/// measures each command over all its attempts.
 /// </remarks>
 internal sealed class HostLinkConnection : IAsyncDisposable
 {
     private readonly IHostLinkTransport _transport;
-    private readonly HostLinkConnectionOptions _options;
     private readonly ILogger _logger;
     private readonly TimeProvider _time;
     private readonly SemaphoreSlim _gate = new(1, 1);
@@ -32,25 +31,23 @@ internal sealed class HostLinkConnection : IAsyncDisposable
     private readonly HostLinkInstruments _instruments;
 
     private FrameChannel? _channel;
-    private Action<bool, ReadOnlyMemory<byte>>? _frameObserver;
-    private int _resyncUnit;
+    private LinkStatus _status = new(LinkState.Closed);
     private int _sid;
 
     public HostLinkConnection(IHostLinkTransport transport, HostLinkConnectionOptions options)
     {
         _transport = transport;
-        _options = options;
         _time = options.TimeProvider;
         Timing = transport.LineTiming ?? options.LineTiming;
         _logger = options.LoggerFactory?.CreateLogger("OmronHostLink") ?? NullLogger.Instance;
         _attempt = new TransactionAttempt(Timing, options.TurnaroundAllowance, options.LocalEcho);
-        _resynchroniser = new Resynchroniser(_attempt, _time, options.LocalEcho);
+        _resynchroniser = new Resynchroniser(Timing, options.TurnaroundAllowance, _time, options.LocalEcho);
         _instruments = HostLinkInstruments.For(options.MeterFactory);
         LinkName = options.LinkName ?? (transport as SerialTransport)?.PortName ?? transport.Description;
     }
 
     /// <summary>Where the link stands between transactions.</summary>
-    public LinkState State { get; private set; } = LinkState.Closed;
+    public LinkState State => _status.State;
 
     /// <summary>The timing every deadline is computed from.</summary>
     public LineTiming Timing { get; }
@@ -61,18 +58,7 @@ internal sealed class HostLinkConnection : IAsyncDisposable
     public string LinkName { get; }
 
     /// <summary>Observes every frame sent and received (for the console's --verbose).</summary>
-    public Action<bool, ReadOnlyMemory<byte>>? FrameObserver
-    {
-        get => _frameObserver;
-        set
-        {
-            _frameObserver = value;
-            if (_channel is { } channel)
-            {
-                channel.FrameObserver = value;
-            }
-        }
-    }
+    public Action<bool, ReadOnlyMemory<byte>>? FrameObserver { get; set; }
 
     /// <summary>The next FINS service ID: every FINS exchange carries its own, so an answer to another one is refused.</summary>
     public byte NextSid() => unchecked((byte)Interlocked.Increment(ref _sid));
@@ -90,35 +76,28 @@ internal sealed class HostLinkConnection : IAsyncDisposable
         }
 
         int attempt = 0;
-        int framesSent = 0;
-        int framesReceived = 0;
-        long started = _time.GetTimestamp();
-        Activity? activity = HostLinkActivities.Start(request, LinkName, _transport);
+        var telemetry = new CommandTelemetry(_instruments, _time, LinkName, _transport, request);
         try
         {
             while (true)
             {
                 cancellationToken.ThrowIfCancellationRequested();
-                await _gate.WaitAsync(cancellationToken).ConfigureAwait(false);
                 try
                 {
-                    TResult result = await RunAsync(request, decode, state, cancellationToken).ConfigureAwait(false);
-                    if (_instruments.OperationDuration.Enabled)
-                    {
-                        _instruments.Operation(LinkName, request.Unit, request.Header, null, _time.GetElapsedTime(started));
-                    }
-
-                    if (activity is not null)
-                    {
-                        HostLinkActivities.Succeeded(activity, framesSent + _attempt.FramesSent, framesReceived + _attempt.FramesReceived, attempt);
-                    }
-
+                    TResult result = await TransactAsync(
+                        static (link, channel, call) => link.CarryAsync(channel, call.request, call.decode, call.state),
+                        (request, decode, state),
+                        request.Unit,
+                        request.Header,
+                        telemetry.Frames,
+                        cancellationToken).ConfigureAwait(false);
+                    telemetry.Succeeded(attempt);
                     return result;
                 }
                 catch (Exception e) when (attempt < retries && IsRetryable(e) && !cancellationToken.IsCancellationRequested)
                 {
                     attempt++;
-                    _instruments.Retry(LinkName, request.Unit, request.Header, e);
+                    telemetry.Retried(e);
                     HostLinkLog.Retry(_logger, request.Unit, request.Header, e.Message, attempt, retries);
                 }
                 catch (HostLinkTimeoutException e) when (!cancellationToken.IsCancellationRequested)
@@ -126,68 +105,24 @@ internal sealed class HostLinkConnection : IAsyncDisposable
                     // Said in the caller's terms: the command that went unanswered and the time it cost in all. The last
                     // deadline may have been a resynchronisation fence's, which the caller never asked for; that detail
                     // stays with the inner exception.
-                    TimeSpan total = _time.GetElapsedTime(started);
+                    TimeSpan total = telemetry.Elapsed;
                     throw new HostLinkTimeoutException(
                         $"No answer from unit {request.Unit:D2} to {request.Header} on {_transport.Description}: waited {total.TotalMilliseconds:0} ms in all ({attempt + 1} attempt{(attempt == 0 ? "" : "s")}).",
                         total,
                         e);
                 }
-                finally
-                {
-                    // Read under the gate: the attempt is the connection's, and the next caller's resets it.
-                    framesSent += _attempt.FramesSent;
-                    framesReceived += _attempt.FramesReceived;
-                    _gate.Release();
-                }
             }
         }
         catch (Exception e)
         {
-            if (_instruments.OperationDuration.Enabled)
-            {
-                _instruments.Operation(LinkName, request.Unit, request.Header, e, _time.GetElapsedTime(started));
-            }
-
-            if (activity is not null)
-            {
-                HostLinkActivities.Failed(activity, e, framesSent, framesReceived, attempt);
-            }
-
+            telemetry.Failed(e, attempt);
             throw;
         }
     }
 
     /// <summary>Sends <c>@**</c> (INITIALIZE), which has no answer; a cut exchange needs no INITIALIZE of its own after it.</summary>
     public async ValueTask InitializeAsync(CancellationToken cancellationToken)
-    {
-        await _gate.WaitAsync(cancellationToken).ConfigureAwait(false);
-        try
-        {
-            FrameChannel channel = await OpenedAsync(cancellationToken).ConfigureAwait(false);
-            channel.Begin(cancellationToken);
-            try
-            {
-                await Resynchroniser.InitializeAsync(channel).ConfigureAwait(false);
-                if (State == LinkState.NeedsInitialize)
-                {
-                    State = LinkState.NeedsResync;
-                }
-            }
-            catch (HostLinkConnectionException)
-            {
-                Break();
-                throw;
-            }
-            finally
-            {
-                await EndAsync(channel).ConfigureAwait(false);
-            }
-        }
-        finally
-        {
-            _gate.Release();
-        }
-    }
+        => await TransactAsync(static (link, channel, _) => link.InitializeLineAsync(channel), 0, 0, "**", null, cancellationToken).ConfigureAwait(false);
 
     /// <summary>
     /// Probes whether <paramref name="unit"/> answers: one TS with a fresh random token, never retried, waiting the
@@ -197,51 +132,8 @@ internal sealed class HostLinkConnection : IAsyncDisposable
     /// <see cref="LinkState.NeedsResync"/> and the next request fences as after any failed exchange.
     /// </summary>
     /// <returns>The round-trip time, or null when the unit did not echo the token in time.</returns>
-    public async ValueTask<TimeSpan?> ProbeAsync(int unit, TimeSpan turnaround, CancellationToken cancellationToken)
-    {
-        await _gate.WaitAsync(cancellationToken).ConfigureAwait(false);
-        try
-        {
-            FrameChannel channel = await OpenedAsync(cancellationToken).ConfigureAwait(false);
-            channel.Begin(cancellationToken);
-            try
-            {
-                if (State == LinkState.NeedsInitialize)
-                {
-                    await Resynchroniser.InitializeAsync(channel).ConfigureAwait(false);
-                }
-
-                // Until the echo arrives the link is out of step; a failure anywhere below leaves it so.
-                State = LinkState.NeedsResync;
-                _resyncUnit = unit;
-                TimeSpan? roundTrip = await _resynchroniser.ProbeAsync(channel, unit, turnaround).ConfigureAwait(false);
-                if (roundTrip is null)
-                {
-                    HostLinkLog.Failed(_logger, unit, CModeHeaders.Test, $"No answer to a presence probe within {_resynchroniser.FenceTimeout.TotalMilliseconds:0} ms.");
-                }
-                else
-                {
-                    State = LinkState.Ready;
-                }
-
-                return roundTrip;
-            }
-            catch (HostLinkConnectionException e)
-            {
-                HostLinkLog.Lost(_logger, _transport.Description, e.Message);
-                Break();
-                throw;
-            }
-            finally
-            {
-                await EndAsync(channel).ConfigureAwait(false);
-            }
-        }
-        finally
-        {
-            _gate.Release();
-        }
-    }
+    public ValueTask<TimeSpan?> ProbeAsync(int unit, TimeSpan turnaround, CancellationToken cancellationToken)
+        => TransactAsync(static (link, channel, probe) => link.ProbeAsync(channel, probe.unit, probe.turnaround), (unit, turnaround), unit, CModeHeaders.Test, null, cancellationToken);
 
     public async ValueTask DisposeAsync()
     {
@@ -259,7 +151,7 @@ internal sealed class HostLinkConnection : IAsyncDisposable
             }
 
             await CloseAsync(lost: false).ConfigureAwait(false);
-            State = LinkState.Disposed;
+            _status = new LinkStatus(LinkState.Disposed);
             await _transport.DisposeAsync().ConfigureAwait(false);
         }
         finally
@@ -268,104 +160,134 @@ internal sealed class HostLinkConnection : IAsyncDisposable
         }
     }
 
-    private static bool IsRetryable(Exception e) => e switch
-    {
-        HostLinkTimeoutException => true,
-        HostLinkFrameException => true,
-        HostLinkEndCodeException ec => ec.Category == EndCodeCategory.FrameDamaged,
-        _ => false,
-    };
+    private static bool IsRetryable(Exception e)
+        => e is HostLinkTimeoutException or HostLinkFrameException or EndCodeException { ReportsLineDamage: true };
 
-    /// <summary>One attempt under the gate: open, resynchronise if needed, carry the request, move the state.</summary>
+    /// <summary>
+    /// The scope every transaction runs in: the gate, the transport opened if closed, the caller's token on the channel,
+    /// the exchange, and on failure the state the failure leaves (out of step with <paramref name="unit"/>; a lost
+    /// stream closed before the failure leaves the link). Frames are counted under the gate: the next caller reuses
+    /// the attempt.
+    /// </summary>
 #if NET
     [AsyncMethodBuilder(typeof(PoolingAsyncValueTaskMethodBuilder<>))]
 #endif
-    private async ValueTask<TResult> RunAsync<TState, TResult>(HostLinkRequest request, ResponseDecoder<TState, TResult> decode, TState state, CancellationToken cancellationToken)
+    private async ValueTask<TResult> TransactAsync<TArg, TResult>(Func<HostLinkConnection, FrameChannel, TArg, ValueTask<TResult>> exchange, TArg arg, int unit, string header, FrameTally? frames, CancellationToken cancellationToken)
     {
-        _attempt.ResetFrames();
-        FrameChannel channel = await OpenedAsync(cancellationToken).ConfigureAwait(false);
-        channel.Begin(cancellationToken);
+        await _gate.WaitAsync(cancellationToken).ConfigureAwait(false);
         try
         {
-            if (State is LinkState.NeedsInitialize or LinkState.NeedsResync)
-            {
-                await ResynchroniseAsync(channel, request.Unit).ConfigureAwait(false);
-            }
-
-            long started = _time.GetTimestamp();
+            _attempt.Reset();
+            FrameChannel channel = await OpenedAsync(cancellationToken).ConfigureAwait(false);
+            channel.FrameObserver = FrameObserver;
+            channel.Begin(cancellationToken);
             try
             {
-                TResult result = await _attempt.RunAsync(channel, request, decode, state).ConfigureAwait(false);
-                HostLinkLog.Transaction(_logger, request.Unit, request.Header, _time.GetElapsedTime(started).TotalMilliseconds, _attempt.Frames);
-                return result;
+                return await exchange(this, channel, arg).ConfigureAwait(false);
             }
             catch (Exception e)
             {
-                Failed(e, request);
+                LinkState next = _attempt.After(e);
+                if (next == LinkState.Broken)
+                {
+                    await BreakAsync(e).ConfigureAwait(false);
+                    throw;
+                }
+
+                if (next > State)
+                {
+                    _status = new LinkStatus(next, unit);
+                }
+
+                HostLinkLog.Failed(_logger, unit, header, e.Message);
                 throw;
+            }
+            finally
+            {
+                channel.End();
             }
         }
         finally
         {
-            await EndAsync(channel).ConfigureAwait(false);
+            frames?.Add(_attempt);
+            _gate.Release();
         }
     }
 
-    /// <summary>Moves the state by how the attempt failed.</summary>
-    private void Failed(Exception e, HostLinkRequest request)
+    /// <summary>Carries a request: resynchronises first if the last exchange failed.</summary>
+#if NET
+    [AsyncMethodBuilder(typeof(PoolingAsyncValueTaskMethodBuilder<>))]
+#endif
+    private async ValueTask<TResult> CarryAsync<TState, TResult>(FrameChannel channel, HostLinkRequest request, ResponseDecoder<TState, TResult> decode, TState state)
     {
-        AttemptFailure failure = _attempt.Classify(e);
-        switch (failure)
+        if (State is LinkState.NeedsInitialize or LinkState.NeedsResync)
         {
-            case AttemptFailure.InStep:
-                // A complete error answer: the link is still in step.
-                HostLinkLog.Failed(_logger, request.Unit, request.Header, e.Message);
-                break;
-            case AttemptFailure.Lost:
-                HostLinkLog.Lost(_logger, _transport.Description, e.Message);
-                Break();
-                break;
-            default:
-                State = failure == AttemptFailure.Cut ? LinkState.NeedsInitialize : LinkState.NeedsResync;
-                _resyncUnit = request.Unit;
-                HostLinkLog.Failed(_logger, request.Unit, request.Header, e.Message);
-                break;
+            await ResynchroniseAsync(channel, request.Unit).ConfigureAwait(false);
         }
+
+        long started = _time.GetTimestamp();
+        TResult result = await _attempt.RunAsync(channel, request, decode, state).ConfigureAwait(false);
+        HostLinkLog.Transaction(_logger, request.Unit, request.Header, _time.GetElapsedTime(started).TotalMilliseconds, _attempt.Frames);
+        return result;
     }
 
     /// <summary>Brings the line back in step before the request; throws (and stays out of step) if no fence was echoed.</summary>
     private async ValueTask ResynchroniseAsync(FrameChannel channel, int requestUnit)
     {
-        try
+        if (State == LinkState.NeedsInitialize)
         {
-            if (State == LinkState.NeedsInitialize)
-            {
-                // A multi-frame exchange was cut: INITIALIZE resets every unit's transmission control.
-                await Resynchroniser.InitializeAsync(channel).ConfigureAwait(false);
-                State = LinkState.NeedsResync;
-            }
-
-            ResyncOutcome outcome = await _resynchroniser.FenceAsync(channel, _resyncUnit, requestUnit).ConfigureAwait(false);
-            HostLinkLog.Resync(_logger, _resyncUnit, _resynchroniser.Discarded, outcome);
-            if (outcome == ResyncOutcome.Answered)
-            {
-                State = LinkState.Ready;
-                return;
-            }
-        }
-        catch (HostLinkConnectionException e)
-        {
-            HostLinkLog.Lost(_logger, _transport.Description, e.Message);
-            Break();
-            throw;
+            await InitializeLineAsync(channel).ConfigureAwait(false);
         }
 
-        // Not in step yet: this exchange fails and the next one fences again, at the unit it wants.
-        _resyncUnit = requestUnit;
+        ResyncOutcome outcome = await _resynchroniser.FenceAsync(channel, _status.Unit, requestUnit).ConfigureAwait(false);
+        HostLinkLog.Resync(_logger, _status.Unit, _resynchroniser.Discarded, outcome);
+        if (outcome == ResyncOutcome.Answered)
+        {
+            _status = new LinkStatus(LinkState.Ready);
+            return;
+        }
+
+        // Not in step yet: this exchange fails and the next one fences again, first at the unit this one wanted.
+        _status = new LinkStatus(LinkState.NeedsResync, requestUnit);
         TimeSpan timeout = _resynchroniser.FenceTimeout;
         throw new HostLinkTimeoutException(
             $"No answer from unit {requestUnit:D2} on {_transport.Description} within {timeout.TotalMilliseconds:0} ms (it did not echo the TS check sent to resynchronise the link after a failed exchange).",
             timeout);
+    }
+
+    /// <summary>Sends <c>@**</c>: every unit resets its transmission control, so a cut exchange now needs only a fence.</summary>
+    private async ValueTask<bool> InitializeLineAsync(FrameChannel channel)
+    {
+        await Resynchroniser.InitializeAsync(channel).ConfigureAwait(false);
+        if (State == LinkState.NeedsInitialize)
+        {
+            _status = new LinkStatus(LinkState.NeedsResync, _status.Unit);
+        }
+
+        return true;
+    }
+
+    /// <summary>The presence probe under the gate: INITIALIZE if a multi-frame exchange was cut, then one fence.</summary>
+    private async ValueTask<TimeSpan?> ProbeAsync(FrameChannel channel, int unit, TimeSpan turnaround)
+    {
+        if (State == LinkState.NeedsInitialize)
+        {
+            await InitializeLineAsync(channel).ConfigureAwait(false);
+        }
+
+        // Until the echo arrives the link is out of step; a failure anywhere below leaves it so.
+        _status = new LinkStatus(LinkState.NeedsResync, unit);
+        TimeSpan? roundTrip = await _resynchroniser.ProbeAsync(channel, unit, turnaround).ConfigureAwait(false);
+        if (roundTrip is null)
+        {
+            HostLinkLog.Failed(_logger, unit, CModeHeaders.Test, $"No answer to a presence probe within {_resynchroniser.FenceTimeout.TotalMilliseconds:0} ms.");
+        }
+        else
+        {
+            _status = new LinkStatus(LinkState.Ready);
+        }
+
+        return roundTrip;
     }
 
     private async ValueTask<FrameChannel> OpenedAsync(CancellationToken cancellationToken)
@@ -381,25 +303,21 @@ internal sealed class HostLinkConnection : IAsyncDisposable
         }
 
         Stream stream = await _transport.OpenAsync(cancellationToken).ConfigureAwait(false);
-        var channel = new FrameChannel(stream, _transport.Description, _logger, _time) { FrameObserver = _frameObserver };
+        var channel = new FrameChannel(stream, _transport.Description, _logger, _time);
         _channel = channel;
-        State = LinkState.Ready;
+        _status = new LinkStatus(LinkState.Ready);
         channel.Start();
         _instruments.Connection(LinkName, +1);
         HostLinkLog.Opened(_logger, _transport.Description);
         return channel;
     }
 
-    /// <summary>The stream failed: the link is broken until its channel is closed at the end of the transaction.</summary>
-    private void Break() => State = LinkState.Broken;
-
-    private async ValueTask EndAsync(FrameChannel channel)
+    /// <summary>The stream failed: the link is <see cref="LinkState.Broken"/> and its transport is closed now, not later.</summary>
+    private ValueTask BreakAsync(Exception reason)
     {
-        channel.End();
-        if (State == LinkState.Broken)
-        {
-            await CloseAsync(lost: true).ConfigureAwait(false);
-        }
+        _status = new LinkStatus(LinkState.Broken);
+        HostLinkLog.Lost(_logger, _transport.Description, reason.Message);
+        return CloseAsync(lost: true);
     }
 
     /// <summary>Stops the channel and closes the transport: <see cref="LinkState.Closed"/>.</summary>
@@ -422,6 +340,6 @@ internal sealed class HostLinkConnection : IAsyncDisposable
             _instruments.Connection(LinkName, -1);
         }
 
-        State = LinkState.Closed;
+        _status = new LinkStatus(LinkState.Closed);
     }
 }

@@ -2,12 +2,14 @@ namespace OmronHostLink.Link;
 
 /// <summary>Where the link stands between transactions.</summary>
 /// <remarks>
+/// A transaction's outcome is the next state (<see cref="TransactionAttempt.After"/>): the values are ordered from in
+/// step to furthest out of it, and a failure never moves the link back towards <see cref="Ready"/>.
 /// <code>
 /// Closed ──open──▶ Ready ──complete answer (values or an end code)──▶ Ready
 /// Ready ──timeout, damage, cancellation──▶ NeedsResync ──TS fence echoed──▶ Ready
 /// Ready ──failure inside a multi-frame exchange──▶ NeedsInitialize ──@** sent──▶ NeedsResync
 /// NeedsResync ──fence unanswered──▶ NeedsResync (the next call fences again, at its own unit)
-/// Ready / NeedsResync / NeedsInitialize ──stream lost──▶ Broken ──transport closed──▶ Closed
+/// Ready / NeedsResync / NeedsInitialize ──stream lost──▶ Broken ──transport closed at once──▶ Closed
 /// any ──DisposeAsync──▶ Disposed
 /// </code>
 /// </remarks>
@@ -31,7 +33,7 @@ internal enum LinkState
     /// </summary>
     NeedsInitialize,
 
-    /// <summary>The stream failed: it is being closed, and the next transaction reopens the transport.</summary>
+    /// <summary>The stream failed: it is closed at once, and the next transaction reopens the transport.</summary>
     Broken,
 
     /// <summary>Disposed: every call fails.</summary>

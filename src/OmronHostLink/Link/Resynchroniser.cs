@@ -1,5 +1,6 @@
 using OmronHostLink.Protocol;
 using OmronHostLink.Protocol.CMode;
+using OmronHostLink.Transports;
 
 namespace OmronHostLink.Link;
 
@@ -19,14 +20,16 @@ internal sealed class Resynchroniser
     private static readonly Random TokenRandom = new();
     private static readonly ReadOnlyMemory<byte> Initialize = CModeFrames.Initialize.ToArray();
 
-    private readonly TransactionAttempt _timing;
+    private readonly LineTiming _timing;
+    private readonly TimeSpan _turnaround;
     private readonly TimeProvider _time;
     private readonly bool _localEcho;
     private readonly byte[] _fence = new byte[CModeCommand.PrefixLength + TokenLength + FrameWriter.FinalOverhead];
 
-    public Resynchroniser(TransactionAttempt timing, TimeProvider time, bool localEcho)
+    public Resynchroniser(LineTiming timing, TimeSpan turnaround, TimeProvider time, bool localEcho)
     {
         _timing = timing;
+        _turnaround = turnaround;
         _time = time;
         _localEcho = localEcho;
     }
@@ -51,7 +54,7 @@ internal sealed class Resynchroniser
         ResyncOutcome outcome = ResyncOutcome.Unanswered;
         for (int attempt = 0; attempt < FenceAttempts; attempt++)
         {
-            ResyncOutcome fence = await FenceOnceAsync(channel, attempt == 0 ? failedUnit : requestUnit, turnaround: null).ConfigureAwait(false);
+            ResyncOutcome fence = await FenceOnceAsync(channel, attempt == 0 ? failedUnit : requestUnit, _turnaround).ConfigureAwait(false);
             if (fence == ResyncOutcome.Answered)
             {
                 return fence;
@@ -82,22 +85,20 @@ internal sealed class Resynchroniser
 
     /// <summary>
     /// Sends one fence to <paramref name="unit"/> and discards every frame until its echo or the deadline; the unit's
-    /// allowance to start answering is <paramref name="turnaround"/>, or the link's own when null.
+    /// allowance to start answering is <paramref name="turnaround"/>.
     /// </summary>
-    private async ValueTask<ResyncOutcome> FenceOnceAsync(FrameChannel channel, int unit, TimeSpan? turnaround)
+    private async ValueTask<ResyncOutcome> FenceOnceAsync(FrameChannel channel, int unit, TimeSpan turnaround)
     {
         ResyncOutcome outcome = ResyncOutcome.Unanswered;
         int frameLength = WriteFence(unit);
         await channel.WriteAsync(_fence.AsMemory(0, frameLength)).ConfigureAwait(false);
         if (_localEcho)
         {
-            await channel.ReadEchoAsync(_fence.AsMemory(0, frameLength), _timing.FrameTimeout(frameLength, 0)).ConfigureAwait(false);
+            await channel.ReadEchoAsync(_fence.AsMemory(0, frameLength), _timing.FrameDeadline(frameLength, 0, _turnaround)).ConfigureAwait(false);
         }
 
         // TS is answered with its own characters.
-        TimeSpan timeout = turnaround is { } allowance
-            ? _timing.FrameTimeout(frameLength, frameLength, allowance)
-            : _timing.FrameTimeout(frameLength, frameLength);
+        TimeSpan timeout = _timing.FrameDeadline(frameLength, frameLength, turnaround);
         FenceTimeout = timeout;
         long started = _time.GetTimestamp();
         while (true)

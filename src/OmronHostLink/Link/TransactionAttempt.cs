@@ -8,8 +8,9 @@ namespace OmronHostLink.Link;
 /// <summary>
 /// One attempt at one exchange over a <see cref="FrameChannel"/>: the command frame by frame (with the PLC's CR between
 /// command frames), then the answer frame by frame (asking for each next one with a bare CR), every frame checked, the
-/// text joined and decoded. Keeps track of whether the line is inside a multi-frame exchange, so that a failure can be
-/// told apart: <see cref="Classify"/>. One instance per connection, reused: an attempt allocates nothing of its own.
+/// text joined and decoded. Keeps, step by step, the <see cref="LinkState"/> the line is left in if the exchange stops
+/// there, so that a failed attempt yields the link's next state: <see cref="After"/>. One instance per connection,
+/// reused: an attempt allocates nothing of its own.
 /// </summary>
 internal sealed class TransactionAttempt
 {
@@ -21,7 +22,10 @@ internal sealed class TransactionAttempt
     private readonly byte[] _tx = new byte[FrameReader.MaxFrameLength + 8];
     private byte[] _text = new byte[256];
     private int _textLength;
-    private bool _cut;
+
+    // The state the line is left in if the exchange stops now: NeedsInitialize inside a multi-frame exchange (the PLC
+    // holds the rest of a command or an answer), Ready once the whole answer is in, NeedsResync otherwise.
+    private LinkState _ifStopped;
 
     public TransactionAttempt(LineTiming timing, TimeSpan turnaround, bool localEcho)
     {
@@ -39,31 +43,30 @@ internal sealed class TransactionAttempt
     /// <summary>Frames sent and received by the last attempt.</summary>
     public int Frames => FramesSent + FramesReceived;
 
-    /// <summary>Forgets the last attempt's frames, before an exchange that may fail before its attempt starts.</summary>
-    public void ResetFrames()
+    /// <summary>Forgets the last attempt, before a transaction that may fail before an attempt starts (or runs none).</summary>
+    public void Reset()
     {
         FramesSent = 0;
         FramesReceived = 0;
+        _ifStopped = LinkState.NeedsResync;
     }
 
+    /// <summary>The deadline for a frame: <see cref="LineTiming.FrameDeadline"/> with the link's turnaround allowance.</summary>
+    private TimeSpan FrameTimeout(int charactersSent, int charactersExpected)
+        => _timing.FrameDeadline(charactersSent, charactersExpected, _turnaround);
+
     /// <summary>
-    /// The deadline for a frame: the characters still to cross the line (what we sent and the longest answer) at the
-    /// line's character rate, plus the PLC's turnaround allowance.
+    /// The link's state after the last attempt failed with <paramref name="failure"/>: <see cref="LinkState.Broken"/>
+    /// when the stream failed; <see cref="LinkState.NeedsInitialize"/> when a multi-frame exchange was cut;
+    /// <see cref="LinkState.Ready"/> after a complete error answer (an <see cref="EndCodeException"/>); else
+    /// <see cref="LinkState.NeedsResync"/>, since a late answer may still come.
     /// </summary>
-    public TimeSpan FrameTimeout(int charactersSent, int charactersExpected)
-        => _timing.WireTime(charactersSent + charactersExpected) + _turnaround;
-
-    /// <summary>The deadline for a frame with a turnaround allowance of its own (a presence probe's).</summary>
-    public TimeSpan FrameTimeout(int charactersSent, int charactersExpected, TimeSpan turnaround)
-        => _timing.WireTime(charactersSent + charactersExpected) + turnaround;
-
-    /// <summary>How the failure of the last attempt left the line.</summary>
-    public AttemptFailure Classify(Exception failure) => failure switch
+    public LinkState After(Exception failure) => failure switch
     {
-        HostLinkConnectionException => AttemptFailure.Lost,
-        _ when _cut => AttemptFailure.Cut,
-        HostLinkEndCodeException or FinsEndCodeException => AttemptFailure.InStep,
-        _ => AttemptFailure.OutOfStep,
+        HostLinkConnectionException => LinkState.Broken,
+        _ when _ifStopped == LinkState.NeedsInitialize => LinkState.NeedsInitialize,
+        EndCodeException when _ifStopped == LinkState.Ready => LinkState.Ready,
+        _ => LinkState.NeedsResync,
     };
 
     /// <summary>Carries <paramref name="request"/> once and decodes its answer.</summary>
@@ -73,8 +76,7 @@ internal sealed class TransactionAttempt
     public async ValueTask<TResult> RunAsync<TState, TResult>(FrameChannel channel, HostLinkRequest request, ResponseDecoder<TState, TResult> decode, TState state)
     {
         ExchangeShape shape = request.Shape;
-        _cut = false;
-        ResetFrames();
+        Reset();
 
         // Send: frame by frame; between command frames the PLC answers a bare CR (or an error at once).
         int offset = 0;
@@ -98,7 +100,7 @@ internal sealed class TransactionAttempt
             }
 
             int frameLength = FrameWriter.WriteFrame(request.Message.Span.Slice(offset, length), final, _tx);
-            _cut = !final;
+            _ifStopped = final ? LinkState.NeedsResync : LinkState.NeedsInitialize;
             await channel.WriteAsync(_tx.AsMemory(0, frameLength)).ConfigureAwait(false);
             sentChars = frameLength;
             FramesSent++;
@@ -118,7 +120,7 @@ internal sealed class TransactionAttempt
                     // The PLC answered before the last frame: an error for what it has seen so far.
                     preReadAt = at;
                     preReadEnd = n;
-                    _cut = false;
+                    _ifStopped = LinkState.NeedsResync;
                     break;
                 }
             }
@@ -127,7 +129,7 @@ internal sealed class TransactionAttempt
 
         if (!shape.ExpectsAnswer)
         {
-            _cut = false;
+            _ifStopped = LinkState.Ready;
             return decode(ReadOnlySpan<byte>.Empty, state);
         }
 
@@ -135,7 +137,7 @@ internal sealed class TransactionAttempt
         // its first frame is lost or damaged: the PLC then holds the rest and takes any command, a TS fence included,
         // as the delimiter asking for it; only INITIALIZE ends that.
         _textLength = 0;
-        _cut = preReadEnd == 0 && shape.AnswerMaySpanFrames;
+        _ifStopped = preReadEnd == 0 && shape.AnswerMaySpanFrames ? LinkState.NeedsInitialize : LinkState.NeedsResync;
         if (preReadEnd == 0)
         {
             TimeSpan firstTimeout = FrameTimeout(sentChars, shape.MaxFirstAnswerFrame);
@@ -151,7 +153,7 @@ internal sealed class TransactionAttempt
         FrameInfo info = FirstFrame(channel.Frame(preReadEnd).Slice(preReadAt), request);
         while (!info.IsFinal)
         {
-            _cut = true;
+            _ifStopped = LinkState.NeedsInitialize;
             await channel.WriteAsync(Delimiter).ConfigureAwait(false);
             if (_localEcho)
             {
@@ -163,7 +165,7 @@ internal sealed class TransactionAttempt
             info = Continuation(channel, len, request);
         }
 
-        _cut = false;
+        _ifStopped = LinkState.Ready;
         return decode(_text.AsSpan(0, _textLength), state);
     }
 
@@ -171,7 +173,7 @@ internal sealed class TransactionAttempt
     private FrameInfo FirstFrame(ReadOnlySpan<byte> frame, HostLinkRequest request)
     {
         FrameInfo info = FrameParser.ParseFirst(frame);
-        _cut = !info.IsFinal;
+        _ifStopped = info.IsFinal ? LinkState.Ready : LinkState.NeedsInitialize;
         CModeResponse.CheckAnswerHeader(frame, info, request.Unit, request.Header);
         AppendText(info.Text(frame), request);
         return info;

@@ -32,6 +32,13 @@ public sealed class LineTiming
     /// <summary>Time <paramref name="characters"/> take on the wire: characters × bits per character / baud.</summary>
     public TimeSpan WireTime(int characters) => TimeSpan.FromTicks((long)characters * TimeSpan.TicksPerSecond * BitsPerCharacter / BaudRate);
 
+    /// <summary>
+    /// The deadline for a frame: the characters still to cross the line (what was sent and the longest answer) at the
+    /// line's character rate, plus <paramref name="turnaround"/>, the time the PLC may take to start answering.
+    /// </summary>
+    internal TimeSpan FrameDeadline(int charactersSent, int charactersExpected, TimeSpan turnaround)
+        => WireTime(charactersSent + charactersExpected) + turnaround;
+
     /// <inheritdoc/>
     public override string ToString() => $"{BaudRate} bps, {BitsPerCharacter} bits/char";
 }

@@ -33,7 +33,7 @@ internal static class ScaleBenchmark
         catch (Exception e) when (e is FormatException or ArgumentException)
         {
             Console.Error.WriteLine($"scale: {e.Message}");
-            Console.Error.WriteLine("usage: scale [--links 1,10,50,100] [--seconds 60] [--warmup 5] [--tags 10] [--interval 1] [--change-every 2] [--baud 9600] [--worker path/OmronHostLink.Worker.dll]");
+            Console.Error.WriteLine("usage: scale [--links 1,10,50,100] [--seconds 60] [--warmup 5] [--tags 10] [--interval 1] [--change-every 2] [--baud 9600] [--worker path/OmronHostLink.Gateway.dll]");
             return 2;
         }
 
@@ -288,7 +288,7 @@ internal static class ScaleBenchmark
                     ["Default"] = "Warning",
                     ["OmronHostLink"] = "Error",
                     // Debug for the overrun events (1007); values are logged on change (1001, Information).
-                    ["OmronHostLink.Worker"] = "Debug",
+                    ["OmronHostLink.Gateway"] = "Debug",
                 },
                 ["Console"] = new JsonObject
                 {

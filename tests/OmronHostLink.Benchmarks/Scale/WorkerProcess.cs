@@ -9,7 +9,7 @@ using System.Text.RegularExpressions;
 namespace OmronHostLink.Benchmarks.Scale;
 
 /// <summary>
-/// <c>samples/OmronHostLink.Worker</c> as a separate process (<c>dotnet OmronHostLink.Worker.dll</c>), configured
+/// <c>src/OmronHostLink.Gateway</c> as a separate process (<c>dotnet OmronHostLink.Gateway.dll</c>), configured
 /// only by an <c>appsettings.json</c> generated into an empty content root. Its console log (single-line format) is
 /// read as it comes: cycle overruns (event 1007, "N tick(s) skipped") are counted and warnings kept.
 /// </summary>
@@ -48,7 +48,7 @@ internal sealed partial class WorkerProcess : IAsyncDisposable
     /// <summary>The last lines the worker wrote.</summary>
     public string Log => _log.ToString();
 
-    /// <summary>The worker assembly built with the benchmark (same configuration), or <paramref name="explicitPath"/>.</summary>
+    /// <summary>The gateway assembly built with the benchmark (same configuration), or <paramref name="explicitPath"/>.</summary>
     public static string Locate(string? explicitPath)
     {
         string? path = explicitPath ?? typeof(WorkerProcess).Assembly.GetCustomAttributes<AssemblyMetadataAttribute>()
@@ -56,7 +56,7 @@ internal sealed partial class WorkerProcess : IAsyncDisposable
         if (path is null || !File.Exists(path))
         {
             throw new InvalidOperationException(
-                $"The worker assembly '{path}' does not exist. Build it (dotnet build samples/OmronHostLink.Worker -c Release) or pass --worker <path to OmronHostLink.Worker.dll>.");
+                $"The gateway assembly '{path}' does not exist. Build it (dotnet build src/OmronHostLink.Gateway -c Release) or pass --worker <path to OmronHostLink.Gateway.dll>.");
         }
 
         return path;

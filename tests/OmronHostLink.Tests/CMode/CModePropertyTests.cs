@@ -40,7 +40,7 @@ public sealed class CModePropertyTests
             case 6: return new TestCommand(new string(Enumerable.Range(0, r.Next(0, 123)).Select(_ => (char)r.Next(0x20, 0x7F)).Where(c => c is not ('*' or '@')).ToArray()));
             case 7: return new ForceBitCommand(r.Next(2) == 1, ForceArea.Cio, r.Next(6144), r.Next(16));
             case 8: return new MultipleForceCommand(ForceArea.Holding, r.Next(512), Enumerable.Range(0, 16).Select(_ => new[] { ForceAction.None, ForceAction.Reset, ForceAction.Set, ForceAction.ForcedReset, ForceAction.ForcedSet, ForceAction.Cancel }[r.Next(6)]).ToArray());
-            default: return new CModeCommand[] { StatusReadCommand.Instance, ModelReadCommand.Instance, ForcedCancelCommand.Instance, AbortCommand.Instance }[r.Next(4)];
+            default: return new CModeCommand[] { CModeCommands.StatusReadCommand, CModeCommands.ModelReadCommand, CModeCommands.ForcedCancelCommand, CModeCommands.AbortCommand }[r.Next(4)];
         }
     }
 

@@ -176,7 +176,7 @@ public sealed class CModeVectorTests
         MultipleForceCommand fk = Parse<MultipleForceCommand>("c_fk_cmd");
         fk.Actions[14].Should().Be(ForceAction.ForcedReset);
         fk.Actions[15].Should().Be(ForceAction.ForcedSet);
-        Parse<AbortCommand>("c_xz_cmd").ExpectsResponse.Should().BeFalse();
+        Parse<SimpleCommand>("c_xz_cmd").ExpectsResponse.Should().BeFalse();
     }
 
     private static T Parse<T>(string name)

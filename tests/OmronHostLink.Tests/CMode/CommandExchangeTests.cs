@@ -11,14 +11,14 @@ public sealed class CommandExchangeTests
     {
         // Omron W342 section 4: MS answers end code + status (4) + FAL/FALS message (16); MF end code + 2 error words;
         // MM end code + model code; SC and writes an end code alone; RD end code + 4 digits a word; RG 1 digit a flag.
-        StatusReadCommand.Instance.Exchange.MaxAnswerText.Should().Be(2 + 4 + 16);
+        CModeCommands.StatusReadCommand.Exchange.MaxAnswerText.Should().Be(2 + 4 + 16);
         new ErrorReadCommand(clear: false).Exchange.MaxAnswerText.Should().Be(2 + 8);
-        ModelReadCommand.Instance.Exchange.MaxAnswerText.Should().Be(2 + 2);
+        CModeCommands.ModelReadCommand.Exchange.MaxAnswerText.Should().Be(2 + 2);
         new StatusChangeCommand(PlcMode.Run).Exchange.MaxAnswerText.Should().Be(2);
         new AreaWriteCommand(CModeArea.Dm, 0, new ushort[] { 1, 2 }).Exchange.MaxAnswerText.Should().Be(2);
         new AreaReadCommand(CModeArea.Dm, 0, 30).Exchange.MaxAnswerText.Should().Be(2 + 120);
         new AreaReadCommand(CModeArea.TimerCounterStatus, 5, 3).Exchange.MaxAnswerText.Should().Be(2 + 3);
-        AbortCommand.Instance.Exchange.ExpectsAnswer.Should().BeFalse();
+        CModeCommands.AbortCommand.Exchange.ExpectsAnswer.Should().BeFalse();
     }
 
     [Fact]
@@ -38,7 +38,7 @@ public sealed class CommandExchangeTests
         new TestCommand("ABC").Exchange.AnswerCanEqualCommand.Should().BeTrue("TS is answered with its own characters");
         new StatusChangeCommand(PlcMode.Program).Exchange.AnswerCanEqualCommand.Should().BeTrue("@00SC00 is also the answer 'SC, end code 00'");
         new ErrorReadCommand(clear: true).Exchange.AnswerCanEqualCommand.Should().BeTrue("@00MF01 is also the answer 'MF, end code 01'");
-        StatusReadCommand.Instance.Exchange.AnswerCanEqualCommand.Should().BeFalse();
+        CModeCommands.StatusReadCommand.Exchange.AnswerCanEqualCommand.Should().BeFalse();
         new AreaReadCommand(CModeArea.Dm, 100, 3).Exchange.AnswerCanEqualCommand.Should().BeFalse();
     }
 
@@ -53,12 +53,12 @@ public sealed class CommandExchangeTests
     [Fact]
     public void Repeating_is_decided_by_what_the_command_does()
     {
-        StatusReadCommand.Instance.Effect.Should().Be(CommandEffect.ReadOnly);
+        CModeCommands.StatusReadCommand.Effect.Should().Be(CommandEffect.ReadOnly);
         new AreaReadCommand(CModeArea.Dm, 0, 1).Effect.Should().Be(CommandEffect.ReadOnly);
         new ErrorReadCommand(clear: false).Effect.Should().Be(CommandEffect.ReadOnly);
         new ErrorReadCommand(clear: true).Effect.Should().Be(CommandEffect.NotRepeatable);
         new AreaWriteCommand(CModeArea.Dm, 0, new ushort[] { 1 }).Effect.Should().Be(CommandEffect.Idempotent);
         new StatusChangeCommand(PlcMode.Run).Effect.Should().Be(CommandEffect.NotRepeatable);
-        AbortCommand.Instance.Effect.Should().Be(CommandEffect.NotRepeatable);
+        CModeCommands.AbortCommand.Effect.Should().Be(CommandEffect.NotRepeatable);
     }
 }

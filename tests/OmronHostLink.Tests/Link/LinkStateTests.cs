@@ -44,17 +44,17 @@ public sealed class LinkStateTests
         });
 
         link.State.Should().Be(LinkState.Closed);
-        (await Run(link, StatusReadCommand.Instance)).Should().Be(6);
+        (await Run(link, CModeCommands.StatusReadCommand)).Should().Be(6);
         link.State.Should().Be(LinkState.Ready, "the first call opened the transport");
 
         mode = Plc.Silent;
-        ValueTask<int> silent = Run(link, StatusReadCommand.Instance);
+        ValueTask<int> silent = Run(link, CModeCommands.StatusReadCommand);
         time.Advance(TimeSpan.FromSeconds(1));
         await FluentActions.Awaiting(() => silent.AsTask()).Should().ThrowAsync<HostLinkTimeoutException>();
         link.State.Should().Be(LinkState.NeedsResync, "a late answer may still come");
 
         mode = Plc.Answers;
-        (await Run(link, StatusReadCommand.Instance)).Should().Be(6);
+        (await Run(link, CModeCommands.StatusReadCommand)).Should().Be(6);
         link.State.Should().Be(LinkState.Ready, "the TS fence was echoed");
 
         mode = Plc.FirstFrameOnly;
@@ -65,17 +65,17 @@ public sealed class LinkStateTests
         link.State.Should().Be(LinkState.NeedsInitialize, "the PLC still holds the rest of the answer");
 
         mode = Plc.Answers;
-        (await Run(link, StatusReadCommand.Instance)).Should().Be(6);
+        (await Run(link, CModeCommands.StatusReadCommand)).Should().Be(6);
         link.State.Should().Be(LinkState.Ready);
         plc.Received.Should().Contain("@**\r", "INITIALIZE went before the fence");
 
         await plcEnd.DisposeAsync();
-        await FluentActions.Awaiting(() => Run(link, StatusReadCommand.Instance).AsTask()).Should().ThrowAsync<HostLinkConnectionException>();
+        await FluentActions.Awaiting(() => Run(link, CModeCommands.StatusReadCommand).AsTask()).Should().ThrowAsync<HostLinkConnectionException>();
         link.State.Should().Be(LinkState.Closed, "a lost stream breaks the link and closes the transport");
 
         await link.DisposeAsync();
         link.State.Should().Be(LinkState.Disposed);
-        await FluentActions.Awaiting(() => Run(link, StatusReadCommand.Instance).AsTask()).Should().ThrowAsync<ObjectDisposedException>();
+        await FluentActions.Awaiting(() => Run(link, CModeCommands.StatusReadCommand).AsTask()).Should().ThrowAsync<ObjectDisposedException>();
     });
 
     /// <summary>Waits for the scripted PLC (which runs on the real clock) to have seen something.</summary>

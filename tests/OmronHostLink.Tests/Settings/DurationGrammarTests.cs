@@ -6,39 +6,17 @@ using Microsoft.Extensions.Options;
 using OmronHostLink.Cli;
 using OmronHostLink.DependencyInjection;
 using OmronHostLink.Tests.DependencyInjection;
-using OmronHostLink.Worker;
-using OmronHostLink.Worker.Configuration;
 
 namespace OmronHostLink.Tests.Settings;
 
 /// <summary>
 /// The same text is the same time, or the same refusal, wherever a duration is written: the DI package's configuration,
-/// <c>AddHostLinkClient(..., Action)</c>, the worker's configuration and the console's options.
+/// <c>AddHostLinkClient(..., Action)</c> and the console's options (the gateway's configuration: OmronHostLink.Gateway.Tests).
 /// </summary>
 public sealed class DurationGrammarTests
 {
     /// <summary>Each text, and the time it is (in ticks), or null where it is refused.</summary>
-    public static TheoryData<string, long?> Texts => new()
-    {
-        { "500ms", TimeSpan.FromMilliseconds(500).Ticks },
-        { "2s", TimeSpan.FromSeconds(2).Ticks },
-        { "1.5min", TimeSpan.FromSeconds(90).Ticks },
-        { "1.5m", TimeSpan.FromSeconds(90).Ticks },
-        { "0.05h", TimeSpan.FromMinutes(3).Ticks },
-        { "00:00:02", TimeSpan.FromSeconds(2).Ticks },
-        { "00:00:00.250", TimeSpan.FromMilliseconds(250).Ticks },
-        { " 250 ms ", TimeSpan.FromMilliseconds(250).Ticks },
-        { "1.5S", TimeSpan.FromMilliseconds(1500).Ticks },
-        { "0.0001ms", 1 },
-        { "300", null },
-        { "0.5", null },
-        { "abc", null },
-        { "5x", null },
-        { "-1s", null },
-        { "-00:00:01", null },
-        { "00:00:xx", null },
-        { "1.5 fortnights", null },
-    };
+    public static IEnumerable<object?[]> Texts => DurationTexts.All;
 
     [Theory]
     [MemberData(nameof(Texts))]
@@ -101,38 +79,6 @@ public sealed class DurationGrammarTests
         else
         {
             failure.Should().BeOfType<FormatException>().Which.Message.Should().Be(Refusal(text));
-        }
-    }
-
-    [Theory]
-    [MemberData(nameof(Texts))]
-    public async Task The_worker_configuration_reads_it_the_same(string text, long? ticks)
-    {
-        var configuration = new ConfigurationManager();
-        configuration.AddInMemoryCollection(new Dictionary<string, string?>
-        {
-            ["HostLink:Links:plc:Tcp"] = "127.0.0.1:9",
-            ["HostLink:Links:plc:Groups:g:Address"] = "D0",
-            ["HostLink:Links:plc:Groups:g:Interval"] = text,
-        });
-        using IHost host = WorkerHost.CreateBuilder(new HostApplicationBuilderSettings
-        {
-            DisableDefaults = true,
-            EnvironmentName = "Test",
-            ContentRootPath = AppContext.BaseDirectory,
-            Configuration = configuration,
-        }).Build();
-
-        if (ticks is { } t)
-        {
-            host.Services.GetRequiredService<IOptions<WorkerOptions>>().Value.Links["plc"].Groups["g"].Interval
-                .Should().Be(TimeSpan.FromTicks(t));
-        }
-        else
-        {
-            Exception? failure = await Record.ExceptionAsync(() => host.StartAsync());
-            failure.Should().BeOfType<OptionsValidationException>()
-                .Which.Failures.Should().Contain($"HostLink:Links:plc:Groups:g:Interval {Refusal(text)}.");
         }
     }
 

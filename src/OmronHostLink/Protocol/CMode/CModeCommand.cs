@@ -9,8 +9,11 @@ internal abstract class CModeCommand
     /// <summary>Characters before the text: <c>@</c>, two unit digits, two header characters.</summary>
     public const int PrefixLength = MessagePrefix.Length;
 
+    /// <summary>The command's row in the command table: header, name, effect, longest answer, and how it is parsed, executed and described.</summary>
+    public abstract CModeCommandRow Row { get; }
+
     /// <summary>The two-character header, for example <c>RD</c>.</summary>
-    public abstract string Header { get; }
+    public string Header => Row.Header;
 
     /// <summary>Length of the text after the header.</summary>
     public abstract int TextLength { get; }
@@ -22,19 +25,19 @@ internal abstract class CModeCommand
     public virtual int AtomLength => 1;
 
     /// <summary>Whether the PLC answers the command (XZ gets no answer).</summary>
-    public virtual bool ExpectsResponse => true;
+    public bool ExpectsResponse => Row.ExpectsAnswer;
 
-    /// <summary>Whether the command may be divided into several frames (only area writes may).</summary>
-    public virtual bool MayUseSeveralFrames => false;
+    /// <summary>Whether the command may be divided into several frames (area writes and QQMR may).</summary>
+    public bool MayUseSeveralFrames => Row.MultiFrameCommand;
 
     /// <summary>Characters a response spends on one data entry, for cutting a multi-frame response.</summary>
     public virtual int ResponseAtomLength => 4;
 
-    /// <summary>The most answer text (end code and data, every frame joined) a correct answer holds. Default: an end code alone.</summary>
-    internal virtual int MaxAnswerTextLength => CModeResponse.EndCodeLength;
+    /// <summary>The most answer text (sub-header, end code and data, every frame joined) a correct answer holds. Default: the row's.</summary>
+    internal virtual int MaxAnswerTextLength => Row.MaxAnswerText;
 
-    /// <summary>What repeating the command would do. Default: not repeatable.</summary>
-    internal virtual CommandEffect Effect => CommandEffect.NotRepeatable;
+    /// <summary>What repeating the command would do. Default: the row's.</summary>
+    internal virtual CommandEffect Effect => Row.Effect;
 
     /// <summary>How the command travels and is answered.</summary>
     internal ExchangeShape Exchange => ExchangeShape.CMode(
@@ -79,7 +82,7 @@ internal abstract class CModeCommand
     /// Rebuilds a typed command from a received header and text, as a PLC does. A command the PLC would refuse raises
     /// <see cref="CModeCommandRejectedException"/> carrying the end code the PLC answers with.
     /// </summary>
-    public static CModeCommand Parse(ReadOnlySpan<byte> header, ReadOnlySpan<byte> text) => CModeCommandParser.Parse(header, text);
+    public static CModeCommand Parse(ReadOnlySpan<byte> header, ReadOnlySpan<byte> text) => CModeCommandParser.Parse(CModeCommandTable.Standard, header, text);
 
     /// <summary>The header and text in printable form.</summary>
     public override string ToString()

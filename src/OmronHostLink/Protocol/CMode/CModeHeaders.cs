@@ -1,8 +1,9 @@
 namespace OmronHostLink.Protocol.CMode;
 
 /// <summary>
-/// The two-character headers of Host Link commands and answers, with their names in the manuals (W342 section 4;
-/// C200HX). The area read and write headers (RR … WE) belong to <see cref="CModeAreaInfo"/>.
+/// The two-character headers of Host Link commands and answers the library names in code. Their names in the manuals
+/// and everything else about them are rows of <see cref="CModeCommandTable"/>; the area read and write headers
+/// (RR … WE) belong to <see cref="CModeAreaInfo"/>.
 /// </summary>
 internal static class CModeHeaders
 {
@@ -48,73 +49,23 @@ internal static class CModeHeaders
     /// <summary>EX: TXD sent by the PLC in Host Link mode (no end code).</summary>
     public const string Txd = "EX";
 
-    private static readonly string[] ExecutableHeaders =
-    [
-        StatusRead, StatusChange, ErrorRead, ModelRead, Test, ForcedSet, ForcedReset, MultipleForcedSetReset, ForcedSetResetCancel, Abort, Fins,
-    ];
-
-    private static readonly Dictionary<string, string> Names = new(StringComparer.Ordinal)
-    {
-        ["RR"] = "CIO AREA READ",
-        ["RL"] = "LR AREA READ",
-        ["RH"] = "HR AREA READ",
-        ["RC"] = "TIMER/COUNTER PV READ",
-        ["RG"] = "TIMER/COUNTER STATUS READ",
-        ["RD"] = "DM AREA READ",
-        ["RJ"] = "AR AREA READ",
-        ["RE"] = "EM AREA READ",
-        ["WR"] = "CIO AREA WRITE",
-        ["WL"] = "LR AREA WRITE",
-        ["WH"] = "HR AREA WRITE",
-        ["WC"] = "TIMER/COUNTER PV WRITE",
-        ["WG"] = "TIMER/COUNTER STATUS WRITE",
-        ["WD"] = "DM AREA WRITE",
-        ["WJ"] = "AR AREA WRITE",
-        ["WE"] = "EM AREA WRITE",
-        ["R#"] = "SV READ 1",
-        ["R$"] = "SV READ 2",
-        ["R%"] = "SV READ 3",
-        ["W#"] = "SV CHANGE 1",
-        ["W$"] = "SV CHANGE 2",
-        ["W%"] = "SV CHANGE 3",
-        [StatusRead] = "STATUS READ",
-        [StatusChange] = "STATUS CHANGE",
-        [ErrorRead] = "ERROR READ",
-        [ForcedSet] = "FORCED SET",
-        [ForcedReset] = "FORCED RESET",
-        [MultipleForcedSetReset] = "MULTIPLE FORCED SET/RESET",
-        [ForcedSetResetCancel] = "FORCED SET/RESET CANCEL",
-        [ModelRead] = "PLC MODEL READ",
-        [Test] = "TEST",
-        ["RP"] = "PROGRAM READ",
-        ["WP"] = "PROGRAM WRITE",
-        ["MI"] = "I/O TABLE GENERATE",
-        ["QQ"] = "COMPOUND COMMAND (QQMR/QQIR)",
-        [Abort] = "ABORT",
-        [Initialize] = "INITIALIZE",
-        [UndefinedCommand] = "UNDEFINED COMMAND (response)",
-        [Txd] = "TXD (PLC to host)",
-        [Fins] = "FINS COMMAND OVER HOST LINK",
-    };
-
-    /// <summary>The manuals' name of a header, or null for a header they do not list.</summary>
-    public static string? Name(string header) => Names.TryGetValue(Guard.NotNull(header), out string? name) ? name : null;
+    /// <summary>The manuals' name of a header (<see cref="CModeCommandTable.Standard"/>), or null for a header they do not list.</summary>
+    public static string? Name(string header) => CModeCommandTable.Standard.Name(Guard.NotNull(header));
 
     /// <summary>
-    /// Whether this library executes the header on the PLC side: every area read and write
-    /// (<see cref="CModeAreaInfo.TryFromHeader"/>), MS, SC, MF, MM, TS, KS, KR, FK, KC, XZ (<see cref="CModeCommand.Parse"/>)
-    /// and FA. A PLC answers any other header with IC.
+    /// Whether this library executes the header on the PLC side: a row of <see cref="CModeCommandTable.Standard"/> it
+    /// parses and executes, or FA (FINS). A PLC answers any other header with IC.
     /// </summary>
     public static bool IsExecutable(ReadOnlySpan<byte> header)
     {
-        if (CModeAreaInfo.TryFromHeader(header, out _, out _))
+        if (Is(header, Fins))
         {
             return true;
         }
 
-        foreach (string executable in ExecutableHeaders)
+        foreach (CModeCommandRow row in CModeCommandTable.Standard.Rows)
         {
-            if (Is(header, executable))
+            if (row.IsExecutable && Is(header, row.Header))
             {
                 return true;
             }

@@ -26,7 +26,52 @@ internal sealed class ForceBitCommand : CModeCommand
     public int Bit { get; }
 
     /// <inheritdoc/>
-    public override string Header => Set ? CModeHeaders.ForcedSet : CModeHeaders.ForcedReset;
+    public override CModeCommandRow Row => Set ? SetRow : ResetRow;
+
+    /// <summary>KS: FORCED SET.</summary>
+    internal static CModeCommandRow SetRow { get; } = CreateRow(set: true);
+
+    /// <summary>KR: FORCED RESET.</summary>
+    internal static CModeCommandRow ResetRow { get; } = CreateRow(set: false);
+
+    private static CModeCommandRow CreateRow(bool set)
+        => new(set ? CModeHeaders.ForcedSet : CModeHeaders.ForcedReset, set ? "FORCED SET" : "FORCED RESET", CommandEffect.NotRepeatable, CModeResponse.EndCodeLength)
+        {
+            Parse = text => Parse(set, text),
+            Execute = static (command, plc, _) =>
+            {
+                var force = (ForceBitCommand)command;
+                if (plc.Mode == PlcMode.Run)
+                {
+                    return CModeReply.EndCodeOnly(EndCode.NotExecutableInRunMode);
+                }
+
+                (PlcArea area, int word) = CModeAddressing.Locate(force.Area, force.Word);
+                plc.ForceBit(area, word, force.Bit, force.Set);
+                return CModeReply.EndCodeOnly(EndCode.NormalCompletion);
+            },
+            DescribeCommand = static (command, fields) =>
+            {
+                var k = (ForceBitCommand)command;
+                fields.Field("action", k.Set ? "set" : "reset");
+                fields.Field("area", ForceAreaInfo.Name(k.Area).Trim());
+                fields.Field("word", (long)k.Word);
+                fields.Field("bit", (long)k.Bit);
+            },
+        };
+
+    private static ForceBitCommand Parse(bool set, ReadOnlySpan<byte> text)
+    {
+        CModeCommandParser.ExpectLength(text, 10, set ? CModeHeaders.ForcedSet : CModeHeaders.ForcedReset);
+        if (!ForceAreaInfo.TryParse(text.Slice(0, 4), out ForceArea area)
+            || !HexAscii.TryParseDecimal(text.Slice(4, 4), out int word)
+            || !HexAscii.TryParseDecimal(text.Slice(8, 2), out int bit))
+        {
+            throw CModeCommandParser.Reject(EndCode.EntryNumberDataError, "Area name, word or bit is not valid.");
+        }
+
+        return CModeCommandParser.Checked(() => new ForceBitCommand(set, area, word, bit));
+    }
 
     /// <inheritdoc/>
     public override int TextLength => 10;
@@ -111,7 +156,90 @@ internal sealed class MultipleForceCommand : CModeCommand
     public IReadOnlyList<ForceAction> Actions => _actions;
 
     /// <inheritdoc/>
-    public override string Header => CModeHeaders.MultipleForcedSetReset;
+    public override CModeCommandRow Row => CommandRow;
+
+    /// <summary>FK: MULTIPLE FORCED SET/RESET.</summary>
+    internal static CModeCommandRow CommandRow { get; } = new(CModeHeaders.MultipleForcedSetReset, "MULTIPLE FORCED SET/RESET", CommandEffect.NotRepeatable, CModeResponse.EndCodeLength)
+    {
+        Parse = Parse,
+        Execute = static (command, plc, _) =>
+        {
+            if (plc.Mode == PlcMode.Run)
+            {
+                return CModeReply.EndCodeOnly(EndCode.NotExecutableInRunMode);
+            }
+
+            Execute((MultipleForceCommand)command, plc);
+            return CModeReply.EndCodeOnly(EndCode.NormalCompletion);
+        },
+        DescribeCommand = static (command, fields) =>
+        {
+            var fk = (MultipleForceCommand)command;
+            fields.Field("area", ForceAreaInfo.Name(fk.Area).Trim());
+            fields.Field("word", (long)fk.Word);
+            fields.Field("actionsBit15To0", fk.Actions.Select(a => a.ToString()).ToArray());
+        },
+    };
+
+    private static MultipleForceCommand Parse(ReadOnlySpan<byte> text)
+    {
+        CModeCommandParser.ExpectLength(text, 24, CModeHeaders.MultipleForcedSetReset);
+        if (!ForceAreaInfo.TryParse(text.Slice(0, 4), out ForceArea area) || !HexAscii.TryParseDecimal(text.Slice(4, 4), out int word))
+        {
+            throw CModeCommandParser.Reject(EndCode.EntryNumberDataError, "Area name or word is not valid.");
+        }
+
+        var actions = new ForceAction[16];
+        for (int i = 0; i < 16; i++)
+        {
+            int digit = text[8 + i] - '0';
+            if (digit is not (0 or 2 or 3 or 4 or 5 or 8))
+            {
+                throw CModeCommandParser.Reject(EndCode.EntryNumberDataError, $"FK action for bit {15 - i} is not valid.");
+            }
+
+            actions[i] = (ForceAction)digit;
+        }
+
+        return CModeCommandParser.Checked(() => new MultipleForceCommand(area, word, actions));
+    }
+
+    private static void Execute(MultipleForceCommand command, ICModePlc plc)
+    {
+        (PlcArea area, int word) = CModeAddressing.Locate(command.Area, command.Word);
+        bool flag = area is PlcArea.Timer or PlcArea.Counter;
+        for (int i = 0; i < 16; i++)
+        {
+            int bit = 15 - i;
+            ForceAction action = command.Actions[i];
+            if (flag && bit != 15)
+            {
+                continue;
+            }
+
+            int target = flag ? 0 : bit;
+            switch (action)
+            {
+                case ForceAction.Reset or ForceAction.Set:
+                    if (flag)
+                    {
+                        plc.SetFlag(area, word, action == ForceAction.Set);
+                    }
+                    else
+                    {
+                        plc.SetBit(area, word, target, action == ForceAction.Set);
+                    }
+
+                    break;
+                case ForceAction.ForcedReset or ForceAction.ForcedSet:
+                    plc.ForceBit(area, word, target, action == ForceAction.ForcedSet);
+                    break;
+                case ForceAction.Cancel:
+                    plc.ReleaseForced(area, word, target);
+                    break;
+            }
+        }
+    }
 
     /// <inheritdoc/>
     public override int TextLength => 24;

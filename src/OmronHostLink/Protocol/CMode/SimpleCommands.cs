@@ -1,93 +1,31 @@
 namespace OmronHostLink.Protocol.CMode;
 
-/// <summary>MS: STATUS READ. The answer holds the status word and, when one is active, the FAL/FALS message.</summary>
-internal sealed class StatusReadCommand : CModeCommand
+/// <summary>
+/// A command that is only its row and its text (MS, MM, KC, XZ, QQIR, and any command added to a table as a row alone):
+/// everything about it is its row in a <see cref="CModeCommandTable"/>.
+/// </summary>
+internal sealed class SimpleCommand : CModeCommand
 {
-    /// <summary>The one instance (the command has no parameters).</summary>
-    public static StatusReadCommand Instance { get; } = new();
+    private readonly byte[] _text;
 
-    /// <inheritdoc/>
-    public override string Header => CModeHeaders.StatusRead;
-
-    /// <inheritdoc/>
-    public override int TextLength => 0;
-
-    /// <summary>End code, status word (4) and the FAL/FALS message (16).</summary>
-    internal override int MaxAnswerTextLength => CModeResponse.EndCodeLength + 4 + 16;
-
-    /// <inheritdoc/>
-    internal override CommandEffect Effect => CommandEffect.ReadOnly;
-
-    /// <inheritdoc/>
-    public override void WriteText(Span<byte> destination)
+    /// <summary>Creates the command of <paramref name="row"/> with <paramref name="text"/> after the header (sub-header included).</summary>
+    public SimpleCommand(CModeCommandRow row, ReadOnlySpan<byte> text = default)
     {
+        Row = Guard.NotNull(row);
+        _text = text.ToArray();
     }
-}
-
-/// <summary>MM: PLC MODEL READ.</summary>
-internal sealed class ModelReadCommand : CModeCommand
-{
-    /// <summary>The one instance.</summary>
-    public static ModelReadCommand Instance { get; } = new();
 
     /// <inheritdoc/>
-    public override string Header => CModeHeaders.ModelRead;
+    public override CModeCommandRow Row { get; }
+
+    /// <summary>The text after the header.</summary>
+    public ReadOnlySpan<byte> Text => _text;
 
     /// <inheritdoc/>
-    public override int TextLength => 0;
-
-    /// <summary>End code and the model code (2).</summary>
-    internal override int MaxAnswerTextLength => CModeResponse.EndCodeLength + 2;
+    public override int TextLength => _text.Length;
 
     /// <inheritdoc/>
-    internal override CommandEffect Effect => CommandEffect.ReadOnly;
-
-    /// <inheritdoc/>
-    public override void WriteText(Span<byte> destination)
-    {
-    }
-}
-
-/// <summary>KC: FORCED SET/RESET CANCEL (cancels every forced bit).</summary>
-internal sealed class ForcedCancelCommand : CModeCommand
-{
-    /// <summary>The one instance.</summary>
-    public static ForcedCancelCommand Instance { get; } = new();
-
-    /// <inheritdoc/>
-    public override string Header => CModeHeaders.ForcedSetResetCancel;
-
-    /// <inheritdoc/>
-    public override int TextLength => 0;
-
-    /// <inheritdoc/>
-    public override void WriteText(Span<byte> destination)
-    {
-    }
-}
-
-/// <summary>XZ: ABORT. Stops the Host Link exchange in progress; the PLC sends no answer.</summary>
-internal sealed class AbortCommand : CModeCommand
-{
-    /// <summary>The one instance.</summary>
-    public static AbortCommand Instance { get; } = new();
-
-    /// <inheritdoc/>
-    public override string Header => CModeHeaders.Abort;
-
-    /// <inheritdoc/>
-    public override int TextLength => 0;
-
-    /// <inheritdoc/>
-    public override bool ExpectsResponse => false;
-
-    /// <inheritdoc/>
-    internal override int MaxAnswerTextLength => 0;
-
-    /// <inheritdoc/>
-    public override void WriteText(Span<byte> destination)
-    {
-    }
+    public override void WriteText(Span<byte> destination) => _text.CopyTo(destination);
 }
 
 /// <summary>SC: STATUS CHANGE to PROGRAM (00), MONITOR (02) or RUN (03).</summary>
@@ -108,7 +46,28 @@ internal sealed class StatusChangeCommand : CModeCommand
     public PlcMode Mode { get; }
 
     /// <inheritdoc/>
-    public override string Header => CModeHeaders.StatusChange;
+    public override CModeCommandRow Row => CommandRow;
+
+    /// <summary>SC: STATUS CHANGE.</summary>
+    internal static CModeCommandRow CommandRow { get; } = new(CModeHeaders.StatusChange, "STATUS CHANGE", CommandEffect.NotRepeatable, CModeResponse.EndCodeLength)
+    {
+        Parse = static text =>
+        {
+            CModeCommandParser.ExpectLength(text, 2, CModeHeaders.StatusChange);
+            if (!HexAscii.TryParseByte(text, out byte code) || !TryGetMode(code, out PlcMode mode))
+            {
+                throw CModeCommandParser.Reject(EndCode.EntryNumberDataError, "SC mode must be 00, 02 or 03.");
+            }
+
+            return new StatusChangeCommand(mode);
+        },
+        Execute = static (command, plc, _) =>
+        {
+            plc.Mode = ((StatusChangeCommand)command).Mode;
+            return CModeReply.EndCodeOnly(EndCode.NormalCompletion);
+        },
+        DescribeCommand = static (command, fields) => fields.Field("mode", ((StatusChangeCommand)command).Mode.ToString().ToUpperInvariant()),
+    };
 
     /// <inheritdoc/>
     public override int TextLength => 2;
@@ -151,13 +110,45 @@ internal sealed class ErrorReadCommand : CModeCommand
     public bool Clear { get; }
 
     /// <inheritdoc/>
-    public override string Header => CModeHeaders.ErrorRead;
+    public override CModeCommandRow Row => CommandRow;
+
+    /// <summary>MF: ERROR READ (end code and two error words). The row's effect is the reading one; clearing is not repeatable.</summary>
+    internal static CModeCommandRow CommandRow { get; } = new(CModeHeaders.ErrorRead, "ERROR READ", CommandEffect.ReadOnly, CModeResponse.EndCodeLength + 8)
+    {
+        Parse = static text =>
+        {
+            CModeCommandParser.ExpectLength(text, 2, CModeHeaders.ErrorRead);
+            if (!HexAscii.TryParseDecimal(text, out int clear) || clear > 1)
+            {
+                throw CModeCommandParser.Reject(EndCode.EntryNumberDataError, "MF error clear must be 00 or 01.");
+            }
+
+            return new ErrorReadCommand(clear == 1);
+        },
+        Execute = static (command, plc, _) =>
+        {
+            PlcErrorInfo errors = plc.Errors;
+            Span<byte> data = stackalloc byte[8];
+            HexAscii.WriteWord(errors.FirstWord, data);
+            HexAscii.WriteWord(errors.SecondWord, data.Slice(4));
+            if (((ErrorReadCommand)command).Clear)
+            {
+                plc.ClearErrors();
+            }
+
+            return CModeReply.Ok(EndCode.NormalCompletion, null, data);
+        },
+        DescribeCommand = static (command, fields) => fields.Field("clear", ((ErrorReadCommand)command).Clear),
+        DescribeAnswer = static (data, fields) =>
+        {
+            PlcErrorInfo errors = CModeResponse.ReadErrors(data);
+            fields.Field("errorWords", new long[] { errors.FirstWord, errors.SecondWord });
+            fields.Field("hasErrors", errors.HasErrors);
+        },
+    };
 
     /// <inheritdoc/>
     public override int TextLength => 2;
-
-    /// <summary>End code and two error words (8).</summary>
-    internal override int MaxAnswerTextLength => CModeResponse.EndCodeLength + 8;
 
     /// <summary>Reading without clearing changes nothing; clearing does.</summary>
     internal override CommandEffect Effect => Clear ? CommandEffect.NotRepeatable : CommandEffect.ReadOnly;
@@ -191,20 +182,32 @@ internal sealed class TestCommand : CModeCommand
     /// <summary>The text to echo.</summary>
     public string Text { get; }
 
+    /// <summary>Creates the command from received text, as the PLC takes it: any characters, echoed unchanged.</summary>
+    private TestCommand(byte[] received)
+    {
+        _text = received;
+        Text = System.Text.Encoding.ASCII.GetString(received);
+    }
+
     /// <inheritdoc/>
-    public override string Header => CModeHeaders.Test;
+    public override CModeCommandRow Row => CommandRow;
+
+    /// <summary>TS: TEST. The echo carries no end code; any text up to the longest a TS may carry.</summary>
+    internal static CModeCommandRow CommandRow { get; } = new(CModeHeaders.Test, "TEST", CommandEffect.ReadOnly, MaxTextLength)
+    {
+        AnswerHasEndCode = false,
+        Parse = static text => text.Length > MaxTextLength
+            ? throw CModeCommandParser.Reject(EndCode.FrameLengthError, "TS text is too long.")
+            : new TestCommand(text.ToArray()),
+        Execute = static (command, _, _) => CModeReply.Echo(((TestCommand)command)._text),
+        DescribeCommand = static (command, fields) => fields.Field("text", ((TestCommand)command).Text),
+    };
 
     /// <inheritdoc/>
     public override int TextLength => _text.Length;
 
     /// <inheritdoc/>
     public override int ResponseAtomLength => 1;
-
-    /// <summary>The echo carries no end code; any text up to the longest a TS may carry.</summary>
-    internal override int MaxAnswerTextLength => MaxTextLength;
-
-    /// <inheritdoc/>
-    internal override CommandEffect Effect => CommandEffect.ReadOnly;
 
     /// <inheritdoc/>
     public override void WriteText(Span<byte> destination) => _text.CopyTo(destination);

@@ -1,0 +1,59 @@
+using Microsoft.Extensions.Configuration;
+using Microsoft.Extensions.DependencyInjection;
+
+namespace OmronHostLink.Gateway.Configuration;
+
+/// <summary>
+/// One <see cref="HostLinkClient"/> per enabled link, registered through OmronHostLink.DependencyInjection as a keyed
+/// singleton named after the link: the link's section is a client section of the DI package (<c>Serial</c>,
+/// <c>Tcp</c>, <c>CommandSet</c>, …) with the worker's own <c>Enabled</c>, <c>Backoff</c> and <c>Groups</c> beside.
+/// </summary>
+public static class LinkClients
+{
+    /// <summary>
+    /// Registers the clients of the enabled links in <paramref name="configuration"/>'s <c>HostLink</c> section. An
+    /// invalid section registers none: the host then fails at start with the worker's own messages, which name the
+    /// link's keys, and with nothing else.
+    /// </summary>
+    public static IServiceCollection AddLinkClients(this IServiceCollection services, IConfiguration configuration)
+    {
+        ArgumentNullException.ThrowIfNull(configuration);
+        if (!StartupCheck.Passes(configuration))
+        {
+            return services;
+        }
+
+        IConfigurationSection section = configuration.GetSection(GatewayOptions.SectionName);
+        var options = new GatewayOptions();
+        Bind(section, options);
+        foreach ((string name, LinkOptions link) in options.Links)
+        {
+            if (link.Enabled)
+            {
+                IConfigurationSection linkSection = section.GetSection($"Links:{name}");
+                services.AddHostLinkClient(name, settings => settings.Read(ClientKeys(linkSection)));
+            }
+        }
+
+        return services;
+    }
+
+    /// <summary>Binds the <c>HostLink</c> section: the worker's keys, and each link's client keys into its <see cref="LinkOptions.Client"/>.</summary>
+    public static void Bind(IConfigurationSection section, GatewayOptions options)
+    {
+        ArgumentNullException.ThrowIfNull(section);
+        ArgumentNullException.ThrowIfNull(options);
+        ConfigurationSchema.Bind(section, options);
+        foreach ((string name, LinkOptions link) in options.Links)
+        {
+            link.Client.Read(ClientKeys(section.GetSection($"Links:{name}")));
+        }
+    }
+
+    /// <summary>The keys of a link's section that are its client's, relative to the section (<c>Serial:BaudRate</c>).</summary>
+    internal static IEnumerable<KeyValuePair<string, string?>> ClientKeys(IConfigurationSection link)
+        => link.GetChildren()
+            .Where(c => !ConfigurationSchema.IsSetting(typeof(LinkOptions), c.Key))
+            .SelectMany(c => c.AsEnumerable())
+            .Select(p => new KeyValuePair<string, string?>(p.Key.Substring(link.Path.Length + 1), p.Value));
+}

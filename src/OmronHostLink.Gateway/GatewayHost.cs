@@ -1,0 +1,79 @@
+using Microsoft.Extensions.Configuration;
+using Microsoft.Extensions.DependencyInjection;
+using Microsoft.Extensions.DependencyInjection.Extensions;
+using Microsoft.Extensions.Hosting;
+using Microsoft.Extensions.Logging;
+using Microsoft.Extensions.Options;
+using OmronHostLink.Gateway.Configuration;
+using OmronHostLink.Gateway.Mqtt;
+using OmronHostLink.Gateway.Polling;
+using OmronHostLink.Gateway.Simulation;
+using OmronHostLink.Gateway.Telemetry;
+
+namespace OmronHostLink.Gateway;
+
+/// <summary>Builds the worker's generic host: options, validation, a client per link, the optional simulator and the link pollers.</summary>
+public static class GatewayHost
+{
+    /// <summary>The Windows service name (deploy/install-service.ps1 registers the service under it).</summary>
+    public const string ServiceName = "OmronHostLink.Gateway";
+
+    /// <summary>A builder with the usual defaults (appsettings.json, appsettings.{Environment}.json, environment variables, command line, console logging).</summary>
+    public static HostApplicationBuilder CreateBuilder(string[] args)
+        => Configure(Host.CreateApplicationBuilder(args));
+
+    /// <summary>
+    /// A builder from explicit settings: tests pass <c>DisableDefaults = true</c> and their own
+    /// <see cref="HostApplicationBuilderSettings.Configuration"/>, and add a logger provider to the result.
+    /// </summary>
+    public static HostApplicationBuilder CreateBuilder(HostApplicationBuilderSettings settings)
+        => Configure(Host.CreateApplicationBuilder(settings));
+
+    /// <summary>The generic host's own log category, where a failed start is logged with its stack trace.</summary>
+    private const string HostCategory = "Microsoft.Extensions.Hosting.Internal.Host";
+
+    private static HostApplicationBuilder Configure(HostApplicationBuilder builder)
+    {
+        IServiceCollection services = builder.Services;
+        services.TryAddSingleton(TimeProvider.System);
+
+        IConfigurationSection hostLink = builder.Configuration.GetSection(GatewayOptions.SectionName);
+        services.AddOptions<GatewayOptions>()
+            .Configure(options => LinkClients.Bind(hostLink, options))
+            .ValidateOnStart();
+        services.AddSingleton<IValidateOptions<GatewayOptions>, GatewayOptionsValidator>();
+        services.AddLinkClients(builder.Configuration);
+
+        IConfigurationSection simulator = builder.Configuration.GetSection(SimulatorOptions.SectionName);
+        services.AddOptions<SimulatorOptions>()
+            .Configure(options => ConfigurationSchema.Bind(simulator, options))
+            .ValidateDataAnnotations()
+            .ValidateOnStart();
+        services.AddSingleton<IValidateOptions<SimulatorOptions>, SimulatorOptionsValidator>();
+
+        if (!StartupCheck.Passes(builder.Configuration))
+        {
+            // The start is going to fail validation, and Program prints every failure, each naming its key. The host
+            // would first log "Hosting failed to start" with the framework's stack trace: that is all noise here.
+            builder.Logging.AddFilter(HostCategory, LogLevel.None);
+        }
+
+        // Order matters: hosted services start in registration order and stop in reverse, so the simulator listens
+        // before the links connect and outlives them, and the MQTT output sends the links' last states.
+        services.AddSingleton<SimulatorHostedService>();
+        services.AddHostedService(sp => sp.GetRequiredService<SimulatorHostedService>());
+        // The outputs (each an ITagOutput; the polling reports to all of them in registration order).
+        services.AddMqttOutput(builder.Configuration);
+        services.AddSingleton<PollingHostedService>();
+        services.AddHostedService(sp => sp.GetRequiredService<PollingHostedService>());
+        services.AddTelemetryExport(builder.Configuration);
+
+        // Each is a no-op unless its service manager started the process. Windows: reports SERVICE_RUNNING/STOPPED to
+        // the service control manager, turns a service stop into a graceful shutdown and logs to the event log.
+        // systemd: sd_notify READY=1 once every hosted service has started and STOPPING=1 on SIGTERM (Type=notify),
+        // and journald-style console logs.
+        services.AddWindowsService(o => o.ServiceName = ServiceName);
+        services.AddSystemd();
+        return builder;
+    }
+}

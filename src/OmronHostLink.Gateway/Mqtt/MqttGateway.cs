@@ -1,0 +1,391 @@
+using System.Text;
+using Microsoft.Extensions.Hosting;
+using Microsoft.Extensions.Logging;
+using Microsoft.Extensions.Options;
+using MQTTnet;
+using MQTTnet.Protocol;
+using OmronHostLink.Gateway.Outputs;
+
+namespace OmronHostLink.Gateway.Mqtt;
+
+/// <summary>
+/// The MQTT connection and the one publisher loop. It connects (MQTT 5, last will <c>offline</c> on the worker's
+/// status topic), announces <c>online</c>, republishes the current state of topics with nothing queued, then sends the
+/// queue in order, removing each message only once the broker has acknowledged it. When the broker goes away it
+/// reconnects with capped exponential backoff, and the queue keeps filling meanwhile. On a clean stop it sends what is
+/// queued (for a few seconds at most), publishes <c>offline</c> and disconnects.
+/// </summary>
+public sealed class MqttGateway : IHostedService, IAsyncDisposable
+{
+    private static readonly TimeSpan DrainLimit = TimeSpan.FromSeconds(5);
+
+    private readonly MqttOptions _options;
+    private readonly MqttTopics _topics;
+    private readonly OutboundQueue _queue;
+    private readonly MqttTagSink _sink;
+    private readonly TagCatalog _catalog;
+    private readonly MqttMetrics _metrics;
+    private readonly MqttClientFactory _factory;
+    private readonly WriteCommandProcessor _writes;
+    private readonly ILogger _logger;
+    private readonly TimeProvider _time;
+    private readonly string _broker;
+    private readonly HashSet<string> _refusedTopics = new(StringComparer.Ordinal);
+    private readonly CancellationTokenSource _stop = new();
+    private IMqttClient? _client;
+    private MqttClientOptions? _clientOptions;
+    private Task? _loop;
+    private Task? _writeLoop;
+    private volatile bool _stopping;
+    private int _stopCalls;
+    private bool _everConnected;
+    private long _overflowSince;
+    private volatile string? _certificateProblem;
+
+    /// <summary>Creates the gateway; nothing connects until it is started.</summary>
+    public MqttGateway(
+        IOptions<MqttOptions> options,
+        MqttTopics topics,
+        OutboundQueue queue,
+        MqttTagSink sink,
+        TagCatalog catalog,
+        MqttMetrics metrics,
+        MqttClientFactory factory,
+        WriteCommandProcessor writes,
+        ILogger<MqttGateway> logger,
+        TimeProvider timeProvider)
+    {
+        ArgumentNullException.ThrowIfNull(options);
+        _options = options.Value;
+        _topics = topics;
+        _queue = queue;
+        _sink = sink;
+        _catalog = catalog;
+        _metrics = metrics;
+        _factory = factory;
+        _writes = writes;
+        _logger = logger;
+        _time = timeProvider;
+        _broker = $"{_options.Host}:{_options.PortOrDefault}";
+    }
+
+    /// <summary>Whether the client is connected to the broker now.</summary>
+    public bool IsConnected => _client?.IsConnected == true;
+
+    /// <inheritdoc/>
+    public Task StartAsync(CancellationToken cancellationToken)
+    {
+        if (_options.Tls is { Enabled: true, AllowUntrustedCertificates: true })
+        {
+            MqttLog.UntrustedCertificates(_logger, _broker);
+        }
+
+        _clientOptions = MqttClientOptionsFactory.Create(_options, _topics, why => _certificateProblem = why);
+        _client = _factory.CreateMqttClient();
+        _client.DisconnectedAsync += _ =>
+        {
+            _queue.Wake();
+            return Task.CompletedTask;
+        };
+        _client.ApplicationMessageReceivedAsync += e =>
+        {
+            _writes.Accept(e.ApplicationMessage);
+            return Task.CompletedTask;
+        };
+        _queue.OverflowStarted += OnOverflowStarted;
+        _loop = Task.Run(() => RunAsync(_stop.Token), CancellationToken.None);
+        if (_options.Writes.Enabled)
+        {
+            _writeLoop = Task.Run(() => _writes.RunAsync(_stop.Token), CancellationToken.None);
+        }
+
+        return Task.CompletedTask;
+    }
+
+    /// <inheritdoc/>
+    public async Task StopAsync(CancellationToken cancellationToken)
+    {
+        if (_loop is null || Interlocked.Exchange(ref _stopCalls, 1) != 0)
+        {
+            return;
+        }
+
+        // The links stop first (they are registered after this service) and queue their offline states; send them
+        // if the broker is there. If it is not, there is nothing to wait for: the queue is lost with the process.
+        _stopping = true;
+        _queue.Wake();
+        if (!IsConnected)
+        {
+            await _stop.CancelAsync().ConfigureAwait(false);
+        }
+
+        using (var drain = CancellationTokenSource.CreateLinkedTokenSource(cancellationToken))
+        {
+            drain.CancelAfter(DrainLimit);
+            await _loop.WaitAsync(drain.Token).ConfigureAwait(ConfigureAwaitOptions.SuppressThrowing);
+        }
+
+        await _stop.CancelAsync().ConfigureAwait(false);
+        await _loop.ConfigureAwait(ConfigureAwaitOptions.SuppressThrowing);
+        if (_writeLoop is not null)
+        {
+            await _writeLoop.ConfigureAwait(ConfigureAwaitOptions.SuppressThrowing);
+        }
+
+        EndOverflow(_queue.EndOverflowEpisode());
+        if (_client is { IsConnected: true } client)
+        {
+            try
+            {
+                using var timeout = new CancellationTokenSource(_options.Timeout);
+                await client.PublishAsync(Message(new OutboundMessage(_topics.WorkerStatus, Encoding.UTF8.GetBytes(MqttClientOptionsFactory.Offline), Retain: true)), timeout.Token).ConfigureAwait(false);
+                await client.DisconnectAsync(new MqttClientDisconnectOptions(), timeout.Token).ConfigureAwait(false);
+            }
+            catch (Exception e) when (e is not OutOfMemoryException)
+            {
+                // The broker went away meanwhile: its last will says offline instead.
+            }
+        }
+
+        MqttLog.Stopped(_logger, _queue.Count);
+    }
+
+    /// <inheritdoc/>
+    public async ValueTask DisposeAsync()
+    {
+        if (!_stop.IsCancellationRequested)
+        {
+            await _stop.CancelAsync().ConfigureAwait(false);
+        }
+
+        if (_loop is not null)
+        {
+            await _loop.ConfigureAwait(ConfigureAwaitOptions.SuppressThrowing);
+        }
+
+        _client?.Dispose();
+        _stop.Dispose();
+    }
+
+    private async Task RunAsync(CancellationToken cancellationToken)
+    {
+        IMqttClient client = _client!;
+        TimeSpan backoff = TimeSpan.Zero;
+        int attempts = 0;
+        long outageSince = 0;
+        while (!cancellationToken.IsCancellationRequested)
+        {
+            try
+            {
+                if (!client.IsConnected)
+                {
+                    if (_stopping)
+                    {
+                        return;
+                    }
+
+                    await ConnectAsync(client, cancellationToken).ConfigureAwait(false);
+                    if (attempts > 0)
+                    {
+                        MqttLog.Reconnected(_logger, _broker, _time.GetElapsedTime(outageSince).TotalSeconds, attempts, _queue.Count);
+                    }
+                    else if (!_everConnected)
+                    {
+                        MqttLog.Connected(_logger, _broker, _options.ClientIdOrDefault, _topics.Prefix);
+                    }
+
+                    _everConnected = true;
+                    attempts = 0;
+                    backoff = TimeSpan.Zero;
+                    continue;
+                }
+
+                if (!_queue.TryPeek(out OutboundMessage? message))
+                {
+                    if (_stopping)
+                    {
+                        return;
+                    }
+
+                    await _queue.WaitAsync(cancellationToken).ConfigureAwait(false);
+                    continue;
+                }
+
+                await PublishAsync(client, message, cancellationToken).ConfigureAwait(false);
+            }
+            catch (OperationCanceledException) when (cancellationToken.IsCancellationRequested)
+            {
+                return;
+            }
+            catch (Exception e) when (e is not OutOfMemoryException)
+            {
+                // Unreachable, refused, TLS failure, an acknowledgement that did not come: start again from a fresh
+                // connection, so nothing half-done on the old one can reorder the queue.
+                await DropConnectionAsync(client).ConfigureAwait(false);
+                if (_stopping)
+                {
+                    return;
+                }
+
+                string reason = _certificateProblem is { } why ? "TLS: " + why : Describe(e);
+                _certificateProblem = null;
+                if (attempts++ == 0)
+                {
+                    outageSince = _time.GetTimestamp();
+                    backoff = _options.Reconnect.Initial;
+                    MqttLog.Unreachable(_logger, _broker, reason, _queue.Count, backoff.TotalSeconds, _options.Reconnect.Max.TotalSeconds);
+                }
+                else
+                {
+                    backoff = TimeSpan.FromTicks(Math.Min(backoff.Ticks * 2, _options.Reconnect.Max.Ticks));
+                    MqttLog.StillUnreachable(_logger, _broker, reason, backoff.TotalSeconds);
+                }
+
+                try
+                {
+                    await Task.Delay(backoff, _time, cancellationToken).ConfigureAwait(false);
+                }
+                catch (OperationCanceledException)
+                {
+                    return;
+                }
+            }
+        }
+    }
+
+    private async Task ConnectAsync(IMqttClient client, CancellationToken cancellationToken)
+    {
+        MqttClientConnectResult result = await client.ConnectAsync(_clientOptions!, cancellationToken).ConfigureAwait(false);
+        if (result.ResultCode != MqttClientConnectResultCode.Success)
+        {
+            string hint = result.ResultCode is MqttClientConnectResultCode.BadUserNameOrPassword or MqttClientConnectResultCode.NotAuthorized
+                ? "; check Mqtt:Username, Mqtt:Password and the broker's users and ACL"
+                : "";
+            throw new InvalidOperationException($"the broker refused the connection: {result.ResultCode}{(string.IsNullOrEmpty(result.ReasonString) ? "" : " " + result.ReasonString)}{hint}");
+        }
+
+        _metrics.Connected();
+        if (_options.Writes.Enabled)
+        {
+            await SubscribeCommandsAsync(client, cancellationToken).ConfigureAwait(false);
+        }
+
+        // Birth first, then the state of every topic with nothing queued (a restarted broker may have lost it).
+        await PublishNowAsync(client, new OutboundMessage(_topics.WorkerStatus, Encoding.UTF8.GetBytes(MqttClientOptionsFactory.Online), Retain: true), cancellationToken).ConfigureAwait(false);
+        foreach (OutboundMessage message in _sink.Snapshot())
+        {
+            await PublishNowAsync(client, message, cancellationToken).ConfigureAwait(false);
+        }
+    }
+
+    private async Task SubscribeCommandsAsync(IMqttClient client, CancellationToken cancellationToken)
+    {
+        MqttClientSubscribeOptionsBuilder builder = _factory.CreateSubscribeOptionsBuilder();
+        var filters = new List<string>();
+        foreach (string link in _catalog.Links)
+        {
+            string filter = _topics.CommandFilter(link);
+            filters.Add(filter);
+            builder = builder.WithTopicFilter(f => f
+                .WithTopic(filter)
+                .WithQualityOfServiceLevel(MqttClientOptionsFactory.QualityOfService(Math.Max(_options.QoS, 1)))
+                .WithNoLocal(true)
+                // A retained command would be carried out again at every connection: never take one.
+                .WithRetainHandling(MqttRetainHandling.DoNotSendOnSubscribe));
+        }
+
+        MqttClientSubscribeResult result = await client.SubscribeAsync(builder.Build(), cancellationToken).ConfigureAwait(false);
+        foreach (MqttClientSubscribeResultItem item in result.Items)
+        {
+            if (item.ResultCode > MqttClientSubscribeResultCode.GrantedQoS2)
+            {
+                MqttLog.SubscribeRefused(_logger, item.TopicFilter.Topic, item.ResultCode.ToString());
+            }
+        }
+
+        MqttLog.WritesAccepted(_logger, _catalog.Tags.Count(t => t.Writable), string.Join(", ", filters));
+    }
+
+    private async Task PublishAsync(IMqttClient client, OutboundMessage message, CancellationToken cancellationToken)
+    {
+        await PublishNowAsync(client, message, cancellationToken).ConfigureAwait(false);
+        EndOverflow(_queue.Remove(message));
+    }
+
+    private async Task PublishNowAsync(IMqttClient client, OutboundMessage message, CancellationToken cancellationToken)
+    {
+        MqttClientPublishResult result = await client.PublishAsync(Message(message), cancellationToken).ConfigureAwait(false);
+        if (result.ReasonCode is MqttClientPublishReasonCode.Success or MqttClientPublishReasonCode.NoMatchingSubscribers)
+        {
+            _metrics.Published();
+        }
+        else if (_refusedTopics.Add(message.Topic))
+        {
+            // Acknowledged with a refusal (an ACL, a quota): sending it again would get the same answer.
+            MqttLog.PublishRefused(_logger, message.Topic, result.ReasonCode.ToString(), string.IsNullOrEmpty(result.ReasonString) ? "" : ": " + result.ReasonString);
+        }
+    }
+
+    private MqttApplicationMessage Message(OutboundMessage message)
+    {
+        MqttApplicationMessageBuilder builder = _factory.CreateApplicationMessageBuilder()
+            .WithTopic(message.Topic)
+            .WithPayload(message.Payload)
+            .WithRetainFlag(message.Retain)
+            .WithQualityOfServiceLevel(MqttClientOptionsFactory.QualityOfService(_options.QoS))
+            .WithPayloadFormatIndicator(MqttPayloadFormatIndicator.CharacterData);
+        if (message.CorrelationData is { } correlation)
+        {
+            builder = builder.WithCorrelationData(correlation);
+        }
+
+        return builder.Build();
+    }
+
+    private static async Task DropConnectionAsync(IMqttClient client)
+    {
+        if (!client.IsConnected)
+        {
+            return;
+        }
+
+        try
+        {
+            using var timeout = new CancellationTokenSource(TimeSpan.FromSeconds(2));
+            await client.DisconnectAsync(new MqttClientDisconnectOptions(), timeout.Token).ConfigureAwait(false);
+        }
+        catch (Exception e) when (e is not OutOfMemoryException)
+        {
+            // Already gone.
+        }
+    }
+
+    private void OnOverflowStarted()
+    {
+        Interlocked.Exchange(ref _overflowSince, _time.GetTimestamp());
+        MqttLog.QueueOverflowing(_logger, _queue.Capacity);
+    }
+
+    private void EndOverflow(long dropped)
+    {
+        if (dropped > 0)
+        {
+            MqttLog.QueueOverflowed(_logger, dropped, _queue.Capacity, _time.GetElapsedTime(Interlocked.Read(ref _overflowSince)).TotalSeconds);
+        }
+    }
+
+    private static string Describe(Exception e)
+    {
+        var parts = new List<string>();
+        for (Exception? x = e; x is not null; x = x.InnerException)
+        {
+            string text = x.Message.TrimEnd('.');
+            if (text.Length > 0 && !parts.Any(p => p.Contains(text, StringComparison.Ordinal)))
+            {
+                parts.Add(text);
+            }
+        }
+
+        return parts.Count == 0 ? e.GetType().Name : string.Join(": ", parts);
+    }
+}

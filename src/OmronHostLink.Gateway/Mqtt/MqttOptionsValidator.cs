@@ -1,0 +1,263 @@
+using Microsoft.Extensions.Configuration;
+using Microsoft.Extensions.Options;
+using OmronHostLink.Gateway.Configuration;
+
+namespace OmronHostLink.Gateway.Mqtt;
+
+/// <summary>
+/// Checks the <c>Mqtt</c> section before anything starts, naming each bad key by its configuration path; also checks
+/// that the names of links and poll groups can be topic levels and that the groups marked <c>Writable</c> can be
+/// written.
+/// </summary>
+public sealed class MqttOptionsValidator : IValidateOptions<MqttOptions>
+{
+    private readonly IConfiguration _configuration;
+
+    /// <summary>Creates the validator; the <c>HostLink</c> section is read from <paramref name="configuration"/>.</summary>
+    public MqttOptionsValidator(IConfiguration configuration)
+    {
+        _configuration = configuration;
+    }
+
+    /// <inheritdoc/>
+    public ValidateOptionsResult Validate(string? name, MqttOptions options)
+    {
+        ArgumentNullException.ThrowIfNull(options);
+        if (!options.Enabled)
+        {
+            return ValidateOptionsResult.Success;
+        }
+
+        const string root = MqttOptions.SectionName;
+        var failures = new List<string>();
+        if (string.IsNullOrWhiteSpace(options.Host))
+        {
+            failures.Add($"{root}:Host is empty; set the broker's host name or address (e.g. 127.0.0.1 or broker.plant.local).");
+        }
+        else if (options.Host.Any(char.IsWhiteSpace) || options.Host.Contains('/', StringComparison.Ordinal) || options.Host.Count(c => c == ':') == 1)
+        {
+            failures.Add($"{root}:Host '{options.Host}' is not a host name or address (no scheme, no port: the port is {root}:Port).");
+        }
+
+        if (options.Port is { } port && port is < 1 or > 65535)
+        {
+            failures.Add($"{root}:Port must be 1-65535; it is {port}.");
+        }
+
+        if (!string.IsNullOrWhiteSpace(options.ClientId) && MqttTopics.LevelProblem(options.ClientId) is { } idProblem)
+        {
+            failures.Add($"{root}:ClientId '{options.ClientId}' names the worker's status topic ({{TopicPrefix}}/status/{{ClientId}}) and {idProblem}.");
+        }
+
+        if (!string.IsNullOrEmpty(options.Password) && string.IsNullOrEmpty(options.Username))
+        {
+            failures.Add($"{root}:Password is set without {root}:Username.");
+        }
+
+        if (options.QoS is < 0 or > 2)
+        {
+            failures.Add($"{root}:QoS must be 0, 1 or 2; it is {options.QoS}.");
+        }
+
+        ValidatePrefix(options.TopicPrefix, failures);
+        if (options.QueueCapacity is < 1 or > 10_000_000)
+        {
+            failures.Add($"{root}:QueueCapacity must be 1-10000000; it is {options.QueueCapacity}.");
+        }
+
+        if (options.KeepAlive < TimeSpan.Zero || options.KeepAlive > TimeSpan.FromSeconds(ushort.MaxValue))
+        {
+            failures.Add($"{root}:KeepAlive must be 0 (off) to 18:12:15; it is {options.KeepAlive}.");
+        }
+
+        if (options.Timeout <= TimeSpan.Zero)
+        {
+            failures.Add($"{root}:Timeout must be more than 0; it is {options.Timeout}.");
+        }
+
+        if (options.Reconnect is null)
+        {
+            failures.Add($"{root}:Reconnect is missing.");
+        }
+        else
+        {
+            if (options.Reconnect.Initial <= TimeSpan.Zero)
+            {
+                failures.Add($"{root}:Reconnect:Initial must be more than 0; it is {options.Reconnect.Initial}.");
+            }
+
+            if (options.Reconnect.Max < options.Reconnect.Initial)
+            {
+                failures.Add($"{root}:Reconnect:Max ({options.Reconnect.Max}) must be at least Reconnect:Initial ({options.Reconnect.Initial}).");
+            }
+        }
+
+        ValidateTls(options.Tls, failures);
+        ValidateTags(failures);
+        return failures.Count == 0 ? ValidateOptionsResult.Success : ValidateOptionsResult.Fail(failures);
+    }
+
+    private static void ValidatePrefix(string? prefix, List<string> failures)
+    {
+        const string key = MqttOptions.SectionName + ":TopicPrefix";
+        if (string.IsNullOrEmpty(prefix))
+        {
+            failures.Add($"{key} is empty; set the first topic level(s), e.g. omronhostlink or plant1/hostlink.");
+            return;
+        }
+
+        if (prefix.StartsWith('$'))
+        {
+            failures.Add($"{key} '{prefix}' starts with '$', which brokers reserve ($SYS).");
+            return;
+        }
+
+        foreach (string level in prefix.Split('/'))
+        {
+            if (MqttTopics.LevelProblem(level) is { } problem)
+            {
+                failures.Add($"{key} '{prefix}': a level {(level.Length == 0 ? "is empty (a leading, trailing or doubled '/')" : problem)}.");
+                return;
+            }
+        }
+    }
+
+    private static void ValidateTls(MqttTlsOptions? tls, List<string> failures)
+    {
+        const string key = MqttOptions.SectionName + ":Tls";
+        if (tls is null)
+        {
+            return;
+        }
+
+        if (!tls.Enabled)
+        {
+            if (!string.IsNullOrEmpty(tls.CaFile) || tls.AllowUntrustedCertificates)
+            {
+                failures.Add($"{key}:Enabled is false but {(string.IsNullOrEmpty(tls.CaFile) ? "AllowUntrustedCertificates" : "CaFile")} is set; set {key}:Enabled to true to use TLS.");
+            }
+
+            return;
+        }
+
+        if (!string.IsNullOrEmpty(tls.CaFile))
+        {
+            if (!File.Exists(tls.CaFile))
+            {
+                failures.Add($"{key}:CaFile '{tls.CaFile}' does not exist (relative paths start at the working directory, {Environment.CurrentDirectory}).");
+            }
+            else
+            {
+                try
+                {
+                    foreach (System.Security.Cryptography.X509Certificates.X509Certificate2 certificate in MqttClientOptionsFactory.LoadAuthorities(tls.CaFile))
+                    {
+                        certificate.Dispose();
+                    }
+                }
+                catch (Exception e) when (e is InvalidOperationException or System.Security.Cryptography.CryptographicException or IOException or UnauthorizedAccessException)
+                {
+                    failures.Add($"{key}:CaFile '{tls.CaFile}' cannot be read as PEM certificates: {e.Message}");
+                }
+            }
+
+            if (tls.AllowUntrustedCertificates)
+            {
+                failures.Add($"{key}: set either CaFile or AllowUntrustedCertificates, not both (AllowUntrustedCertificates turns every check off).");
+            }
+        }
+    }
+
+    private void ValidateTags(List<string> failures)
+    {
+        GatewayOptions? worker = _configuration.GetSection(GatewayOptions.SectionName).Get<GatewayOptions>();
+        if (worker is null)
+        {
+            return;
+        }
+
+        foreach ((string linkName, LinkOptions? link) in worker.Links)
+        {
+            if (link is not { Enabled: true })
+            {
+                continue;
+            }
+
+            string path = $"{GatewayOptions.SectionName}:Links:{linkName}";
+            if (MqttTopics.LevelProblem(linkName) is { } linkProblem)
+            {
+                failures.Add($"{path}: the link's name is a topic level for MQTT and {linkProblem}.");
+            }
+            else if (linkName == MqttTopics.StatusLevel)
+            {
+                failures.Add($"{path}: a link cannot be named '{MqttTopics.StatusLevel}' with MQTT on: {{prefix}}/status/… holds the workers' status topics.");
+            }
+
+            foreach ((string groupName, PollGroupOptions? group) in link.Groups)
+            {
+                if (group is null)
+                {
+                    continue;
+                }
+
+                string groupPath = $"{path}:Groups:{groupName}";
+                if (MqttTopics.LevelProblem(groupName) is { } groupProblem)
+                {
+                    failures.Add($"{groupPath}: the group's name is a topic level for MQTT and {groupProblem}.");
+                }
+
+                if (group.Writable)
+                {
+                    ValidateWritable(groupPath, group, link.CommandSet, failures);
+                }
+            }
+        }
+    }
+
+    private static void ValidateWritable(string path, PollGroupOptions group, HostLinkCommandSet protocol, List<string> failures)
+    {
+        // The HostLink validator reports bad addresses and types; only what writing adds is checked here.
+        if (!PlcAddress.TryParse(group.Address, out PlcAddress address) || !PlcValueTypes.TryParse(group.Type, out PlcValueType type) || group.Count < 1)
+        {
+            return;
+        }
+
+        if (type == PlcValueType.Bit)
+        {
+            if (address.Area is PlcArea.Timer or PlcArea.Counter)
+            {
+                failures.Add($"{path}:Writable: {address} is a timer/counter completion flag, which the PLC sets itself; it cannot be written.");
+                return;
+            }
+
+            if (group.Count != 1)
+            {
+                failures.Add($"{path}:Writable: a writable bit group must have Count 1 (one bit, written on its own); it has {group.Count}.");
+                return;
+            }
+        }
+
+        try
+        {
+            int words = type switch
+            {
+                PlcValueType.Bit => 1,
+                PlcValueType.String => PlcWords.WordsForString(group.Count),
+                _ => type.WordsPerValue() * group.Count,
+            };
+            // A bit is written with FINS MEMORY AREA WRITE whatever the link's protocol.
+            address.AsWord().EnsureRange(words, type == PlcValueType.Bit ? HostLinkCommandSet.Fins : protocol, forWrite: true);
+        }
+        catch (ArgumentException e)
+        {
+            failures.Add($"{path}:Writable: {address} cannot be written: {StripParamName(e)}");
+        }
+    }
+
+    private static string StripParamName(ArgumentException e)
+    {
+        string message = e.Message;
+        int at = e.ParamName is null ? -1 : message.LastIndexOf(" (Parameter '", StringComparison.Ordinal);
+        return at >= 0 ? message.Substring(0, at) : message;
+    }
+}

@@ -1,0 +1,199 @@
+using System.Buffers;
+using System.Text.Json;
+using System.Threading.Channels;
+using Microsoft.Extensions.Logging;
+using MQTTnet;
+using OmronHostLink.Gateway.Outputs;
+
+namespace OmronHostLink.Gateway.Mqtt;
+
+/// <summary>
+/// Carries out write commands one at a time: only for tags configured as writable, only with a value the tag's type
+/// takes, and only through the client the link polls with (one owner of the wire). Anything else is refused and
+/// logged, and nothing reaches the PLC for it. Every command gets a reply: on the MQTT 5 response topic with the
+/// correlation data when the command carries them, otherwise on <c>{command topic}/result</c>.
+/// </summary>
+public sealed class WriteCommandProcessor
+{
+    /// <summary>How many commands may wait; more are refused at once.</summary>
+    public const int Backlog = 256;
+
+    private readonly Channel<WriteCommand> _commands = Channel.CreateBounded<WriteCommand>(new BoundedChannelOptions(Backlog) { SingleReader = true });
+    private readonly MqttTopics _topics;
+    private readonly TagCatalog _catalog;
+    private readonly OpenLinks _links;
+    private readonly OutboundQueue _queue;
+    private readonly MqttMetrics _metrics;
+    private readonly ILogger _logger;
+    private readonly TimeProvider _time;
+    private readonly bool _enabled;
+
+    /// <summary>Creates the processor.</summary>
+    public WriteCommandProcessor(MqttOptions options, MqttTopics topics, TagCatalog catalog, OpenLinks links, OutboundQueue queue, MqttMetrics metrics, ILogger<WriteCommandProcessor> logger, TimeProvider timeProvider)
+    {
+        ArgumentNullException.ThrowIfNull(options);
+        _enabled = options.Writes.Enabled;
+        _topics = topics;
+        _catalog = catalog;
+        _links = links;
+        _queue = queue;
+        _metrics = metrics;
+        _logger = logger;
+        _time = timeProvider;
+    }
+
+    /// <summary>Takes a command from the MQTT client's receive path; never blocks it.</summary>
+    public void Accept(MqttApplicationMessage message)
+    {
+        ArgumentNullException.ThrowIfNull(message);
+        var command = new WriteCommand(message.Topic, message.Payload.ToArray(), message.ResponseTopic, message.CorrelationData, message.Retain);
+        if (!_commands.Writer.TryWrite(command))
+        {
+            Refuse(command, _topics.TryParseCommand(command.Topic, out string l, out int u, out string t) ? _topics.Tag(l, u, t) : command.Topic,
+                $"{Backlog} write commands are already waiting; send it again later.");
+        }
+    }
+
+    /// <summary>Carries out commands in the order they came until <paramref name="cancellationToken"/> is cancelled.</summary>
+    public async Task RunAsync(CancellationToken cancellationToken)
+    {
+        try
+        {
+            await foreach (WriteCommand command in _commands.Reader.ReadAllAsync(cancellationToken).ConfigureAwait(false))
+            {
+                await ExecuteAsync(command, cancellationToken).ConfigureAwait(false);
+            }
+        }
+        catch (OperationCanceledException) when (cancellationToken.IsCancellationRequested)
+        {
+            // Stopping.
+        }
+    }
+
+    /// <summary>Checks and carries out one command, and queues its reply.</summary>
+    public async Task<WriteResultPayload> ExecuteAsync(WriteCommand command, CancellationToken cancellationToken)
+    {
+        ArgumentNullException.ThrowIfNull(command);
+        if (!_topics.TryParseCommand(command.Topic, out string link, out int unit, out string name))
+        {
+            return Refuse(command, command.Topic, $"{command.Topic} is not a command topic ({_topics.Prefix}/{{link}}/{{unit}}/{{tag}}/set).");
+        }
+
+        string tagTopic = _topics.Tag(link, unit, name);
+        if (!_enabled)
+        {
+            return Refuse(command, tagTopic, "writes are disabled (Mqtt:Writes:Enabled is false).");
+        }
+
+        if (command.Retained)
+        {
+            return Refuse(command, tagTopic, "the command came from the broker's retained store; publish write commands without the retain flag.");
+        }
+
+        TagDefinition? tag = _catalog.Find(link, unit, name);
+        if (tag is null)
+        {
+            return Refuse(command, tagTopic, $"this gateway has no tag {name} on unit {unit} of link {link}.");
+        }
+
+        if (!tag.Writable)
+        {
+            return Refuse(command, tagTopic, $"{link}/{unit}/{name} is not writable; only tags with Writable: true (HostLink:Links:{link}:Groups:{name}:Writable) take writes.");
+        }
+
+        JsonElement value;
+        try
+        {
+            using JsonDocument document = JsonDocument.Parse(command.Payload);
+            JsonElement root = document.RootElement;
+            if (root.ValueKind == JsonValueKind.Object)
+            {
+                if (!root.TryGetProperty("value", out JsonElement inner))
+                {
+                    return Refuse(command, tagTopic, "the payload is a JSON object without \"value\"; send the value bare (1234) or as {\"value\": 1234}.");
+                }
+
+                root = inner;
+            }
+
+            value = root.Clone();
+        }
+        catch (JsonException e)
+        {
+            return Refuse(command, tagTopic, $"the payload is not JSON ({e.Message}); send the value bare (1234, \"TEXT\", true) or as {{\"value\": 1234}}.");
+        }
+
+        string valueText = Shorten(value.GetRawText());
+        if (!WriteValueParser.TryEncode(tag.Type, tag.Count, value, tag.WordOrder, out ushort[] words, out string why))
+        {
+            return Refuse(command, tagTopic, $"{tag.Address} ({tag.Type.Name()}): {why}");
+        }
+
+        HostLinkUnit? client = _links.ClientOf(link);
+        if (client is null)
+        {
+            return Refuse(command, tagTopic, $"link {link} is not being polled (stopping, or it could not be set up).");
+        }
+
+        string? endCode = null;
+        string? error = null;
+        try
+        {
+            HostLinkUnit unitView = client.Unit(tag.Unit);
+            if (tag.Type == PlcValueType.Bit)
+            {
+                await unitView.WriteBitAsync(tag.Address, words[0] != 0, cancellationToken).ConfigureAwait(false);
+            }
+            else
+            {
+                await unitView.WriteWordsAsync(tag.Address.AsWord(), words, cancellationToken).ConfigureAwait(false);
+            }
+        }
+        catch (HostLinkEndCodeException e)
+        {
+            endCode = e.EndCode.ToCode();
+            error = e.Message;
+        }
+        catch (FinsEndCodeException e)
+        {
+            endCode = e.EndCode.ToString();
+            error = e.Message;
+        }
+        catch (ArgumentException e)
+        {
+            // The library refused it before the wire.
+            return Refuse(command, tagTopic, e.Message);
+        }
+        catch (Exception e) when (e is HostLinkException or ObjectDisposedException)
+        {
+            error = e.Message;
+        }
+
+        if (error is null)
+        {
+            MqttLog.WriteDone(_logger, tagTopic, tag.Address.ToString(), valueText);
+            return Reply(command, new WriteResultPayload { Status = WriteResultPayload.Done, Tag = tagTopic, Time = _time.GetUtcNow() });
+        }
+
+        MqttLog.WriteFailed(_logger, tagTopic, tag.Address.ToString(), valueText, error);
+        return Reply(command, new WriteResultPayload { Status = WriteResultPayload.Failed, Tag = tagTopic, Error = error, EndCode = endCode, Time = _time.GetUtcNow() });
+    }
+
+    private WriteResultPayload Refuse(WriteCommand command, string tagTopic, string reason)
+    {
+        MqttLog.WriteRefused(_logger, command.Topic, reason);
+        return Reply(command, new WriteResultPayload { Status = WriteResultPayload.Refused, Tag = tagTopic, Error = reason, Time = _time.GetUtcNow() });
+    }
+
+    private WriteResultPayload Reply(WriteCommand command, WriteResultPayload result)
+    {
+        _metrics.Write(result.Status);
+        bool useResponseTopic = !string.IsNullOrEmpty(command.ResponseTopic) && MqttTopics.IsPublishable(command.ResponseTopic);
+        string topic = useResponseTopic ? command.ResponseTopic! : MqttTopics.ResultTopic(command.Topic);
+        byte[] payload = JsonSerializer.SerializeToUtf8Bytes(result, MqttJsonContext.Default.WriteResultPayload);
+        _queue.Enqueue(new OutboundMessage(topic, payload, Retain: false, useResponseTopic ? command.CorrelationData : null));
+        return result;
+    }
+
+    private static string Shorten(string text) => text.Length > 60 ? text.Substring(0, 60) + "…" : text;
+}

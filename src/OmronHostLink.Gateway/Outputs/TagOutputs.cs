@@ -1,0 +1,41 @@
+namespace OmronHostLink.Gateway.Outputs;
+
+/// <summary>
+/// The configured outputs as one: the polling engine reports to this, and it passes every report to each output in
+/// registration order. The pipeline knows no output by name.
+/// </summary>
+/// <param name="outputs">The outputs (<see cref="OpenLinks"/>, MQTT, …).</param>
+public sealed class TagOutputs(IEnumerable<ITagOutput> outputs) : ITagOutput
+{
+    private readonly ITagOutput[] _outputs = outputs.ToArray();
+
+    /// <summary>How many outputs there are.</summary>
+    public int Count => _outputs.Length;
+
+    /// <inheritdoc/>
+    public void LinkOpened(string link, HostLinkUnit client)
+    {
+        foreach (ITagOutput output in _outputs)
+        {
+            output.LinkOpened(link, client);
+        }
+    }
+
+    /// <inheritdoc/>
+    public void LinkChanged(string link, LinkState state, string? detail = null)
+    {
+        foreach (ITagOutput output in _outputs)
+        {
+            output.LinkChanged(link, state, detail);
+        }
+    }
+
+    /// <inheritdoc/>
+    public void TagChanged(TagChange change)
+    {
+        foreach (ITagOutput output in _outputs)
+        {
+            output.TagChanged(change);
+        }
+    }
+}

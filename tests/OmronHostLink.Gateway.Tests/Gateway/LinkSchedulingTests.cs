@@ -1,0 +1,181 @@
+using System.Diagnostics;
+using System.Globalization;
+using Microsoft.Extensions.Configuration;
+using Microsoft.Extensions.DependencyInjection;
+using Microsoft.Extensions.Hosting;
+using Microsoft.Extensions.Logging;
+using OmronHostLink.Simulator;
+using OmronHostLink.Gateway.Tests.Mqtt;
+using OmronHostLink.Gateway;
+using Xunit.Abstractions;
+
+namespace OmronHostLink.Gateway.Tests.Gateway;
+
+/// <summary>
+/// How the groups of one link share it, read from the frames that reach the PLC: one watch per group on the link's one
+/// client, whose gate takes waiting reads in turn. The PLC answers after a turnaround, as on a real line, so the link
+/// (not the worker's handling of what it read) is what the groups share.
+/// </summary>
+public sealed class LinkSchedulingTests(ITestOutputHelper output) : IAsyncLifetime
+{
+    private readonly List<CapturingLoggerProvider> _logs = new();
+    private RecordingSimulator _simulator = null!;
+
+    public async Task InitializeAsync()
+    {
+        var plc = new VirtualPlc(new VirtualPlcOptions { Units = [0], Turnaround = TimeSpan.FromMilliseconds(5) });
+        _simulator = await RecordingSimulator.StartAsync(plc);
+    }
+
+    public async Task DisposeAsync()
+    {
+        await _simulator.DisposeAsync();
+        foreach (CapturingLoggerProvider logs in _logs)
+        {
+            output.WriteLine(logs.Dump());
+        }
+    }
+
+    [Fact]
+    public async Task Groups_start_in_the_order_configured_and_take_turns_when_all_are_due()
+    {
+        Dictionary<string, string?> config = Link();
+        Group(config, "a", "D0", intervalMs: 1);
+        Group(config, "b", "D10", intervalMs: 1);
+        Group(config, "c", "D20", intervalMs: 1);
+
+        await RunAsync(config, () => Reads().Count >= 30);
+
+        string[] order = Reads().Select(r => r.Word switch { 0 => "a", 10 => "b", 20 => "c", _ => "?" }).ToArray();
+        order.Take(27).Should().Equal(Enumerable.Repeat(new[] { "a", "b", "c" }, 9).SelectMany(x => x), "the groups alternate read for read");
+    }
+
+    [Fact]
+    public async Task No_group_starves_on_an_overloaded_link()
+    {
+        // Three groups want a read every millisecond (one of them 120 words, four answer frames): the link can never
+        // keep up. A fourth wants one every 500 ms.
+        Dictionary<string, string?> config = Link();
+        Group(config, "fast", "D0", intervalMs: 1);
+        Group(config, "also-fast", "D10", intervalMs: 1);
+        Group(config, "slow-read", "D100", count: 120, intervalMs: 1);
+        Group(config, "rare", "D500", intervalMs: 500);
+
+        TimeSpan elapsed = await RunAsync(config, () => Reads().Count(r => r.Word == 500) >= 4);
+
+        Dictionary<int, int> counts = Reads().GroupBy(r => r.Word).ToDictionary(g => g.Key, g => g.Count());
+        counts[0].Should().BeCloseTo(counts[10], 1);
+        counts[100].Should().BeCloseTo(counts[0], 1);
+        // The rare group still gets its turn every time it is due.
+        counts[500].Should().BeGreaterThanOrEqualTo((int)(elapsed.TotalMilliseconds / 500) - 1);
+    }
+
+    [Fact]
+    public async Task While_a_unit_is_down_one_of_its_groups_tries_it_and_the_others_wait()
+    {
+        Dictionary<string, string?> config = Link();
+        // Each attempt on a silent unit costs the link its timeouts and the fence after them (about 0.7 s here).
+        config["HostLink:Links:plc:Backoff:Initial"] = "00:00:00.500";
+        config["HostLink:Links:plc:Backoff:Max"] = "00:00:00.500";
+        Group(config, "present", "D0", intervalMs: 50);
+        Group(config, "x", "D100", intervalMs: 50, unit: 5); // nobody answers unit 5
+        Group(config, "y", "D200", intervalMs: 50, unit: 5);
+        Group(config, "z", "D300", intervalMs: 50, unit: 5);
+        CapturingLoggerProvider logs = null!;
+        int before = 0;
+        await RunAsync(config, () => false, async (l, _) =>
+        {
+            logs = l;
+            // Each group of unit 5 fails once when the outage begins (x, y, z), then only one of them tries again.
+            await Eventually(() => l.WithEvent(GatewayLog.Events.UnitDown).Count == 1 && l.WithEvent(GatewayLog.Events.UnitStillDown).Count >= 3, l);
+            await Task.Delay(TimeSpan.FromSeconds(1));
+            before = Reads().Count;
+            await Task.Delay(TimeSpan.FromSeconds(3));
+        });
+
+        List<(int Unit, int Word)> during = Reads().Skip(before).ToList();
+        during.Where(r => r.Unit == 5).Select(r => r.Word).Distinct().Should().ContainSingle("one group tries the silent unit; the others wait for it to answer");
+        during.Count(r => r.Unit == 5).Should().BeGreaterThan(2, "the unit is tried again after each backoff");
+        during.Count(r => r.Unit == 0).Should().BeGreaterThan(5, "unit 0 is polled between the attempts");
+        logs.WithEvent(GatewayLog.Events.UnitDown).Should().ContainSingle();
+    }
+
+    /// <summary>The C-mode word reads (<c>@uuRDwwwwcccc…</c>) the PLC received, in order.</summary>
+    private List<(int Unit, int Word)> Reads() => _simulator.Received
+        .Where(f => RecordingSimulator.Header(f) == "RD")
+        .Select(f => (int.Parse(f.AsSpan(1, 2), CultureInfo.InvariantCulture), int.Parse(f.AsSpan(5, 4), CultureInfo.InvariantCulture)))
+        .ToList();
+
+    private Dictionary<string, string?> Link() => new()
+    {
+        ["HostLink:Links:plc:Tcp"] = $"127.0.0.1:{_simulator.Port}",
+        ["HostLink:Links:plc:Serial:BaudRate"] = "115200",
+        ["HostLink:Links:plc:TurnaroundAllowance"] = "00:00:00.200",
+        ["HostLink:Links:plc:ReadRetries"] = "1",
+        ["HostLink:Links:plc:Tcp:ConnectTimeout"] = "00:00:00.500",
+    };
+
+    private static void Group(Dictionary<string, string?> config, string name, string address, int count = 1, int intervalMs = 50, int unit = 0)
+    {
+        string g = $"HostLink:Links:plc:Groups:{name}:";
+        config[g + "Address"] = address;
+        config[g + "Type"] = "word";
+        config[g + "Count"] = count.ToString(CultureInfo.InvariantCulture);
+        config[g + "Interval"] = TimeSpan.FromMilliseconds(intervalMs).ToString();
+        config[g + "Log"] = "OnChange";
+        config[g + "Unit"] = unit.ToString(CultureInfo.InvariantCulture);
+    }
+
+    /// <summary>Runs the worker until <paramref name="done"/> (and <paramref name="during"/>) and stops it; returns how long it ran.</summary>
+    private async Task<TimeSpan> RunAsync(Dictionary<string, string?> config, Func<bool> done, Func<CapturingLoggerProvider, IHost, Task>? during = null)
+    {
+        var logs = new CapturingLoggerProvider();
+        _logs.Add(logs);
+        var configuration = new ConfigurationManager();
+        configuration.AddInMemoryCollection(config);
+        HostApplicationBuilder builder = GatewayHost.CreateBuilder(new HostApplicationBuilderSettings
+        {
+            DisableDefaults = true,
+            EnvironmentName = "Test",
+            ContentRootPath = AppContext.BaseDirectory,
+            Configuration = configuration,
+        });
+        builder.Logging.SetMinimumLevel(LogLevel.Debug);
+        builder.Logging.AddProvider(logs);
+        builder.Services.Configure<HostOptions>(o => o.ShutdownTimeout = TimeSpan.FromSeconds(5));
+        using IHost host = builder.Build();
+        var clock = Stopwatch.StartNew();
+        await host.StartAsync();
+        try
+        {
+            if (during is not null)
+            {
+                await during(logs, host);
+            }
+            else
+            {
+                await Eventually(done, logs);
+            }
+        }
+        finally
+        {
+            await host.StopAsync();
+        }
+
+        return clock.Elapsed;
+    }
+
+    private static async Task Eventually(Func<bool> condition, CapturingLoggerProvider logs)
+    {
+        var clock = Stopwatch.StartNew();
+        while (!condition())
+        {
+            if (clock.Elapsed > TimeSpan.FromSeconds(15))
+            {
+                throw new Xunit.Sdk.XunitException($"Timed out. Log:{Environment.NewLine}{logs.Dump()}");
+            }
+
+            await Task.Delay(10);
+        }
+    }
+}

@@ -1,0 +1,88 @@
+using System.Diagnostics;
+using System.Globalization;
+using Microsoft.Extensions.Configuration;
+using Microsoft.Extensions.DependencyInjection;
+using Microsoft.Extensions.Hosting;
+using Microsoft.Extensions.Logging;
+using OmronHostLink.Gateway;
+
+namespace OmronHostLink.Gateway.Tests.Mqtt;
+
+/// <summary>Configuration and hosts for worker tests with MQTT: one link "plc" to the simulator, topics under "test".</summary>
+public static class MqttGatewayConfig
+{
+    /// <summary>The topic prefix the tests use.</summary>
+    public const string Prefix = "test";
+
+    /// <summary>A worker polling the simulator at <paramref name="plcPort"/> and publishing to <paramref name="broker"/> (fast timings).</summary>
+    public static Dictionary<string, string?> Create(int plcPort, MosquittoBroker? broker, string clientId = "worker-test") => new()
+    {
+        ["HostLink:Links:plc:Tcp"] = $"127.0.0.1:{plcPort}",
+        ["HostLink:Links:plc:Serial:BaudRate"] = "115200",
+        ["HostLink:Links:plc:TurnaroundAllowance"] = "00:00:00.200",
+        ["HostLink:Links:plc:ReadRetries"] = "1",
+        ["HostLink:Links:plc:Tcp:ConnectTimeout"] = "00:00:00.500",
+        ["HostLink:Links:plc:Backoff:Initial"] = "00:00:00.100",
+        ["HostLink:Links:plc:Backoff:Max"] = "00:00:00.200",
+        ["Mqtt:Host"] = "127.0.0.1",
+        ["Mqtt:Port"] = (broker?.Port ?? 1).ToString(CultureInfo.InvariantCulture),
+        ["Mqtt:ClientId"] = clientId,
+        ["Mqtt:TopicPrefix"] = Prefix,
+        ["Mqtt:Timeout"] = "00:00:05",
+        ["Mqtt:Reconnect:Initial"] = "00:00:00.100",
+        ["Mqtt:Reconnect:Max"] = "00:00:00.500",
+    };
+
+    /// <summary>Adds a poll group (a tag) to the link "plc".</summary>
+    public static void Group(Dictionary<string, string?> config, string name, string address, string type = "int16", int count = 1, int intervalMs = 20, bool writable = false, int unit = 0)
+    {
+        string g = $"HostLink:Links:plc:Groups:{name}:";
+        config[g + "Address"] = address;
+        config[g + "Type"] = type;
+        config[g + "Count"] = count.ToString(CultureInfo.InvariantCulture);
+        config[g + "Interval"] = TimeSpan.FromMilliseconds(intervalMs).ToString();
+        config[g + "Log"] = "OnChange";
+        config[g + "Unit"] = unit.ToString(CultureInfo.InvariantCulture);
+        if (writable)
+        {
+            config[g + "Writable"] = "true";
+        }
+    }
+
+    /// <summary>The value topic of a tag on the link "plc".</summary>
+    public static string Topic(string tag, int unit = 0) => $"{Prefix}/plc/{unit}/{tag}";
+
+    /// <summary>Builds the worker's host as Program.cs does, from in-memory configuration, logging to <paramref name="logs"/>.</summary>
+    public static IHost Build(Dictionary<string, string?> config, CapturingLoggerProvider logs)
+    {
+        var configuration = new ConfigurationManager();
+        configuration.AddInMemoryCollection(config);
+        HostApplicationBuilder builder = GatewayHost.CreateBuilder(new HostApplicationBuilderSettings
+        {
+            DisableDefaults = true,
+            EnvironmentName = "Test",
+            ContentRootPath = AppContext.BaseDirectory,
+            Configuration = configuration,
+        });
+        builder.Logging.SetMinimumLevel(LogLevel.Debug);
+        builder.Logging.AddProvider(logs);
+        builder.Services.Configure<HostOptions>(o => o.ShutdownTimeout = TimeSpan.FromSeconds(10));
+        return builder.Build();
+    }
+
+    /// <summary>Waits until <paramref name="condition"/> holds, checking every 20 ms, at most <paramref name="patience"/> (default 20 s).</summary>
+    public static async Task Eventually(Func<bool> condition, string what, CapturingLoggerProvider logs, TimeSpan? patience = null)
+    {
+        TimeSpan limit = patience ?? TimeSpan.FromSeconds(20);
+        var clock = Stopwatch.StartNew();
+        while (!condition())
+        {
+            if (clock.Elapsed > limit)
+            {
+                throw new Xunit.Sdk.XunitException($"Timed out waiting until {what}. Log:{Environment.NewLine}{logs.Dump()}");
+            }
+
+            await Task.Delay(20);
+        }
+    }
+}
