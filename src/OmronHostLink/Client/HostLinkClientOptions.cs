@@ -74,6 +74,14 @@ public sealed class HostLinkClientOptions
     /// <summary>The clock frame deadlines run on. Default <see cref="TimeProvider.System"/>; tests pass a fake one.</summary>
     public TimeProvider TimeProvider { get; set; } = TimeProvider.System;
 
+    /// <summary>
+    /// The PLC model addresses, counts and commands are checked against before anything is sent (see
+    /// <see cref="PlcModelProfile.All"/> and docs/models.md): a name such as <c>CPM1A</c>, <c>CP1E-E</c>, <c>C200HS</c>
+    /// or <c>CJ2</c>; <c>"auto"</c> to ask each unit MM once, on first use, and use the model it names; null (the
+    /// default) to check the CS/CJ sizes only.
+    /// </summary>
+    public string? Model { get; set; }
+
     /// <summary>Checks the options and says what is wrong.</summary>
     /// <exception cref="ArgumentException">An option is out of range.</exception>
     public void Validate()
@@ -94,6 +102,11 @@ public sealed class HostLinkClientOptions
         if (TimeProvider is null)
         {
             throw new ArgumentException("TimeProvider is required.", nameof(TimeProvider));
+        }
+
+        if (Model is not null && !string.Equals(Model, UnitModels.Auto, StringComparison.OrdinalIgnoreCase) && !PlcModelProfile.TryParse(Model, out _))
+        {
+            throw new ArgumentException($"Model '{Model}' is not a known PLC model; use one of {PlcModelProfile.KnownNames()}, or auto to ask the PLC (MM).", nameof(Model));
         }
 
         if (LinkName is not null && LinkName.Trim().Length == 0)
