@@ -46,11 +46,13 @@ public sealed class HostLinkClientOptions
 
     /// <summary>
     /// Whether C-mode planned reads (<c>ReadTagsAsync</c>, <c>WatchAsync</c>) may use QQ, the compound read (QQMR
-    /// registration, then one QQIR a cycle), where it costs fewer characters than area reads. Default true. Turn it off
-    /// for PLCs without QQ: the CP2E (W614 lists no QQ), and others whose model profile says so
-    /// (<c>PlcModelProfile.SupportsCompoundRead</c>); such a PLC answers QQ with IC.
+    /// registration once, then one QQIR a cycle), where it costs fewer characters than area reads: 100 scattered tags
+    /// at 9600 bps read several times faster. Default false (the plans of earlier versions); turn it on for PLCs with QQ
+    /// (CS/CJ, CP1, C200H/HS/HX, CQM1/CQM1H, CPM1/CPM2, SRM1: W342 p168, C200HS p428, CQM1H p470, CPM1 p302). Leave it off
+    /// for the CP2E (W614 lists no QQ) and any model whose profile says so (<c>PlcModelProfile.SupportsCompoundRead</c>);
+    /// a unit whose model profile lacks QQ is read by area even when it is on.
     /// </summary>
-    public bool UseCompoundRead { get; set; } = true;
+    public bool UseCompoundRead { get; set; }
 
     /// <summary>
     /// The line echoes what we send before the PLC answers (2-wire RS-485 adapters without echo suppression): expect and
@@ -107,20 +109,19 @@ public sealed class HostLinkClientOptions
     /// <exception cref="ArgumentException">An option is out of range.</exception>
     public void Validate()
     {
-        Guard.Unit(UnitNumber, nameof(UnitNumber));
+        // The rules are the settings' own (SettingRules): one check, whichever way the values arrive.
+        Check(nameof(UnitNumber), UnitNumber, SettingRules.UnitNumber(UnitNumber));
         if (LineTiming is null)
         {
             throw new ArgumentException("LineTiming is required.", nameof(LineTiming));
         }
 
-        if (TurnaroundAllowance <= TimeSpan.Zero || TurnaroundAllowance > TimeSpan.FromMinutes(1))
-        {
-            throw new ArgumentOutOfRangeException(nameof(TurnaroundAllowance), TurnaroundAllowance, "TurnaroundAllowance must be more than 0 and at most 1 minute.");
-        }
-
-        Guard.InRange(ReadRetries, 0, 10, nameof(ReadRetries));
-        Guard.InRange(WriteRetries, 0, 10, nameof(WriteRetries));
-        Guard.InRange(FinsResponseWait, 0, 15, nameof(FinsResponseWait));
+        Check(nameof(TurnaroundAllowance), TurnaroundAllowance, SettingRules.TurnaroundAllowance(TurnaroundAllowance));
+        Check(nameof(ReadRetries), ReadRetries, SettingRules.Retries(ReadRetries));
+        Check(nameof(WriteRetries), WriteRetries, SettingRules.Retries(WriteRetries));
+        Check(nameof(FinsResponseWait), FinsResponseWait, SettingRules.FinsResponseWait(FinsResponseWait));
+        Check(nameof(CommandSet), CommandSet, SettingRules.CommandSet(CommandSet));
+        Check(nameof(WordOrder), WordOrder, SettingRules.WordOrder(WordOrder));
         if (SendInterval < TimeSpan.Zero || SendInterval > MaxSendInterval)
         {
             throw new ArgumentOutOfRangeException(nameof(SendInterval), SendInterval, "SendInterval must be between 0 and 10 s.");
@@ -133,9 +134,9 @@ public sealed class HostLinkClientOptions
 
         foreach (KeyValuePair<int, TimeSpan> unit in UnitSendIntervals)
         {
-            if ((uint)unit.Key > 31)
+            if (SettingRules.UnitNumber(unit.Key) is not null)
             {
-                throw new ArgumentOutOfRangeException(nameof(UnitSendIntervals), unit.Key, $"UnitSendIntervals names unit {unit.Key}; Host Link unit numbers are 0-31.");
+                throw new ArgumentOutOfRangeException(nameof(UnitSendIntervals), unit.Key, $"UnitSendIntervals names unit {unit.Key}; Host Link unit numbers are 0-{HostLinkUnit.MaxUnitNumber}.");
             }
 
             if (unit.Value < TimeSpan.Zero || unit.Value > MaxSendInterval)
@@ -157,6 +158,14 @@ public sealed class HostLinkClientOptions
         if (LinkName is not null && LinkName.Trim().Length == 0)
         {
             throw new ArgumentException("LinkName is empty; leave it unset (null) to name the link by its port or host:port.", nameof(LinkName));
+        }
+    }
+
+    private static void Check(string name, object value, string? problem)
+    {
+        if (problem is not null)
+        {
+            throw new ArgumentOutOfRangeException(name, value, $"{name} {problem}.");
         }
     }
 

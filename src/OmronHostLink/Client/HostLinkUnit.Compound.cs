@@ -20,7 +20,7 @@ public partial class HostLinkUnit
     /// <returns>One value per address.</returns>
     /// <exception cref="FormatException">An address is not valid (nothing is sent).</exception>
     /// <exception cref="ArgumentException">No addresses, more than 128, or one QQ cannot reach (nothing is sent).</exception>
-    public async ValueTask<ushort[]> ReadCompoundAsync(IReadOnlyList<string> addresses, CancellationToken cancellationToken = default)
+    public async Task<ushort[]> ReadCompoundAsync(IReadOnlyList<string> addresses, CancellationToken cancellationToken = default)
     {
         Guard.NotNull(addresses);
         var items = new CompoundItem[addresses.Count];

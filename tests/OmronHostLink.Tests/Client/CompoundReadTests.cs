@@ -89,7 +89,7 @@ public sealed class CompoundReadTests : IAsyncDisposable
         var reads = new List<Task<ushort[]>>();
         for (int i = 0; i < 20; i++)
         {
-            reads.Add(_client.ReadCompoundAsync(i % 2 == 0 ? a : b).AsTask());
+            reads.Add(_client.ReadCompoundAsync(i % 2 == 0 ? a : b));
         }
 
         ushort[][] results = await Task.WhenAll(reads);
@@ -102,9 +102,9 @@ public sealed class CompoundReadTests : IAsyncDisposable
     [Fact]
     public async Task Bad_input_is_refused_before_anything_is_sent()
     {
-        await FluentActions.Awaiting(() => _client.ReadCompoundAsync(Array.Empty<string>()).AsTask()).Should().ThrowAsync<ArgumentException>();
-        await FluentActions.Awaiting(() => _client.ReadCompoundAsync(Enumerable.Range(0, 129).Select(i => $"D{i}").ToArray()).AsTask()).Should().ThrowAsync<ArgumentException>();
-        await FluentActions.Awaiting(() => _client.ReadCompoundAsync(["W3"]).AsTask()).Should().ThrowAsync<ArgumentException>();
+        await FluentActions.Awaiting(() => _client.ReadCompoundAsync(Array.Empty<string>())).Should().ThrowAsync<ArgumentException>();
+        await FluentActions.Awaiting(() => _client.ReadCompoundAsync(Enumerable.Range(0, 129).Select(i => $"D{i}").ToArray())).Should().ThrowAsync<ArgumentException>();
+        await FluentActions.Awaiting(() => _client.ReadCompoundAsync(["W3"])).Should().ThrowAsync<ArgumentException>();
         _sent.Should().BeEmpty();
     }
 
