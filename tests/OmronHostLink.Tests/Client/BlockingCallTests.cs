@@ -61,6 +61,8 @@ public sealed class BlockingCallTests
         ("ReadTagsAsync", (c, _) => Expect(c.ReadTagsAsync(new[] { "D100", "D200:float" }), v => v.Should().HaveCount(2))),
         ("ReadTagsAsync", (c, _) => Expect(c.ReadTagsAsync(new[] { PlcTag.Parse("D104") }), v => v.Should().HaveCount(1))),
         ("ReadTagsAsync", (c, _) => Expect(c.ReadTagsAsync(new ReadPlanner().Plan(new[] { PlcTag.Parse("D101") }, 0)), v => v.Should().HaveCount(1))),
+        ("ReadCompoundAsync", (c, _) => Expect(c.ReadCompoundAsync(new[] { "D100", "D104" }), v => v.Should().Equal(1, 5))),
+        ("GetModelProfileAsync", (c, _) => c.GetModelProfileAsync()),
         ("ReadStatusAsync", (c, _) => Expect(c.ReadStatusAsync(), s => s.Mode.Should().Be(PlcMode.Program))),
         ("SetModeAsync", (c, _) => c.SetModeAsync(PlcMode.Monitor)),
         ("SetModeAsync", (c, _) => c.SetModeAsync(PlcMode.Program)),
