@@ -84,7 +84,11 @@ public sealed class GatewayOptionsValidator : IValidateOptions<GatewayOptions>
         {
             try
             {
-                TcpTransport.ParseEndpoint(link.Tcp!);
+                (string host, _) = TcpTransport.ParseEndpoint(link.Tcp!);
+                if (HostSyntax.Problem(host) is { } problem)
+                {
+                    failures.Add($"{path}:Tcp '{link.Tcp}' does not name a host: {problem}.");
+                }
             }
             catch (FormatException e)
             {
