@@ -248,7 +248,7 @@ public sealed class MqttOptionsValidator : IValidateOptions<MqttOptions>
 
                 if (group.Writable)
                 {
-                    ValidateWritable(groupPath, group, link.Protocol, failures);
+                    ValidateWritable(groupPath, group, link.CommandSet, failures);
                 }
             }
         }
