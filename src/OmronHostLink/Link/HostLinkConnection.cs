@@ -1,7 +1,6 @@
 using System.Runtime.CompilerServices;
 using Microsoft.Extensions.Logging;
 using Microsoft.Extensions.Logging.Abstractions;
-using OmronHostLink.Protocol;
 using OmronHostLink.Protocol.CMode;
 using OmronHostLink.Transports;
 
@@ -69,12 +68,7 @@ internal sealed class HostLinkConnection : IAsyncDisposable
 #endif
     public async ValueTask<TResult> ExecuteAsync<TState, TResult>(HostLinkRequest request, int retries, ResponseDecoder<TState, TResult> decode, TState state, CancellationToken cancellationToken)
     {
-        ExchangeShape shape = request.Shape;
-        if (!shape.MultiFrameCommand && !shape.SingleFrameOnly && request.Message.Length + FrameWriter.FinalOverhead > FrameWriter.MaxFirstFrameLength)
-        {
-            throw new ArgumentException($"The {request.Header} command is {request.Message.Length + FrameWriter.FinalOverhead} characters long; it must fit one {FrameWriter.MaxFirstFrameLength}-character frame.");
-        }
-
+        request.CheckLength();
         int attempt = 0;
         var telemetry = new CommandTelemetry(_instruments, _time, LinkName, _transport, request);
         try
@@ -214,11 +208,16 @@ internal sealed class HostLinkConnection : IAsyncDisposable
         }
     }
 
-    /// <summary>Carries a request: resynchronises first if the last exchange failed.</summary>
+    /// <summary>Carries a request, resynchronising first if the last exchange failed; in step and unlogged, the attempt itself.</summary>
+    private ValueTask<TResult> CarryAsync<TState, TResult>(FrameChannel channel, HostLinkRequest request, ResponseDecoder<TState, TResult> decode, TState state)
+        => State == LinkState.Ready && !_logger.IsEnabled(LogLevel.Debug)
+            ? _attempt.RunAsync(channel, request, decode, state)
+            : ResynchroniseAndCarryAsync(channel, request, decode, state);
+
 #if NET
     [AsyncMethodBuilder(typeof(PoolingAsyncValueTaskMethodBuilder<>))]
 #endif
-    private async ValueTask<TResult> CarryAsync<TState, TResult>(FrameChannel channel, HostLinkRequest request, ResponseDecoder<TState, TResult> decode, TState state)
+    private async ValueTask<TResult> ResynchroniseAndCarryAsync<TState, TResult>(FrameChannel channel, HostLinkRequest request, ResponseDecoder<TState, TResult> decode, TState state)
     {
         if (State is LinkState.NeedsInitialize or LinkState.NeedsResync)
         {
