@@ -62,13 +62,17 @@ public sealed class VirtualPlc : OmronHostLink.Protocol.CMode.ICModePlc
         }
 
         _mode = Options.InitialMode;
-        _modelCode = Options.ModelCode;
+        Model = Options.Model is { } name ? PlcModelProfile.Parse(name) : null;
+        _modelCode = Model?.ModelCode ?? Options.ModelCode;
         Faults = new FaultInjector(Options.Faults);
         if (Options.InitialMemoryFile is { } file)
         {
             LoadJsonFile(file);
         }
     }
+
+    /// <summary>The model the PLC emulates (<see cref="VirtualPlcOptions.Model"/>), or null for a CS/CJ CPU.</summary>
+    public PlcModelProfile? Model { get; }
 
     /// <summary>The options the PLC was created with.</summary>
     public VirtualPlcOptions Options { get; }
@@ -246,7 +250,9 @@ public sealed class VirtualPlc : OmronHostLink.Protocol.CMode.ICModePlc
     /// <exception cref="ArgumentOutOfRangeException">The range is outside the area.</exception>
     public ushort[] ReadWords(PlcArea area, int start, int count, int bank = 0)
     {
-        (area, start) = PlcAreaInfo.CioAlias(area, start);
+        PlcArea named = area;
+        int first = start;
+        (area, start) = Alias(area, start);
         ushort[] storage = Storage(area, bank);
         CheckRange(storage, area, start, count);
         var result = new ushort[count];
@@ -254,7 +260,10 @@ public sealed class VirtualPlc : OmronHostLink.Protocol.CMode.ICModePlc
         {
             for (int i = 0; i < count; i++)
             {
-                result[i] = _forced.Apply(area, bank, start + i, storage[start + i]);
+                // Memory the emulated model does not have reads 0000, as its manual says (C200HS RD, CPM1 RD, ...).
+                result[i] = Model is not null && Model.ReadsZero(named, first + i, bank)
+                    ? (ushort)0
+                    : _forced.Apply(area, bank, start + i, storage[start + i]);
             }
         }
 
@@ -276,7 +285,7 @@ public sealed class VirtualPlc : OmronHostLink.Protocol.CMode.ICModePlc
     /// <exception cref="ArgumentOutOfRangeException">The range is outside the area.</exception>
     public void WriteWords(PlcArea area, int start, ReadOnlySpan<ushort> words, int bank = 0)
     {
-        (area, start) = PlcAreaInfo.CioAlias(area, start);
+        (area, start) = Alias(area, start);
         ushort[] storage = Storage(area, bank);
         CheckRange(storage, area, start, words.Length);
         lock (_gate)
@@ -339,7 +348,7 @@ public sealed class VirtualPlc : OmronHostLink.Protocol.CMode.ICModePlc
     public void SetBit(PlcArea area, int word, int bit, bool value, int bank = 0)
     {
         CheckBit(area, bit);
-        (area, word) = PlcAreaInfo.CioAlias(area, word);
+        (area, word) = Alias(area, word);
         ushort[] storage = Storage(area, bank);
         CheckRange(storage, area, word, 1);
         lock (_gate)
@@ -394,6 +403,7 @@ public sealed class VirtualPlc : OmronHostLink.Protocol.CMode.ICModePlc
     /// <returns>Whether the flag is on.</returns>
     public bool GetFlag(PlcArea area, int number)
     {
+        (area, number) = Alias(area, number);
         bool[] flags = Flags(area, number);
         lock (_gate)
         {
@@ -407,6 +417,7 @@ public sealed class VirtualPlc : OmronHostLink.Protocol.CMode.ICModePlc
     /// <param name="value">The new state.</param>
     public void SetFlag(PlcArea area, int number, bool value)
     {
+        (area, number) = Alias(area, number);
         bool[] flags = Flags(area, number);
         lock (_gate)
         {
@@ -549,6 +560,17 @@ public sealed class VirtualPlc : OmronHostLink.Protocol.CMode.ICModePlc
 
         CheckBit(area, bit);
         CheckRange(Storage(area, 0), area, word, 1);
+    }
+
+    // LR n is CIO 1000 + n; on a model whose timers and counters share one TC space, counter n is timer n.
+    private (PlcArea Area, int Word) Alias(PlcArea area, int word)
+    {
+        if (area == PlcArea.Counter && Model is { SharesTimerCounterNumbers: true })
+        {
+            return (PlcArea.Timer, word);
+        }
+
+        return PlcAreaInfo.CioAlias(area, word);
     }
 
     private bool[] Flags(PlcArea area, int number)

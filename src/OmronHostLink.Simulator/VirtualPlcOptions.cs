@@ -13,6 +13,14 @@ public sealed class VirtualPlcOptions
     public byte ModelCode { get; set; } = 0x30;
 
     /// <summary>
+    /// The PLC model to emulate (a <see cref="PlcModelProfile"/> name such as <c>CPM1A</c>, <c>C200HS</c>, <c>CP1E-E</c>):
+    /// its areas and ranges, its C-mode commands and FINS (IC for the others), its MM code (which then overrides
+    /// <see cref="ModelCode"/>; IC where the manuals give none), end code 15 for words it does not have, and 0000 for the
+    /// memory its manual says reads 0000. Null (the default): a CS/CJ CPU.
+    /// </summary>
+    public string? Model { get; set; }
+
+    /// <summary>
     /// A JSON file with initial memory and state, applied after the other options (so its <c>mode</c> and
     /// <c>model</c> win). Format: see <see cref="Memory.InitialMemory"/>. Null for none.
     /// </summary>
@@ -54,10 +62,15 @@ public sealed class VirtualPlcOptions
 
         foreach (int unit in Units)
         {
-            if ((uint)unit > 31)
+            if ((uint)unit > HostLinkUnit.MaxUnitNumber)
             {
-                throw new ArgumentException($"Unit numbers are 0-31; {unit} is not.", nameof(Units));
+                throw new ArgumentException($"Unit numbers are 0-{HostLinkUnit.MaxUnitNumber}; {unit} is not.", nameof(Units));
             }
+        }
+
+        if (Model is not null && !PlcModelProfile.TryParse(Model, out _))
+        {
+            throw new ArgumentException($"Model '{Model}' is not a known PLC model; known models: {PlcModelProfile.KnownNames()}.", nameof(Model));
         }
 
         if (BaudRate < 0)

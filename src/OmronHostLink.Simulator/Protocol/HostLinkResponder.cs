@@ -78,7 +78,7 @@ public sealed class HostLinkResponder
     /// <returns>The answer, or null when the PLC sends none (XZ; a message too short to carry a unit and header).</returns>
     public SimResponse? Respond(ReadOnlySpan<byte> message)
     {
-        if (message.Length < CModeCommand.PrefixLength || !MessagePrefix.TryReadUnit(message, out int unit) || unit > 31)
+        if (message.Length < CModeCommand.PrefixLength || !MessagePrefix.TryReadUnit(message, out int unit) || unit > HostLinkUnit.MaxUnitNumber)
         {
             return null;
         }
@@ -93,14 +93,19 @@ public sealed class HostLinkResponder
     /// <returns>The answer, or null when the PLC sends none (XZ).</returns>
     public SimResponse? Respond(int unit, ReadOnlySpan<byte> header, ReadOnlySpan<byte> text)
     {
-        if ((uint)unit > 31)
+        if ((uint)unit > HostLinkUnit.MaxUnitNumber)
         {
-            throw new ArgumentOutOfRangeException(nameof(unit), unit, "Unit numbers are 0-31.");
+            throw new ArgumentOutOfRangeException(nameof(unit), unit, $"Unit numbers are 0-{HostLinkUnit.MaxUnitNumber}.");
         }
 
         if (header.Length != 2)
         {
             throw new ArgumentException("A header has two characters.", nameof(header));
+        }
+
+        if (_plc.Model is { } model && !Accepts(model, header))
+        {
+            return EndCodeOnly(unit, header, EndCode.UndefinedHeader);
         }
 
         if (CModeHeaders.Is(header, CModeHeaders.Fins))
@@ -128,11 +133,63 @@ public sealed class HostLinkResponder
             return Reply(unit, row, CModeReply.EndCodeOnly(EndCode.FormatError, row.SubHeader));
         }
 
+        if (_plc.Model is { } emulated && Refusal(emulated, command) is { } refusal)
+        {
+            return refusal == EndCode.UndefinedHeader
+                ? EndCodeOnly(unit, header, refusal)
+                : Reply(unit, row, CModeReply.EndCodeOnly(refusal, row.SubHeader));
+        }
+
         lock (_plc.SyncRoot)
         {
             return Reply(unit, row, row.Execute!(command, _plc, unit));
         }
     }
+
+    // FA only with FINS; the rest from the model's C-mode list (TS is answered by every model).
+    private static bool Accepts(PlcModelProfile model, ReadOnlySpan<byte> header)
+    {
+        if (CModeHeaders.Is(header, CModeHeaders.Fins))
+        {
+            return model.SupportsFins;
+        }
+
+        return CModeHeaders.Is(header, CModeHeaders.Test) || model.AcceptsCMode(HeaderString(header));
+    }
+
+    // What the emulated model refuses of a command it has: memory it lacks (15, the manuals' "entry number data error"),
+    // and MM where no manual gives its code (IC: the simulator does not invent one).
+    private static EndCode? Refusal(PlcModelProfile model, CModeCommand command) => command switch
+    {
+        AreaReadCommand read when !ModelHas(model, read.Area, read.Begin, read.Count, read.Bank, forWrite: false) => EndCode.EntryNumberDataError,
+        AreaWriteCommand write when !ModelHas(model, write.Area, write.Begin, write.Words.Length, write.Bank, forWrite: true) => EndCode.EntryNumberDataError,
+        _ when command.Header == CModeHeaders.ModelRead && model.ModelCode is null => EndCode.UndefinedHeader,
+        _ => null,
+    };
+
+    // Every entry is memory the model has (or, for a read, memory its manual says reads 0000) and, for a write, may be written.
+    private static bool ModelHas(PlcModelProfile model, CModeArea area, int begin, int count, int bank, bool forWrite)
+    {
+        for (int entry = begin; entry < begin + count; entry++)
+        {
+            (PlcArea plcArea, int word) = ModelAddress(model, area, entry);
+            PlcAreaRange? range = model.Find(plcArea, word, bank);
+            if (range is null ? forWrite || !model.ReadsZero(plcArea, word, bank) : forWrite && !range.Writable)
+            {
+                return false;
+            }
+        }
+
+        return true;
+    }
+
+    // A C-mode entry as the model's profile names it: LR stays LR, and on a shared TC space every entry is a timer number.
+    private static (PlcArea Area, int Word) ModelAddress(PlcModelProfile model, CModeArea area, int entry) => area switch
+    {
+        CModeArea.Lr => (PlcArea.Link, entry),
+        CModeArea.TimerCounterPv or CModeArea.TimerCounterStatus when model.SharesTimerCounterNumbers => (PlcArea.Timer, entry),
+        _ => CModeAddressing.Locate(area, entry),
+    };
 
     private static string HeaderString(ReadOnlySpan<byte> header) => Encoding.ASCII.GetString(header);
 

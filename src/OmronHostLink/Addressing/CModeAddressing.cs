@@ -24,8 +24,19 @@ internal static class CModeAddressing
 
     /// <summary>The C-mode area and entry of a word address (counter <c>n</c> is entry 2048 + <c>n</c>).</summary>
     /// <exception cref="ArgumentException">The address is in the work area, which C-mode cannot reach.</exception>
-    public static (CModeArea Area, int Begin) Map(PlcAddress address)
+    public static (CModeArea Area, int Begin) Map(PlcAddress address) => Map(address, null);
+
+    /// <summary>
+    /// As <see cref="Map(PlcAddress)"/>, on <paramref name="model"/>: where timers and counters share one TC number
+    /// space (the older families), counter <c>n</c> is entry <c>n</c>, as timer <c>n</c> is.
+    /// </summary>
+    public static (CModeArea Area, int Begin) Map(PlcAddress address, PlcModelProfile? model)
     {
+        if (model is { SharesTimerCounterNumbers: true } && address.Area == PlcArea.Counter)
+        {
+            return (CModeArea.TimerCounterPv, address.Word);
+        }
+
         if (address.Area == PlcArea.Work)
         {
             throw new ArgumentException($"{address} is in the work area, which C-mode cannot reach; use FINS.", nameof(address));

@@ -19,7 +19,7 @@ namespace OmronHostLink;
 public sealed class HostLinkClient : HostLinkUnit, IHostLinkClient
 {
     private HostLinkClient(HostLinkConnection connection, HostLinkClientOptions options)
-        : base(connection, options, options.UnitNumber)
+        : base(connection, options, options.UnitNumber, new UnitModels(options.Model, options.LoggerFactory))
     {
     }
 

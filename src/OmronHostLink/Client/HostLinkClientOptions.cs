@@ -45,6 +45,14 @@ public sealed class HostLinkClientOptions
     public WordOrder WordOrder { get; set; } = WordOrder.LowWordFirst;
 
     /// <summary>
+    /// Whether C-mode planned reads (<c>ReadTagsAsync</c>, <c>WatchAsync</c>) may use QQ, the compound read (QQMR
+    /// registration, then one QQIR a cycle), where it costs fewer characters than area reads. Default true. Turn it off
+    /// for PLCs without QQ: the CP2E (W614 lists no QQ), and others whose model profile says so
+    /// (<c>PlcModelProfile.SupportsCompoundRead</c>); such a PLC answers QQ with IC.
+    /// </summary>
+    public bool UseCompoundRead { get; set; } = true;
+
+    /// <summary>
     /// The line echoes what we send before the PLC answers (2-wire RS-485 adapters without echo suppression): expect and
     /// check our own frames before each answer.
     /// </summary>
@@ -52,6 +60,19 @@ public sealed class HostLinkClientOptions
 
     /// <summary>The FINS response wait time, 0-15 in units of 10 ms, sent in every FA frame.</summary>
     public int FinsResponseWait { get; set; }
+
+    /// <summary>
+    /// The least time between the end of one exchange on the line and the next command, for PLCs and converters that
+    /// drop a command sent right after an answer. Every command on the link waits for it, whichever unit it is for.
+    /// Default zero (none); at most 10 s.
+    /// </summary>
+    public TimeSpan SendInterval { get; set; }
+
+    /// <summary>
+    /// Longer gaps than <see cref="SendInterval"/> before commands to particular units of a multidrop line (unit number
+    /// to gap), for one slow unit among quick ones. Empty by default.
+    /// </summary>
+    public IDictionary<int, TimeSpan> UnitSendIntervals { get; set; } = new Dictionary<int, TimeSpan>();
 
     /// <summary>Where the client logs (frames at Trace, transactions at Debug, retries as warnings).</summary>
     public ILoggerFactory? LoggerFactory { get; set; }
@@ -74,27 +95,62 @@ public sealed class HostLinkClientOptions
     /// <summary>The clock frame deadlines run on. Default <see cref="TimeProvider.System"/>; tests pass a fake one.</summary>
     public TimeProvider TimeProvider { get; set; } = TimeProvider.System;
 
+    /// <summary>
+    /// The PLC model addresses, counts and commands are checked against before anything is sent (see
+    /// <see cref="PlcModelProfile.All"/> and docs/models.md): a name such as <c>CPM1A</c>, <c>CP1E-E</c>, <c>C200HS</c>
+    /// or <c>CJ2</c>; <c>"auto"</c> to ask each unit MM once, on first use, and use the model it names; null (the
+    /// default) to check the CS/CJ sizes only.
+    /// </summary>
+    public string? Model { get; set; }
+
     /// <summary>Checks the options and says what is wrong.</summary>
     /// <exception cref="ArgumentException">An option is out of range.</exception>
     public void Validate()
     {
-        Guard.Unit(UnitNumber, nameof(UnitNumber));
+        // The rules are the settings' own (SettingRules): one check, whichever way the values arrive.
+        Check(nameof(UnitNumber), UnitNumber, SettingRules.UnitNumber(UnitNumber));
         if (LineTiming is null)
         {
             throw new ArgumentException("LineTiming is required.", nameof(LineTiming));
         }
 
-        if (TurnaroundAllowance <= TimeSpan.Zero || TurnaroundAllowance > TimeSpan.FromMinutes(1))
+        Check(nameof(TurnaroundAllowance), TurnaroundAllowance, SettingRules.TurnaroundAllowance(TurnaroundAllowance));
+        Check(nameof(ReadRetries), ReadRetries, SettingRules.Retries(ReadRetries));
+        Check(nameof(WriteRetries), WriteRetries, SettingRules.Retries(WriteRetries));
+        Check(nameof(FinsResponseWait), FinsResponseWait, SettingRules.FinsResponseWait(FinsResponseWait));
+        Check(nameof(CommandSet), CommandSet, SettingRules.CommandSet(CommandSet));
+        Check(nameof(WordOrder), WordOrder, SettingRules.WordOrder(WordOrder));
+        if (SendInterval < TimeSpan.Zero || SendInterval > MaxSendInterval)
         {
-            throw new ArgumentOutOfRangeException(nameof(TurnaroundAllowance), TurnaroundAllowance, "TurnaroundAllowance must be more than 0 and at most 1 minute.");
+            throw new ArgumentOutOfRangeException(nameof(SendInterval), SendInterval, "SendInterval must be between 0 and 10 s.");
         }
 
-        Guard.InRange(ReadRetries, 0, 10, nameof(ReadRetries));
-        Guard.InRange(WriteRetries, 0, 10, nameof(WriteRetries));
-        Guard.InRange(FinsResponseWait, 0, 15, nameof(FinsResponseWait));
+        if (UnitSendIntervals is null)
+        {
+            throw new ArgumentException("UnitSendIntervals is required (empty for none).", nameof(UnitSendIntervals));
+        }
+
+        foreach (KeyValuePair<int, TimeSpan> unit in UnitSendIntervals)
+        {
+            if (SettingRules.UnitNumber(unit.Key) is not null)
+            {
+                throw new ArgumentOutOfRangeException(nameof(UnitSendIntervals), unit.Key, $"UnitSendIntervals names unit {unit.Key}; Host Link unit numbers are 0-{HostLinkUnit.MaxUnitNumber}.");
+            }
+
+            if (unit.Value < TimeSpan.Zero || unit.Value > MaxSendInterval)
+            {
+                throw new ArgumentOutOfRangeException(nameof(UnitSendIntervals), unit.Value, $"UnitSendIntervals[{unit.Key}] must be between 0 and 10 s.");
+            }
+        }
+
         if (TimeProvider is null)
         {
             throw new ArgumentException("TimeProvider is required.", nameof(TimeProvider));
+        }
+
+        if (Model is not null && !string.Equals(Model, UnitModels.Auto, StringComparison.OrdinalIgnoreCase) && !PlcModelProfile.TryParse(Model, out _))
+        {
+            throw new ArgumentException($"Model '{Model}' is not a known PLC model; use one of {PlcModelProfile.KnownNames()}, or auto to ask the PLC (MM).", nameof(Model));
         }
 
         if (LinkName is not null && LinkName.Trim().Length == 0)
@@ -103,7 +159,26 @@ public sealed class HostLinkClientOptions
         }
     }
 
-    internal HostLinkClientOptions Clone() => (HostLinkClientOptions)MemberwiseClone();
+    private static void Check(string name, object value, string? problem)
+    {
+        if (problem is not null)
+        {
+            throw new ArgumentOutOfRangeException(name, value, $"{name} {problem}.");
+        }
+    }
+
+    private static readonly TimeSpan MaxSendInterval = TimeSpan.FromSeconds(10);
+
+    internal HostLinkClientOptions Clone()
+    {
+        var clone = (HostLinkClientOptions)MemberwiseClone();
+        if (UnitSendIntervals is not null)
+        {
+            clone.UnitSendIntervals = new Dictionary<int, TimeSpan>(UnitSendIntervals);
+        }
+
+        return clone;
+    }
 
     /// <summary>The part of these options the link itself uses.</summary>
     internal HostLinkConnectionOptions ToConnectionOptions() => new()
@@ -114,6 +189,8 @@ public sealed class HostLinkClientOptions
         LoggerFactory = LoggerFactory,
         MeterFactory = MeterFactory,
         LinkName = LinkName,
+        SendInterval = SendInterval,
+        UnitSendIntervals = UnitSendIntervals.Count == 0 ? null : new Dictionary<int, TimeSpan>(UnitSendIntervals),
         TimeProvider = TimeProvider,
     };
 }

@@ -62,6 +62,7 @@ public partial class HostLinkUnit
         }
 
         first.EnsureRange(words, HostLinkCommandSet.Fins, forWrite: true);
+        EnsureModel(await GetModelProfileAsync(cancellationToken).ConfigureAwait(false), first, words, HostLinkCommandSet.Fins, forWrite: true);
         for (int done = 0; done < values.Length;)
         {
             int n = Math.Min(MemoryAreaWriteCommand.MaxDataBytes, values.Length - done);

@@ -153,6 +153,7 @@ public partial class HostLinkUnit
     private async ValueTask FinsWriteBitAsync(PlcAddress address, bool value, CancellationToken cancellationToken)
     {
         address.EnsureRange(1, HostLinkCommandSet.Fins, forWrite: true);
+        EnsureModel(await GetModelProfileAsync(cancellationToken).ConfigureAwait(false), address, 1, HostLinkCommandSet.Fins, forWrite: true);
         var command = MemoryAreaWriteCommand.Bits(FinsAddressing.Bit(address), new[] { value });
         await FinsAsync(command, 0, CommandEffect.Idempotent, ExpectNoData, "0102", cancellationToken).ConfigureAwait(false);
     }
@@ -206,6 +207,12 @@ public partial class HostLinkUnit
     /// <summary>Sends one FINS command in an FA frame and decodes the data of a successful answer.</summary>
     private protected ValueTask<TResult> FinsAsync<TState, TResult>(FinsCommand command, int maxResponseData, CommandEffect effect, ResponseDecoder<TState, TResult> decodeData, TState state, CancellationToken cancellationToken)
     {
+        // A model known to have no FINS over Host Link is not sent FA frames at all.
+        if (Models.TryGet(UnitNumber, out PlcModelProfile? model) && model is not null)
+        {
+            model.EnsureFins();
+        }
+
         FinsHeader header = FinsHeader.Direct(Connection.NextSid(), Options.FinsResponseWait);
         var message = new byte[FinsMessage.GetCommandLength(header, command)];
         FinsMessage.WriteCommand(message, UnitNumber, header, command);

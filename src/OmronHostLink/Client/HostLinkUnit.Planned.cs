@@ -56,7 +56,7 @@ public partial class HostLinkUnit
         for (int r = 0; r < results.Length; r++)
         {
             PlannedRead read = plan.Reads[r];
-            HostLinkUnit unit = read.Unit == UnitNumber ? this : new UnitView(Connection, Options, read.Unit);
+            HostLinkUnit unit = read.Unit == UnitNumber ? this : new UnitView(Connection, Options, read.Unit, Models, CompoundReads);
             results[r] = await unit.ExecuteAsync(read, cancellationToken).ConfigureAwait(false);
         }
 
@@ -68,12 +68,18 @@ public partial class HostLinkUnit
 
     private ValueTask<ushort[]> ExecuteAsync(PlannedRead read, CancellationToken cancellationToken)
     {
+        if (!Models.TryGet(UnitNumber, out PlcModelProfile? model))
+        {
+            return ExecuteOnDetectedModelAsync(read, cancellationToken);
+        }
+
+        EnsureModel(model, read);
         switch (read.Kind)
         {
             case PlannedReadKind.FinsMultiple:
                 return ReadScatteredWordsAsync(read.Items, cancellationToken);
             case PlannedReadKind.CModeCompletionFlags:
-                return FlagWordsAsync(CModeReadCompletionFlagsAsync(read.Start, read.Count, cancellationToken));
+                return FlagWordsAsync(CModeReadCompletionFlagsAsync(read.Start, read.Count, cancellationToken, model));
             case PlannedReadKind.FinsCompletionFlags:
                 read.Start.EnsureRange(read.Count, HostLinkCommandSet.Fins, forWrite: false);
                 return FlagWordsAsync(FinsReadCompletionFlagsAsync(read.Start, read.Count, cancellationToken));
@@ -82,8 +88,37 @@ public partial class HostLinkUnit
                 return FinsReadWordsAsync(read.Start, read.Count, cancellationToken);
             default:
                 read.Start.EnsureRange(read.Count, HostLinkCommandSet.CMode, forWrite: false);
-                return CModeReadWordsAsync(read.Start, read.Count, cancellationToken);
+                return CModeReadWordsAsync(read.Start, read.Count, cancellationToken, model);
         }
+    }
+
+    // The plan was made without the model; what the model lacks (FINS, memory) is refused here, before the read is sent.
+    private static void EnsureModel(PlcModelProfile? model, PlannedRead read)
+    {
+        if (model is null)
+        {
+            return;
+        }
+
+        if (read.Kind == PlannedReadKind.FinsMultiple)
+        {
+            model.EnsureFins();
+            foreach (PlcAddress item in read.Items)
+            {
+                model.EnsureRange(item.AsWord(), 1, forWrite: false);
+            }
+
+            return;
+        }
+
+        bool fins = read.Kind is PlannedReadKind.FinsArea or PlannedReadKind.FinsCompletionFlags;
+        EnsureModel(model, read.Start, read.Count, fins ? HostLinkCommandSet.Fins : HostLinkCommandSet.CMode, forWrite: false);
+    }
+
+    private async ValueTask<ushort[]> ExecuteOnDetectedModelAsync(PlannedRead read, CancellationToken cancellationToken)
+    {
+        await GetModelProfileAsync(cancellationToken).ConfigureAwait(false);
+        return await ExecuteAsync(read, cancellationToken).ConfigureAwait(false);
     }
 
     private static async ValueTask<ushort[]> FlagWordsAsync(ValueTask<bool[]> reading)

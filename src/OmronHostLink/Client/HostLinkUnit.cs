@@ -14,15 +14,28 @@ namespace OmronHostLink;
 /// </summary>
 public partial class HostLinkUnit
 {
+    /// <summary>The highest unit number Host Link addresses (the lowest is 0).</summary>
+    public const int MaxUnitNumber = 31;
+
     private protected readonly HostLinkConnection Connection;
     private protected readonly HostLinkClientOptions Options;
+    private protected readonly UnitModels Models;
 
-    private protected HostLinkUnit(HostLinkConnection connection, HostLinkClientOptions options, int unitNumber)
+    private protected readonly CompoundReadRegistry CompoundReads;
+
+    private protected HostLinkUnit(HostLinkConnection connection, HostLinkClientOptions options, int unitNumber, UnitModels models)
+        : this(connection, options, unitNumber, models, new CompoundReadRegistry())
+    {
+    }
+
+    private protected HostLinkUnit(HostLinkConnection connection, HostLinkClientOptions options, int unitNumber, UnitModels models, CompoundReadRegistry compoundReads)
     {
         Guard.Unit(unitNumber);
         Connection = connection;
         Options = options;
         UnitNumber = unitNumber;
+        Models = models;
+        CompoundReads = compoundReads;
     }
 
     /// <summary>The unit number (0-31) this view addresses.</summary>
@@ -36,7 +49,7 @@ public partial class HostLinkUnit
 
     /// <summary>A view of another unit on the same line (multidrop), sharing this link.</summary>
     /// <exception cref="ArgumentOutOfRangeException">The unit number is not 0-31.</exception>
-    public HostLinkUnit Unit(int unitNumber) => new UnitView(Connection, Options, unitNumber);
+    public HostLinkUnit Unit(int unitNumber) => new UnitView(Connection, Options, unitNumber, Models, CompoundReads);
 
     /// <summary>A view of a unit on the same line that uses <paramref name="commandSet"/> where both command sets can do a job.</summary>
     /// <exception cref="ArgumentOutOfRangeException">The unit number is not 0-31.</exception>
@@ -44,7 +57,7 @@ public partial class HostLinkUnit
     {
         HostLinkClientOptions options = Options.Clone();
         options.CommandSet = commandSet;
-        return new UnitView(Connection, options, unitNumber);
+        return new UnitView(Connection, options, unitNumber, Models, CompoundReads);
     }
 
     // ---- Words ----
@@ -64,9 +77,15 @@ public partial class HostLinkUnit
     {
         address = address.AsWord();
         address.EnsureRange(count, Options.CommandSet, forWrite: false);
+        if (!Models.TryGet(UnitNumber, out PlcModelProfile? model))
+        {
+            return ReadWordsOfDetectedModelAsync(address, count, cancellationToken);
+        }
+
+        EnsureModel(model, address, count, Options.CommandSet, forWrite: false);
         return Options.CommandSet == HostLinkCommandSet.Fins
             ? FinsReadWordsAsync(address, count, cancellationToken)
-            : CModeReadWordsAsync(address, count, cancellationToken);
+            : CModeReadWordsAsync(address, count, cancellationToken, model);
     }
 
     /// <summary>Reads one word.</summary>
@@ -86,9 +105,15 @@ public partial class HostLinkUnit
     {
         address = address.AsWord();
         address.EnsureRange(words.Length, Options.CommandSet, forWrite: true);
+        if (!Models.TryGet(UnitNumber, out PlcModelProfile? model))
+        {
+            return WriteWordsOfDetectedModelAsync(address, words, cancellationToken);
+        }
+
+        EnsureModel(model, address, words.Length, Options.CommandSet, forWrite: true);
         return Options.CommandSet == HostLinkCommandSet.Fins
             ? FinsWriteWordsAsync(address, words, cancellationToken)
-            : CModeWriteWordsAsync(address, words, cancellationToken);
+            : CModeWriteWordsAsync(address, words, cancellationToken, model);
     }
 
     /// <summary>Writes one word.</summary>
@@ -180,11 +205,11 @@ public partial class HostLinkUnit
 #if NET
     [System.Runtime.CompilerServices.AsyncMethodBuilder(typeof(System.Runtime.CompilerServices.PoolingAsyncValueTaskMethodBuilder<>))]
 #endif
-    private async ValueTask<ushort[]> CModeReadWordsAsync(PlcAddress address, int count, CancellationToken cancellationToken)
+    private async ValueTask<ushort[]> CModeReadWordsAsync(PlcAddress address, int count, CancellationToken cancellationToken, PlcModelProfile? model = null)
     {
         // The hot path: no command object and no message array (a pooled buffer carries the message); the only
         // allocation of the protocol work is the result.
-        (CModeArea area, int begin) = CModeAddressing.Map(address);
+        (CModeArea area, int begin) = CModeAddressing.Map(address, model);
         int length = AreaReadCommand.GetMessageLength(area);
         byte[] message = ArrayPool<byte>.Shared.Rent(length);
         try
@@ -211,9 +236,9 @@ public partial class HostLinkUnit
         }
     }
 
-    private async ValueTask CModeWriteWordsAsync(PlcAddress address, ReadOnlyMemory<ushort> words, CancellationToken cancellationToken)
+    private async ValueTask CModeWriteWordsAsync(PlcAddress address, ReadOnlyMemory<ushort> words, CancellationToken cancellationToken, PlcModelProfile? model = null)
     {
-        (CModeArea area, int begin) = CModeAddressing.Map(address);
+        (CModeArea area, int begin) = CModeAddressing.Map(address, model);
         var command = new AreaWriteCommand(area, begin, words.Span, address.Bank);
         await CModeAsync(command, static (data, h) => ExpectEmpty(data, h), command.Header, cancellationToken).ConfigureAwait(false);
     }
@@ -221,18 +246,20 @@ public partial class HostLinkUnit
     private async ValueTask<bool[]> ReadCompletionFlagsAsync(PlcAddress address, int count, CancellationToken cancellationToken)
     {
         address.EnsureRange(count, Options.CommandSet, forWrite: false);
+        PlcModelProfile? model = await GetModelProfileAsync(cancellationToken).ConfigureAwait(false);
+        EnsureModel(model, address, count, Options.CommandSet, forWrite: false);
         if (Options.CommandSet == HostLinkCommandSet.Fins)
         {
             return await FinsReadCompletionFlagsAsync(address, count, cancellationToken).ConfigureAwait(false);
         }
 
-        return await CModeReadCompletionFlagsAsync(address, count, cancellationToken).ConfigureAwait(false);
+        return await CModeReadCompletionFlagsAsync(address, count, cancellationToken, model).ConfigureAwait(false);
     }
 
-    private async ValueTask<bool[]> CModeReadCompletionFlagsAsync(PlcAddress address, int count, CancellationToken cancellationToken)
+    private async ValueTask<bool[]> CModeReadCompletionFlagsAsync(PlcAddress address, int count, CancellationToken cancellationToken, PlcModelProfile? model = null)
     {
         address.EnsureRange(count, HostLinkCommandSet.CMode, forWrite: false);
-        (_, int begin) = CModeAddressing.Map(address);
+        (_, int begin) = CModeAddressing.Map(address, model);
         var command = new AreaReadCommand(CModeArea.TimerCounterStatus, begin, count);
         return await CModeAsync(
             command,
@@ -256,6 +283,6 @@ public partial class HostLinkUnit
         return true;
     }
 
-    private sealed class UnitView(HostLinkConnection connection, HostLinkClientOptions options, int unitNumber)
-        : HostLinkUnit(connection, options, unitNumber);
+    private sealed class UnitView(HostLinkConnection connection, HostLinkClientOptions options, int unitNumber, UnitModels models, CompoundReadRegistry compoundReads)
+        : HostLinkUnit(connection, options, unitNumber, models, compoundReads);
 }

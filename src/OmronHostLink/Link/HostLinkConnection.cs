@@ -11,19 +11,20 @@ namespace OmronHostLink.Link;
 /// place. Every transaction (a request, an INITIALIZE, a presence probe) runs in the same scope: it waits for the gate,
 /// opens the transport if the link is <see cref="LinkState.Closed"/>, runs its exchange over the
 /// <see cref="FrameChannel"/>, and on failure takes the state the failure leaves (<see cref="TransactionAttempt.After"/>),
-/// closing a lost stream at once. Retries and telemetry live here.
+/// closing a lost stream at once. Retries live here.
 /// </summary>
 /// <remarks>
-/// The parts: <see cref="FrameChannel"/> (the stream's bytes, frames, per-frame deadlines), <see cref="TransactionAttempt"/>
-/// (one exchange, frame by frame), <see cref="Resynchroniser"/> (<c>@**</c> and the TS fence). Deadlines come from the
-/// <see cref="LineTiming"/> and run on the <see cref="TimeProvider"/> of the options; <see cref="CommandTelemetry"/>
-/// measures each command over all its attempts.
+/// The parts: <see cref="FrameChannel"/> (bytes, frames, per-frame deadlines), <see cref="TransactionAttempt"/> (one
+/// exchange), <see cref="Resynchroniser"/> (<c>@**</c> and the TS fence), <see cref="SendSpacing"/> (the gap between
+/// exchanges), <see cref="CommandTelemetry"/> (per command, not per attempt). Deadlines come from the
+/// <see cref="LineTiming"/> and run on the options' <see cref="TimeProvider"/>.
 /// </remarks>
 internal sealed class HostLinkConnection : IAsyncDisposable
 {
     private readonly IHostLinkTransport _transport;
     private readonly ILogger _logger;
     private readonly TimeProvider _time;
+    private readonly SendSpacing _spacing;
     private readonly SemaphoreSlim _gate = new(1, 1);
     private readonly TransactionAttempt _attempt;
     private readonly Resynchroniser _resynchroniser;
@@ -37,6 +38,7 @@ internal sealed class HostLinkConnection : IAsyncDisposable
     {
         _transport = transport;
         _time = options.TimeProvider;
+        _spacing = new SendSpacing(options);
         Timing = transport.LineTiming ?? options.LineTiming;
         _logger = options.LoggerFactory?.CreateLogger("OmronHostLink") ?? NullLogger.Instance;
         _attempt = new TransactionAttempt(Timing, options.TurnaroundAllowance, options.LocalEcho);
@@ -47,6 +49,9 @@ internal sealed class HostLinkConnection : IAsyncDisposable
 
     /// <summary>Where the link stands between transactions.</summary>
     public LinkState State => _status.State;
+
+    /// <summary>How often the transport has been opened: a change tells what a PLC held for this link (QQ registrations) may be gone.</summary>
+    public long Openings { get; private set; }
 
     /// <summary>The timing every deadline is computed from.</summary>
     public LineTiming Timing { get; }
@@ -131,11 +136,6 @@ internal sealed class HostLinkConnection : IAsyncDisposable
 
     public async ValueTask DisposeAsync()
     {
-        if (State == LinkState.Disposed)
-        {
-            return;
-        }
-
         await _gate.WaitAsync().ConfigureAwait(false);
         try
         {
@@ -173,6 +173,7 @@ internal sealed class HostLinkConnection : IAsyncDisposable
         {
             _attempt.Reset();
             FrameChannel channel = await OpenedAsync(cancellationToken).ConfigureAwait(false);
+            await _spacing.WaitAsync(unit, cancellationToken).ConfigureAwait(false);
             channel.FrameObserver = FrameObserver;
             channel.Begin(cancellationToken);
             try
@@ -199,6 +200,7 @@ internal sealed class HostLinkConnection : IAsyncDisposable
             finally
             {
                 channel.End();
+                _spacing.ExchangeEnded();
             }
         }
         finally
@@ -305,6 +307,7 @@ internal sealed class HostLinkConnection : IAsyncDisposable
         var channel = new FrameChannel(stream, _transport.Description, _logger, _time);
         _channel = channel;
         _status = new LinkStatus(LinkState.Ready);
+        Openings++;
         channel.Start();
         _instruments.Connection(LinkName, +1);
         HostLinkLog.Opened(_logger, _transport.Description);

@@ -327,6 +327,20 @@ public sealed class PlcModelProfile
         return null;
     }
 
+    /// <summary>Whether the word is memory the model lacks but answers a read of with 0000 (<see cref="ZeroReadRanges"/>).</summary>
+    internal bool ReadsZero(PlcArea area, int word, int bank)
+    {
+        foreach (var range in ZeroReadRanges)
+        {
+            if (range.Area == area && range.Contains(word, bank))
+            {
+                return true;
+            }
+        }
+
+        return false;
+    }
+
     internal static string KnownNames() => string.Join(", ", PlcModelTable.Profiles.Select(p => p.Name));
 
     private string AreaList()

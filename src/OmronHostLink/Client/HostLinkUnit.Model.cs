@@ -1,0 +1,58 @@
+namespace OmronHostLink;
+
+/// <summary>The PLC model a unit is checked against (<see cref="HostLinkClientOptions.Model"/>).</summary>
+public partial class HostLinkUnit
+{
+    /// <summary>
+    /// The model profile this unit's addresses and commands are checked against: the configured
+    /// <see cref="HostLinkClientOptions.Model"/>; with <c>"auto"</c>, the profile of the code the unit answers to MM
+    /// (asked once, on first use; where one code covers several models, only what all of them have); null when no
+    /// model is configured or the PLC named none the library knows.
+    /// </summary>
+    /// <param name="cancellationToken">Cancels the MM exchange.</param>
+    /// <returns>The profile, or null.</returns>
+    /// <exception cref="HostLinkTimeoutException">The unit did not answer MM (asked again on the next use).</exception>
+    public ValueTask<PlcModelProfile?> GetModelProfileAsync(CancellationToken cancellationToken = default)
+        => Models.TryGet(UnitNumber, out PlcModelProfile? known)
+            ? new ValueTask<PlcModelProfile?>(known)
+            : new ValueTask<PlcModelProfile?>(Models.GetAsync(UnitNumber, ReadModelAsync, cancellationToken));
+
+    /// <summary>Refuses, before anything is sent, what <paramref name="model"/> does not have or accept.</summary>
+    private protected static void EnsureModel(PlcModelProfile? model, PlcAddress address, int count, HostLinkCommandSet commandSet, bool forWrite)
+    {
+        if (model is null)
+        {
+            return;
+        }
+
+        if (commandSet == HostLinkCommandSet.Fins)
+        {
+            model.EnsureFins();
+        }
+
+        model.EnsureRange(address.AsWord(), count, forWrite);
+    }
+
+    private async ValueTask<ushort[]> ReadWordsOfDetectedModelAsync(PlcAddress address, int count, CancellationToken cancellationToken)
+    {
+        PlcModelProfile? model = await GetModelProfileAsync(cancellationToken).ConfigureAwait(false);
+        EnsureModel(model, address, count, Options.CommandSet, forWrite: false);
+        return Options.CommandSet == HostLinkCommandSet.Fins
+            ? await FinsReadWordsAsync(address, count, cancellationToken).ConfigureAwait(false)
+            : await CModeReadWordsAsync(address, count, cancellationToken, model).ConfigureAwait(false);
+    }
+
+    private async ValueTask WriteWordsOfDetectedModelAsync(PlcAddress address, ReadOnlyMemory<ushort> words, CancellationToken cancellationToken)
+    {
+        PlcModelProfile? model = await GetModelProfileAsync(cancellationToken).ConfigureAwait(false);
+        EnsureModel(model, address, words.Length, Options.CommandSet, forWrite: true);
+        if (Options.CommandSet == HostLinkCommandSet.Fins)
+        {
+            await FinsWriteWordsAsync(address, words, cancellationToken).ConfigureAwait(false);
+        }
+        else
+        {
+            await CModeWriteWordsAsync(address, words, cancellationToken, model).ConfigureAwait(false);
+        }
+    }
+}

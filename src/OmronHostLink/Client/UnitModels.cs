@@ -1,0 +1,109 @@
+using Microsoft.Extensions.Logging;
+using Microsoft.Extensions.Logging.Abstractions;
+
+namespace OmronHostLink;
+
+/// <summary>
+/// The PLC model each unit of one client is checked against: the configured one for every unit, or — with
+/// <c>Model = "auto"</c> — the one each unit names when asked MM, once per unit on first use. Shared by the client and
+/// all its unit views.
+/// </summary>
+internal sealed class UnitModels
+{
+    /// <summary>The <see cref="HostLinkClientOptions.Model"/> value that asks each unit with MM.</summary>
+    public const string Auto = "auto";
+
+    private readonly PlcModelProfile? _configured;
+    private readonly bool _detect;
+    private readonly Task<PlcModelProfile?>?[] _detected = new Task<PlcModelProfile?>?[32];
+    private readonly object _gate = new();
+    private readonly ILogger _logger;
+
+    public UnitModels(string? model, ILoggerFactory? loggerFactory = null)
+    {
+        _logger = loggerFactory?.CreateLogger("OmronHostLink") ?? NullLogger.Instance;
+        if (string.Equals(model, Auto, StringComparison.OrdinalIgnoreCase))
+        {
+            _detect = true;
+        }
+        else if (!string.IsNullOrWhiteSpace(model))
+        {
+            _configured = PlcModelProfile.Parse(model!);
+        }
+    }
+
+    /// <summary>No model is configured and none is detected: only the CS/CJ sizes are checked.</summary>
+    public bool Off => _configured is null && !_detect;
+
+    /// <summary>The profile of <paramref name="unit"/> when it is known without asking the PLC (again).</summary>
+    public bool TryGet(int unit, out PlcModelProfile? profile)
+    {
+        if (!_detect)
+        {
+            profile = _configured;
+            return true;
+        }
+
+        var task = Volatile.Read(ref _detected[unit]);
+        if (task is { Status: TaskStatus.RanToCompletion })
+        {
+            profile = task.Result;
+            return true;
+        }
+
+        profile = null;
+        return false;
+    }
+
+    /// <summary>
+    /// The profile of <paramref name="unit"/>, asking it MM the first time. An MM that fails with a timeout or a broken
+    /// link is not remembered (the next use asks again); a PLC that refuses MM or names a code no profile has is
+    /// remembered as having no profile.
+    /// </summary>
+    public Task<PlcModelProfile?> GetAsync(int unit, Func<CancellationToken, ValueTask<PlcModel>> readModel, CancellationToken cancellationToken)
+    {
+        if (TryGet(unit, out var known))
+        {
+            return Task.FromResult(known);
+        }
+
+        lock (_gate)
+        {
+            var task = _detected[unit];
+            if (task is null || task.IsFaulted || task.IsCanceled)
+            {
+                task = DetectAsync(unit, readModel, cancellationToken);
+                _detected[unit] = task;
+            }
+
+            return task;
+        }
+    }
+
+    private async Task<PlcModelProfile?> DetectAsync(int unit, Func<CancellationToken, ValueTask<PlcModel>> readModel, CancellationToken cancellationToken)
+    {
+        PlcModel model;
+        try
+        {
+            model = await readModel(cancellationToken).ConfigureAwait(false);
+        }
+        catch (HostLinkEndCodeException e)
+        {
+            // IC (no MM on this model) or another refusal: checked as without a model.
+            ModelLog.Unknown(_logger, unit, $"MM was refused ({e.Message})");
+            return null;
+        }
+
+        var profile = PlcModelProfile.FromModelCode(model.Code);
+        if (profile is null)
+        {
+            ModelLog.Unknown(_logger, unit, $"MM answered {model}, which no model profile has");
+        }
+        else
+        {
+            ModelLog.Detected(_logger, unit, model.Code.ToString("X2", System.Globalization.CultureInfo.InvariantCulture), profile.DisplayName);
+        }
+
+        return profile;
+    }
+}
