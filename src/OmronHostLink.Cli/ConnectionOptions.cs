@@ -21,6 +21,7 @@ internal sealed class ConnectionOptions
         Timeout = Durations.Option("--timeout", "Time the PLC may take to start answering a frame (the wire time is added); default " + Durations.Format(TimeSpan.FromMilliseconds(defaultTimeoutMs ?? 300)) + ".", null, TimeSpan.FromMilliseconds(1), TimeSpan.FromMinutes(1));
         Retries = OptionValues.OptionalInteger("--retries", "Times a read is repeated after a timeout or damaged frame, 0-10 (writes are never repeated).", 0, 10, "n");
         Fins = new Option<bool>("--fins") { Description = "Use FINS over Host Link (FA) where C-mode would otherwise be used: reads, writes, bit writes, status and mode." };
+        Model = new Option<string?>("--model") { Description = "The PLC model addresses and commands are checked against before anything is sent (CPM1A, CP1E-E, C200HS, CS1, ...: see 'hostlink model --list'), or auto to ask the PLC (MM).", HelpName = "name" };
     }
 
     public bool IncludeUnit { get; }
@@ -49,6 +50,8 @@ internal sealed class ConnectionOptions
 
     public Option<bool> Fins { get; }
 
+    public Option<string?> Model { get; }
+
     /// <summary>How 32- and 64-bit values lie in two or four words: Omron's own layout, low word first.</summary>
     public WordOrder WordOrder => WordOrder.LowWordFirst;
 
@@ -68,6 +71,7 @@ internal sealed class ConnectionOptions
         command.Add(Timeout);
         command.Add(Retries);
         command.Add(Fins);
+        command.Add(Model);
     }
 
     /// <summary>The unit number asked for, checked.</summary>
@@ -113,7 +117,13 @@ internal sealed class ConnectionOptions
             WriteRetries = 0,
             WordOrder = WordOrder,
             CommandSet = parse.GetValue(Fins) ? HostLinkCommandSet.Fins : HostLinkCommandSet.CMode,
+            Model = parse.GetValue(Model),
         };
+
+        if (options.Model is { } model && !string.Equals(model, "auto", StringComparison.OrdinalIgnoreCase) && !PlcModelProfile.TryParse(model, out _))
+        {
+            throw new UsageException($"--model '{model}' is not a known PLC model; use one of {PlcModelProfile.KnownNames()}, or auto to ask the PLC (MM).");
+        }
 
         configure?.Invoke(options);
         HostLinkClient client;

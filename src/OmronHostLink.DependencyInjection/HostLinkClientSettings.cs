@@ -59,6 +59,13 @@ public sealed class HostLinkClientSettings
     /// </summary>
     public bool? AllowReadModifyWriteBits { get; set; }
 
+    /// <summary>
+    /// The PLC model addresses and commands are checked against before anything is sent (see
+    /// <see cref="HostLinkClientOptions.Model"/>): CPM1A, CP1E-E, C200HS, CS1, ..., or auto to ask the PLC (MM).
+    /// Default none: the CS/CJ sizes only.
+    /// </summary>
+    public string? Model { get; set; }
+
     /// <summary>The configuration path the settings were read from (empty for a configuration root); null when set in code only.</summary>
     internal string? ConfigurationPath { get; set; }
 

@@ -75,6 +75,7 @@ internal static class HostLinkClientSettingsMapper
         options.LocalEcho = s.LocalEcho ?? options.LocalEcho;
         options.FinsResponseWait = s.FinsResponseWait ?? options.FinsResponseWait;
         options.AllowReadModifyWriteBits = s.AllowReadModifyWriteBits ?? options.AllowReadModifyWriteBits;
+        options.Model = s.Model ?? options.Model;
 
         // Over TCP the transport cannot know the line's speed: the deadlines come from these settings. A local port
         // gives its own timing from the same values.

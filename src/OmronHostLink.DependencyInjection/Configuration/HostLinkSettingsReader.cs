@@ -47,6 +47,7 @@ internal static class HostLinkSettingsReader
         { "LocalEcho", (v, s) => s.LocalEcho = v.Boolean() ?? s.LocalEcho },
         { "FinsResponseWait", (v, s) => s.FinsResponseWait = v.Integer() ?? s.FinsResponseWait },
         { "AllowReadModifyWriteBits", (v, s) => s.AllowReadModifyWriteBits = v.Boolean() ?? s.AllowReadModifyWriteBits },
+        { "Model", (v, s) => s.Model = v.Text() ?? s.Model },
     };
 
     // Names people reach for that live elsewhere here (including the worker sample's earlier ones).

@@ -198,6 +198,11 @@ internal sealed class HostLinkClientSettingsValidator : IValidateOptions<HostLin
         {
             problems.Add(new SettingsProblem("FinsResponseWait", $"{wait} is not 0-15 (units of 10 ms)"));
         }
+
+        if (s.Model is { } model && !string.Equals(model, "auto", StringComparison.OrdinalIgnoreCase) && !PlcModelProfile.TryParse(model, out _))
+        {
+            problems.Add(new SettingsProblem("Model", $"'{model}' is not a known PLC model; use one of {string.Join(", ", PlcModelProfile.All.Select(p => p.Name))}, or auto to ask the PLC (MM)"));
+        }
     }
 
     private static string Show(TimeSpan value) => value.ToString("c", CultureInfo.InvariantCulture);

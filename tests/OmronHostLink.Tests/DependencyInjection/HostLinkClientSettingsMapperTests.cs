@@ -31,9 +31,11 @@ public sealed class HostLinkClientSettingsMapperTests
             LocalEcho = true,
             FinsResponseWait = 3,
             AllowReadModifyWriteBits = true,
+            Model = "CPM1A",
         };
 
         HostLinkClientOptions options = HostLinkClientSettingsMapper.ToClientOptions(settings);
+        options.Model.Should().Be("CPM1A");
         options.UnitNumber.Should().Be(7);
         options.CommandSet.Should().Be(HostLinkCommandSet.Fins);
         options.TurnaroundAllowance.Should().Be(TimeSpan.FromMilliseconds(750));
