@@ -53,6 +53,19 @@ public sealed class HostLinkClientOptions
     /// <summary>The FINS response wait time, 0-15 in units of 10 ms, sent in every FA frame.</summary>
     public int FinsResponseWait { get; set; }
 
+    /// <summary>
+    /// The least time between the end of one exchange on the line and the next command, for PLCs and converters that
+    /// drop a command sent right after an answer. Every command on the link waits for it, whichever unit it is for.
+    /// Default zero (none); at most 10 s.
+    /// </summary>
+    public TimeSpan SendInterval { get; set; }
+
+    /// <summary>
+    /// Longer gaps than <see cref="SendInterval"/> before commands to particular units of a multidrop line (unit number
+    /// to gap), for one slow unit among quick ones. Empty by default.
+    /// </summary>
+    public IDictionary<int, TimeSpan> UnitSendIntervals { get; set; } = new Dictionary<int, TimeSpan>();
+
     /// <summary>Where the client logs (frames at Trace, transactions at Debug, retries as warnings).</summary>
     public ILoggerFactory? LoggerFactory { get; set; }
 
@@ -100,6 +113,29 @@ public sealed class HostLinkClientOptions
         Guard.InRange(ReadRetries, 0, 10, nameof(ReadRetries));
         Guard.InRange(WriteRetries, 0, 10, nameof(WriteRetries));
         Guard.InRange(FinsResponseWait, 0, 15, nameof(FinsResponseWait));
+        if (SendInterval < TimeSpan.Zero || SendInterval > MaxSendInterval)
+        {
+            throw new ArgumentOutOfRangeException(nameof(SendInterval), SendInterval, "SendInterval must be between 0 and 10 s.");
+        }
+
+        if (UnitSendIntervals is null)
+        {
+            throw new ArgumentException("UnitSendIntervals is required (empty for none).", nameof(UnitSendIntervals));
+        }
+
+        foreach (KeyValuePair<int, TimeSpan> unit in UnitSendIntervals)
+        {
+            if ((uint)unit.Key > 31)
+            {
+                throw new ArgumentOutOfRangeException(nameof(UnitSendIntervals), unit.Key, $"UnitSendIntervals names unit {unit.Key}; Host Link unit numbers are 0-31.");
+            }
+
+            if (unit.Value < TimeSpan.Zero || unit.Value > MaxSendInterval)
+            {
+                throw new ArgumentOutOfRangeException(nameof(UnitSendIntervals), unit.Value, $"UnitSendIntervals[{unit.Key}] must be between 0 and 10 s.");
+            }
+        }
+
         if (TimeProvider is null)
         {
             throw new ArgumentException("TimeProvider is required.", nameof(TimeProvider));
@@ -116,7 +152,18 @@ public sealed class HostLinkClientOptions
         }
     }
 
-    internal HostLinkClientOptions Clone() => (HostLinkClientOptions)MemberwiseClone();
+    private static readonly TimeSpan MaxSendInterval = TimeSpan.FromSeconds(10);
+
+    internal HostLinkClientOptions Clone()
+    {
+        var clone = (HostLinkClientOptions)MemberwiseClone();
+        if (UnitSendIntervals is not null)
+        {
+            clone.UnitSendIntervals = new Dictionary<int, TimeSpan>(UnitSendIntervals);
+        }
+
+        return clone;
+    }
 
     /// <summary>The part of these options the link itself uses.</summary>
     internal HostLinkConnectionOptions ToConnectionOptions() => new()
@@ -127,6 +174,8 @@ public sealed class HostLinkClientOptions
         LoggerFactory = LoggerFactory,
         MeterFactory = MeterFactory,
         LinkName = LinkName,
+        SendInterval = SendInterval,
+        UnitSendIntervals = UnitSendIntervals.Count == 0 ? null : new Dictionary<int, TimeSpan>(UnitSendIntervals),
         TimeProvider = TimeProvider,
     };
 }

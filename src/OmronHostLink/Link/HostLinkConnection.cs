@@ -25,6 +25,7 @@ internal sealed class HostLinkConnection : IAsyncDisposable
     private readonly IHostLinkTransport _transport;
     private readonly ILogger _logger;
     private readonly TimeProvider _time;
+    private readonly HostLinkConnectionOptions _options;
     private readonly SemaphoreSlim _gate = new(1, 1);
     private readonly TransactionAttempt _attempt;
     private readonly Resynchroniser _resynchroniser;
@@ -33,11 +34,13 @@ internal sealed class HostLinkConnection : IAsyncDisposable
     private FrameChannel? _channel;
     private LinkStatus _status = new(LinkState.Closed);
     private int _sid;
+    private long _lastExchangeEnded;
 
     public HostLinkConnection(IHostLinkTransport transport, HostLinkConnectionOptions options)
     {
         _transport = transport;
         _time = options.TimeProvider;
+        _options = options;
         Timing = transport.LineTiming ?? options.LineTiming;
         _logger = options.LoggerFactory?.CreateLogger("OmronHostLink") ?? NullLogger.Instance;
         _attempt = new TransactionAttempt(Timing, options.TurnaroundAllowance, options.LocalEcho);
@@ -179,6 +182,7 @@ internal sealed class HostLinkConnection : IAsyncDisposable
         {
             _attempt.Reset();
             FrameChannel channel = await OpenedAsync(cancellationToken).ConfigureAwait(false);
+            await KeepSendIntervalAsync(unit, cancellationToken).ConfigureAwait(false);
             channel.FrameObserver = FrameObserver;
             channel.Begin(cancellationToken);
             try
@@ -205,6 +209,7 @@ internal sealed class HostLinkConnection : IAsyncDisposable
             finally
             {
                 channel.End();
+                _lastExchangeEnded = _time.GetTimestamp();
             }
         }
         finally
@@ -212,6 +217,31 @@ internal sealed class HostLinkConnection : IAsyncDisposable
             frames?.Add(_attempt);
             _gate.Release();
         }
+    }
+
+    /// <summary>
+    /// The one place the next command waits for the send interval: until the gap since the last exchange ended (whatever
+    /// it was, answered or not) is the longer of the link's and the unit's.
+    /// </summary>
+    private Task KeepSendIntervalAsync(int unit, CancellationToken cancellationToken)
+    {
+        TimeSpan gap = _options.SendIntervalFor(unit);
+        if (gap <= TimeSpan.Zero || _lastExchangeEnded == 0)
+        {
+            return Task.CompletedTask;
+        }
+
+        TimeSpan remaining = gap - _time.GetElapsedTime(_lastExchangeEnded);
+        if (remaining <= TimeSpan.Zero)
+        {
+            return Task.CompletedTask;
+        }
+
+#if NET
+        return Task.Delay(remaining, _time, cancellationToken);
+#else
+        return _time.Delay(remaining, cancellationToken);
+#endif
     }
 
     /// <summary>Carries a request: resynchronises first if the last exchange failed.</summary>

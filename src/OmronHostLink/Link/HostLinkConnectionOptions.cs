@@ -25,6 +25,16 @@ internal sealed class HostLinkConnectionOptions
     /// <summary>The link's name in metrics and traces; null for the port name or the transport's description.</summary>
     public string? LinkName { get; init; }
 
+    /// <summary>The least time between the end of one exchange and the next command on the line; zero for none.</summary>
+    public TimeSpan SendInterval { get; init; }
+
+    /// <summary>Longer gaps before commands to particular units (unit number to gap); the longer of this and <see cref="SendInterval"/> applies.</summary>
+    public IReadOnlyDictionary<int, TimeSpan>? UnitSendIntervals { get; init; }
+
     /// <summary>The clock deadlines run on.</summary>
     public TimeProvider TimeProvider { get; init; } = TimeProvider.System;
+
+    /// <summary>The gap to keep before a command to <paramref name="unit"/>.</summary>
+    public TimeSpan SendIntervalFor(int unit)
+        => UnitSendIntervals is { } units && units.TryGetValue(unit, out TimeSpan gap) && gap > SendInterval ? gap : SendInterval;
 }
