@@ -45,6 +45,14 @@ public sealed class HostLinkClientOptions
     public WordOrder WordOrder { get; set; } = WordOrder.LowWordFirst;
 
     /// <summary>
+    /// Whether C-mode planned reads (<c>ReadTagsAsync</c>, <c>WatchAsync</c>) may use QQ, the compound read (QQMR
+    /// registration, then one QQIR a cycle), where it costs fewer characters than area reads. Default true. Turn it off
+    /// for PLCs without QQ: the CP2E (W614 lists no QQ), and others whose model profile says so
+    /// (<c>PlcModelProfile.SupportsCompoundRead</c>); such a PLC answers QQ with IC.
+    /// </summary>
+    public bool UseCompoundRead { get; set; } = true;
+
+    /// <summary>
     /// The line echoes what we send before the PLC answers (2-wire RS-485 adapters without echo suppression): expect and
     /// check our own frames before each answer.
     /// </summary>

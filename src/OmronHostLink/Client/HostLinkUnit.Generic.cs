@@ -38,7 +38,7 @@ public partial class HostLinkUnit
 
         HostLinkClientOptions options = Options.Clone();
         options.WordOrder = order;
-        return new UnitView(Connection, options, UnitNumber, Models);
+        return new UnitView(Connection, options, UnitNumber, Models, CompoundReads);
     }
 
     /// <summary>Reads one value of type <typeparamref name="T"/> at <paramref name="address"/>.</summary>

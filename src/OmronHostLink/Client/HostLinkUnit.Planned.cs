@@ -56,7 +56,7 @@ public partial class HostLinkUnit
         for (int r = 0; r < results.Length; r++)
         {
             PlannedRead read = plan.Reads[r];
-            HostLinkUnit unit = read.Unit == UnitNumber ? this : new UnitView(Connection, Options, read.Unit, Models);
+            HostLinkUnit unit = read.Unit == UnitNumber ? this : new UnitView(Connection, Options, read.Unit, Models, CompoundReads);
             results[r] = await unit.ExecuteAsync(read, cancellationToken).ConfigureAwait(false);
         }
 

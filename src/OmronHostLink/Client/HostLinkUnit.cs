@@ -18,13 +18,21 @@ public partial class HostLinkUnit
     private protected readonly HostLinkClientOptions Options;
     private protected readonly UnitModels Models;
 
+    private protected readonly CompoundReadRegistry CompoundReads;
+
     private protected HostLinkUnit(HostLinkConnection connection, HostLinkClientOptions options, int unitNumber, UnitModels models)
+        : this(connection, options, unitNumber, models, new CompoundReadRegistry())
+    {
+    }
+
+    private protected HostLinkUnit(HostLinkConnection connection, HostLinkClientOptions options, int unitNumber, UnitModels models, CompoundReadRegistry compoundReads)
     {
         Guard.Unit(unitNumber);
         Connection = connection;
         Options = options;
         UnitNumber = unitNumber;
         Models = models;
+        CompoundReads = compoundReads;
     }
 
     /// <summary>The unit number (0-31) this view addresses.</summary>
@@ -38,7 +46,7 @@ public partial class HostLinkUnit
 
     /// <summary>A view of another unit on the same line (multidrop), sharing this link.</summary>
     /// <exception cref="ArgumentOutOfRangeException">The unit number is not 0-31.</exception>
-    public HostLinkUnit Unit(int unitNumber) => new UnitView(Connection, Options, unitNumber, Models);
+    public HostLinkUnit Unit(int unitNumber) => new UnitView(Connection, Options, unitNumber, Models, CompoundReads);
 
     /// <summary>A view of a unit on the same line that uses <paramref name="commandSet"/> where both command sets can do a job.</summary>
     /// <exception cref="ArgumentOutOfRangeException">The unit number is not 0-31.</exception>
@@ -46,7 +54,7 @@ public partial class HostLinkUnit
     {
         HostLinkClientOptions options = Options.Clone();
         options.CommandSet = commandSet;
-        return new UnitView(Connection, options, unitNumber, Models);
+        return new UnitView(Connection, options, unitNumber, Models, CompoundReads);
     }
 
     // ---- Words ----
@@ -272,6 +280,6 @@ public partial class HostLinkUnit
         return true;
     }
 
-    private sealed class UnitView(HostLinkConnection connection, HostLinkClientOptions options, int unitNumber, UnitModels models)
-        : HostLinkUnit(connection, options, unitNumber, models);
+    private sealed class UnitView(HostLinkConnection connection, HostLinkClientOptions options, int unitNumber, UnitModels models, CompoundReadRegistry compoundReads)
+        : HostLinkUnit(connection, options, unitNumber, models, compoundReads);
 }

@@ -52,6 +52,9 @@ internal sealed class HostLinkConnection : IAsyncDisposable
     /// <summary>Where the link stands between transactions.</summary>
     public LinkState State => _status.State;
 
+    /// <summary>How often the transport has been opened: a change tells what a PLC held for this link (QQ registrations) may be gone.</summary>
+    public long Openings { get; private set; }
+
     /// <summary>The timing every deadline is computed from.</summary>
     public LineTiming Timing { get; }
 
@@ -336,6 +339,7 @@ internal sealed class HostLinkConnection : IAsyncDisposable
         var channel = new FrameChannel(stream, _transport.Description, _logger, _time);
         _channel = channel;
         _status = new LinkStatus(LinkState.Ready);
+        Openings++;
         channel.Start();
         _instruments.Connection(LinkName, +1);
         HostLinkLog.Opened(_logger, _transport.Description);

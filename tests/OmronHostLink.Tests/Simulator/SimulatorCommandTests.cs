@@ -274,7 +274,15 @@ public class SimulatorCommandTests
     {
         await using RawHost host = RawHost.Start();
         (await host.TransactAsync(Cmd("@00ZZ"))).Should().Be(SimVectors.Get("c_ic_resp").Frames[0]);
-        (await host.TransactAsync(Cmd("@00QQMR"))).Should().Be(SimVectors.Get("c_ic_resp").Frames[0]);
+        (await host.TransactAsync(Cmd("@00RP"))).Should().Be(SimVectors.Get("c_ic_resp").Frames[0]);
+    }
+
+    [Fact]
+    public async Task QQ_is_executed_a_registration_without_items_is_a_format_error()
+    {
+        // W342 4-3-35: QQMR end code 14 for a missing item; the answer echoes the sub-header before the end code.
+        await using RawHost host = RawHost.Start();
+        (await host.TransactAsync(Cmd("@00QQMR"))).Should().Be("@00QQMR145A*\r");
     }
 
     [Fact]

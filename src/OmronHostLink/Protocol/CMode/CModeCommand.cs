@@ -46,7 +46,7 @@ internal abstract class CModeCommand
         MayUseSeveralFrames,
         ExpectsResponse,
         MaxAnswerTextLength,
-        AnswerCanEqualCommand(Header, TextLength));
+        AnswerCanEqualCommand(Header, TextLength - Row.SubHeaderLength));
 
     /// <summary>
     /// Whether a correct answer can be the very characters of a command: TS echoes it, and a two-character text (SC 00,

@@ -115,7 +115,8 @@ internal static class CModeCommands
         rows.Add(NamedOnly("RP", "PROGRAM READ"));
         rows.Add(NamedOnly("WP", "PROGRAM WRITE"));
         rows.Add(NamedOnly("MI", "I/O TABLE GENERATE"));
-        rows.Add(NamedOnly("QQ", "COMPOUND COMMAND (QQMR/QQIR)"));
+        rows.Add(CompoundCommands.RegisterRow);
+        rows.Add(CompoundCommands.ReadRow);
         rows.Add(Abort);
         rows.Add(NamedOnly(CModeHeaders.Initialize, "INITIALIZE") );
         rows.Add(new CModeCommandRow(CModeHeaders.UndefinedCommand, "UNDEFINED COMMAND (response)", CommandEffect.ReadOnly, 0) { IsCommand = false, AnswerHasEndCode = false });

@@ -1,0 +1,130 @@
+using System.Collections.Concurrent;
+using System.Text;
+using FluentAssertions;
+using OmronHostLink.Protocol.CMode;
+using OmronHostLink.Simulator;
+using OmronHostLink.Simulator.Hosting;
+using OmronHostLink.Transports;
+using Xunit;
+
+namespace OmronHostLink.Tests.Client;
+
+/// <summary>QQ through the client: registered once per unit and tag set, read with QQIR, registered again after end code 19.</summary>
+public sealed class CompoundReadTests : IAsyncDisposable
+{
+    private readonly CancellationTokenSource _stop = new();
+    private readonly VirtualPlc _plc = new(new VirtualPlcOptions { Units = [0, 1] });
+    private readonly Task _session;
+    private readonly HostLinkClient _client;
+    private readonly ConcurrentQueue<string> _sent = new();
+
+    public CompoundReadTests()
+    {
+        (Stream host, Stream plcEnd) = InMemoryLink.CreatePair();
+        _session = _plc.RunAsync(plcEnd, _stop.Token);
+        _client = HostLinkClient.ForStream(host, new HostLinkClientOptions { LineTiming = new LineTiming(115200, 11), TurnaroundAllowance = TimeSpan.FromMilliseconds(500) });
+        _client.FrameObserver = (sent, frame) =>
+        {
+            if (sent)
+            {
+                _sent.Enqueue(Encoding.ASCII.GetString(frame.Span));
+            }
+        };
+        _plc.WriteWord(PlcArea.Dm, 100, 0x1111);
+        _plc.WriteWord(PlcArea.Dm, 5000, 0x2222);
+        _plc.WriteWord(PlcArea.Holding, 7, 0x0080);
+        _plc.WriteWord(PlcArea.Timer, 3, 0x0042);
+    }
+
+    private int Sent(string start) => _sent.Count(f => f.StartsWith(start, StringComparison.Ordinal));
+
+    [Fact]
+    public async Task Registers_once_then_reads_with_QQIR_alone()
+    {
+        string[] tags = ["D100", "D5000", "H7.07", "T3"];
+        (await _client.ReadCompoundAsync(tags)).Should().Equal(0x1111, 0x2222, 1, 0x0042);
+        _plc.WriteWord(PlcArea.Dm, 5000, 0x3333);
+        (await _client.ReadCompoundAsync(tags)).Should().Equal(0x1111, 0x3333, 1, 0x0042);
+
+        Sent("@00QQMR").Should().Be(1);
+        Sent("@00QQIR").Should().Be(2);
+    }
+
+    [Fact]
+    public async Task A_PLC_that_lost_the_registration_is_registered_again_once()
+    {
+        string[] tags = ["D100", "D5000"];
+        await _client.ReadCompoundAsync(tags);
+        _plc.Restart();
+
+        (await _client.ReadCompoundAsync(tags)).Should().Equal(0x1111, 0x2222);
+
+        Sent("@00QQMR").Should().Be(2);
+        Sent("@00QQIR").Should().Be(3); // read, 19, read again
+    }
+
+    [Fact]
+    public async Task Another_tag_set_takes_the_units_turn_and_each_unit_keeps_its_own()
+    {
+        string[] a = ["D100"];
+        string[] b = ["D5000"];
+        (await _client.ReadCompoundAsync(a)).Should().Equal(0x1111);
+        (await _client.ReadCompoundAsync(b)).Should().Equal(0x2222);
+        (await _client.ReadCompoundAsync(a)).Should().Equal(0x1111);
+        Sent("@00QQMR").Should().Be(3);
+
+        HostLinkUnit other = _client.Unit(1);
+        (await other.ReadCompoundAsync(b)).Should().Equal(0x2222);
+        (await _client.ReadCompoundAsync(a)).Should().Equal(0x1111);
+        (await other.ReadCompoundAsync(b)).Should().Equal(0x2222);
+        Sent("@00QQMR").Should().Be(3);
+        Sent("@01QQMR").Should().Be(1);
+    }
+
+    [Fact]
+    public async Task Concurrent_tag_sets_on_one_unit_never_read_through_each_others_registration()
+    {
+        string[] a = ["D100", "D5000"];
+        string[] b = ["D5000", "D100"];
+        var reads = new List<Task<ushort[]>>();
+        for (int i = 0; i < 20; i++)
+        {
+            reads.Add(_client.ReadCompoundAsync(i % 2 == 0 ? a : b).AsTask());
+        }
+
+        ushort[][] results = await Task.WhenAll(reads);
+        for (int i = 0; i < results.Length; i++)
+        {
+            results[i].Should().Equal(i % 2 == 0 ? new ushort[] { 0x1111, 0x2222 } : new ushort[] { 0x2222, 0x1111 });
+        }
+    }
+
+    [Fact]
+    public async Task Bad_input_is_refused_before_anything_is_sent()
+    {
+        await FluentActions.Awaiting(() => _client.ReadCompoundAsync(Array.Empty<string>()).AsTask()).Should().ThrowAsync<ArgumentException>();
+        await FluentActions.Awaiting(() => _client.ReadCompoundAsync(Enumerable.Range(0, 129).Select(i => $"D{i}").ToArray()).AsTask()).Should().ThrowAsync<ArgumentException>();
+        await FluentActions.Awaiting(() => _client.ReadCompoundAsync(["W3"]).AsTask()).Should().ThrowAsync<ArgumentException>();
+        _sent.Should().BeEmpty();
+    }
+
+    [Fact]
+    public void A_reopened_link_holds_no_registration()
+    {
+        var registry = new CompoundReadRegistry();
+        CompoundItem[] items = [CompoundItem.ForWord(CompoundArea.Dm, 1)];
+        registry.Registered(0, items, openings: 1);
+        registry.Holds(0, items, openings: 1).Should().BeTrue();
+        registry.Holds(0, items, openings: 2).Should().BeFalse();
+        registry.Holds(1, items, openings: 1).Should().BeFalse();
+        registry.Holds(0, [CompoundItem.ForWord(CompoundArea.Dm, 2)], openings: 1).Should().BeFalse();
+    }
+
+    public async ValueTask DisposeAsync()
+    {
+        await _client.DisposeAsync();
+        await _stop.CancelAsync();
+        await _session;
+        _stop.Dispose();
+    }
+}
