@@ -1,44 +1,68 @@
 using System.CommandLine;
+using System.CommandLine.Parsing;
 using OmronHostLink.Transports;
 
 namespace OmronHostLink.Cli;
 
-/// <summary>The options every command that talks to a PLC shares, and the client they describe.</summary>
+/// <summary>
+/// The options every command that talks to a PLC shares. They build the library's one client settings type
+/// (<see cref="HostLinkClientSettings"/>), whose validation is the only check of their ranges: a problem is a parse
+/// error naming the option, so nothing is sent.
+/// </summary>
 internal sealed class ConnectionOptions
 {
-    public ConnectionOptions(bool includeUnit = true, int? defaultTimeoutMs = null, int? defaultRetries = null)
+    /// <summary>The option that sets each settings key, for the settings' problems in the console's terms.</summary>
+    private static readonly Dictionary<string, string> OptionOfKey = new(StringComparer.OrdinalIgnoreCase)
+    {
+        ["Serial:PortName"] = "--port",
+        ["Serial:BaudRate"] = "--baud",
+        ["Serial:DataBits"] = "--data-bits",
+        ["Serial:Parity"] = "--parity",
+        ["Serial:StopBits"] = "--stop-bits",
+        ["Tcp:Host"] = "--tcp",
+        ["Tcp:Port"] = "--tcp",
+        ["UnitNumber"] = "--unit",
+        ["TurnaroundAllowance"] = "--timeout",
+        ["ReadRetries"] = "--retries",
+        ["Model"] = "--model",
+    };
+
+    public ConnectionOptions(bool includeUnit = true, TimeSpan? defaultTimeout = null, int? defaultRetries = null)
     {
         IncludeUnit = includeUnit;
-        DefaultTimeoutMs = defaultTimeoutMs;
+        DefaultTimeout = defaultTimeout;
         DefaultRetries = defaultRetries;
+        var line = new SerialLineSettings();
+        TimeSpan timeout = defaultTimeout ?? new HostLinkClientOptions().TurnaroundAllowance;
         Port = new Option<string?>("--port") { Description = "Serial port: COM3, /dev/ttyUSB0, or any device path (a pty).", HelpName = "name" };
-        Baud = OptionValues.BaudRate("--baud", "Baud rate.", 9600);
-        DataBits = OptionValues.IntegerChoice("--data-bits", "Data bits: 7 or 8.", 7, 7, 8);
-        Parity = OptionValues.Choice("--parity", "Parity.", "even", "none", "even", "odd");
-        StopBits = OptionValues.IntegerChoice("--stop-bits", "Stop bits: 1 or 2.", 2, 1, 2);
+        Baud = OptionValues.OptionalInteger("--baud", $"Baud rate (default {line.BaudRate}).", int.MinValue, int.MaxValue, "n");
+        DataBits = OptionValues.OptionalInteger("--data-bits", $"Data bits: 7 or 8 (default {line.DataBits}).", int.MinValue, int.MaxValue, "7|8");
+        string[] parities = Enum.GetNames(typeof(SerialParity)).Select(n => n.ToLowerInvariant()).ToArray();
+        Parity = OptionValues.OptionalChoice("--parity", $"Parity (default {line.Parity.ToString().ToLowerInvariant()}).", string.Join('|', parities), parities);
+        StopBits = OptionValues.OptionalInteger("--stop-bits", $"Stop bits: 1 or 2 (default {(int)line.StopBits}).", int.MinValue, int.MaxValue, "1|2");
         Tcp = new Option<string?>("--tcp") { Description = "A serial device server or the simulator, as host:port.", HelpName = "host:port" };
-        Unit = OptionValues.Integer("--unit", "The PLC's unit number, 0-31.", 0, 0, 31, "0-31");
-        Timeout = Durations.Option("--timeout", "Time the PLC may take to start answering a frame (the wire time is added); default " + Durations.Format(TimeSpan.FromMilliseconds(defaultTimeoutMs ?? 300)) + ".", null, TimeSpan.FromMilliseconds(1), TimeSpan.FromMinutes(1));
-        Retries = OptionValues.OptionalInteger("--retries", "Times a read is repeated after a timeout or damaged frame, 0-10 (writes are never repeated).", 0, 10, "n");
+        Unit = OptionValues.Integer("--unit", "The PLC's unit number, 0-31.", 0, int.MinValue, int.MaxValue, "n");
+        Timeout = Durations.Option("--timeout", "Time the PLC may take to start answering a frame (the wire time is added); default " + Durations.Format(timeout) + ".", null, TimeSpan.MinValue, TimeSpan.MaxValue);
+        Retries = OptionValues.OptionalInteger("--retries", "Times a read is repeated after a timeout or damaged frame, 0-10 (writes are never repeated).", int.MinValue, int.MaxValue, "n");
         Fins = new Option<bool>("--fins") { Description = "Use FINS over Host Link (FA) where C-mode would otherwise be used: reads, writes, bit writes, status and mode." };
         Model = new Option<string?>("--model") { Description = "The PLC model addresses and commands are checked against before anything is sent (CPM1A, CP1E-E, C200HS, CS1, ...: see 'hostlink model --list'), or auto to ask the PLC (MM).", HelpName = "name" };
     }
 
     public bool IncludeUnit { get; }
 
-    public int? DefaultTimeoutMs { get; }
+    public TimeSpan? DefaultTimeout { get; }
 
     public int? DefaultRetries { get; }
 
     public Option<string?> Port { get; }
 
-    public Option<int> Baud { get; }
+    public Option<int?> Baud { get; }
 
-    public Option<int> DataBits { get; }
+    public Option<int?> DataBits { get; }
 
-    public Option<string> Parity { get; }
+    public Option<string?> Parity { get; }
 
-    public Option<int> StopBits { get; }
+    public Option<int?> StopBits { get; }
 
     public Option<string?> Tcp { get; }
 
@@ -72,18 +96,45 @@ internal sealed class ConnectionOptions
         command.Add(Retries);
         command.Add(Fins);
         command.Add(Model);
+        command.Validators.Add(Validate);
     }
 
-    /// <summary>The unit number asked for, checked.</summary>
-    public int GetUnit(ParseResult parse)
+    /// <summary>The unit number asked for (checked with the other settings when the command line is parsed).</summary>
+    public int GetUnit(ParseResult parse) => parse.GetValue(Unit);
+
+    /// <summary>
+    /// The client settings the options describe. Which link (<c>--port</c> or <c>--tcp</c>) is checked by
+    /// <see cref="CreateClient"/>, in the console's words; every other rule by <see cref="HostLinkClientSettings.Validate"/>.
+    /// </summary>
+    public HostLinkClientSettings ToSettings(SymbolResult options, int unitOverride = -1)
     {
-        int unit = parse.GetValue(Unit);
-        if (unit is < 0 or > 31)
+        var settings = new HostLinkClientSettings
         {
-            throw new UsageException($"--unit must be 0-31; {unit} is not.");
+            UnitNumber = unitOverride >= 0 ? unitOverride : IncludeUnit ? options.GetValue(Unit) : 0,
+            TurnaroundAllowance = options.GetValue(Timeout) ?? DefaultTimeout,
+            ReadRetries = options.GetValue(Retries) ?? DefaultRetries,
+            WriteRetries = 0,
+            WordOrder = WordOrder,
+            CommandSet = options.GetValue(Fins) ? HostLinkCommandSet.Fins : HostLinkCommandSet.CMode,
+            Model = options.GetValue(Model),
+        };
+        settings.Serial.BaudRate = options.GetValue(Baud);
+        settings.Serial.DataBits = options.GetValue(DataBits);
+        settings.Serial.Parity = Enum.TryParse(options.GetValue(Parity), ignoreCase: true, out SerialParity parity) ? parity : null;
+        settings.Serial.StopBits = (SerialStopBits?)options.GetValue(StopBits);
+        string? tcp = options.GetValue(Tcp);
+        if (!string.IsNullOrWhiteSpace(tcp))
+        {
+            (settings.Tcp.Host, int port) = ParseEndpoint(tcp!, "--tcp");
+            settings.Tcp.Port = port;
+            settings.Tcp.ConnectTimeout = TimeSpan.FromSeconds(5);
+        }
+        else
+        {
+            settings.Serial.PortName = options.GetValue(Port);
         }
 
-        return unit;
+        return settings;
     }
 
     /// <summary>
@@ -101,79 +152,19 @@ internal sealed class ConnectionOptions
                 : "Give either --port or --tcp, not both.");
         }
 
-        int unit = unitOverride >= 0 ? unitOverride : IncludeUnit ? GetUnit(parse) : 0;
-        TimeSpan timeout = parse.GetValue(Timeout) ?? TimeSpan.FromMilliseconds(DefaultTimeoutMs ?? 300);
-        int retries = parse.GetValue(Retries) ?? DefaultRetries ?? 2;
-        if (retries is < 0 or > 10)
+        HostLinkClientSettings settings = ToSettings(parse.CommandResult, unitOverride);
+        if (Problems(settings).FirstOrDefault() is { } problem)
         {
-            throw new UsageException($"--retries must be 0-10; {retries} is not.");
+            throw new UsageException(problem);
         }
 
-        var options = new HostLinkClientOptions
-        {
-            UnitNumber = unit,
-            TurnaroundAllowance = timeout,
-            ReadRetries = retries,
-            WriteRetries = 0,
-            WordOrder = WordOrder,
-            CommandSet = parse.GetValue(Fins) ? HostLinkCommandSet.Fins : HostLinkCommandSet.CMode,
-            Model = parse.GetValue(Model),
-        };
-
-        if (options.Model is { } model && !string.Equals(model, "auto", StringComparison.OrdinalIgnoreCase) && !PlcModelProfile.TryParse(model, out _))
-        {
-            throw new UsageException($"--model '{model}' is not a known PLC model; use one of {PlcModelProfile.KnownNames()}, or auto to ask the PLC (MM).");
-        }
-
-        configure?.Invoke(options);
-        HostLinkClient client;
-        if (tcp is not null && !string.IsNullOrWhiteSpace(tcp))
-        {
-            (string host, int tcpPort) = ParseEndpoint(tcp, "--tcp");
-            SerialLineSettings line = SerialSettings(parse, "tcp");
-            options.LineTiming = new LineTiming(line.BaudRate, line.BitsPerCharacter);
-            client = HostLinkClient.ForTcp(host, tcpPort, options, TimeSpan.FromSeconds(5));
-        }
-        else
-        {
-            SerialLineSettings settings = SerialSettings(parse, port!);
-            client = HostLinkClient.ForSerialPort(settings, options);
-        }
-
+        HostLinkClient client = settings.CreateClient(configure);
         if (output.Verbose)
         {
             client.FrameObserver = output.FrameTrace();
         }
 
         return client;
-    }
-
-    /// <summary>The serial line settings from the options.</summary>
-    public SerialLineSettings SerialSettings(ParseResult parse, string portName)
-    {
-        var settings = new SerialLineSettings
-        {
-            PortName = portName,
-            BaudRate = parse.GetValue(Baud),
-            DataBits = parse.GetValue(DataBits),
-            Parity = parse.GetValue(Parity) switch
-            {
-                "none" => SerialParity.None,
-                "odd" => SerialParity.Odd,
-                _ => SerialParity.Even,
-            },
-            StopBits = parse.GetValue(StopBits) == 1 ? SerialStopBits.One : SerialStopBits.Two,
-        };
-        try
-        {
-            settings.Validate();
-        }
-        catch (ArgumentException e)
-        {
-            throw new UsageException(OptionValues.SerialMessage(e), e);
-        }
-
-        return settings;
     }
 
     /// <summary>Parses host:port.</summary>
@@ -186,6 +177,31 @@ internal sealed class ConnectionOptions
         catch (FormatException e)
         {
             throw new UsageException($"{option}: {e.Message}", e);
+        }
+    }
+
+    /// <summary>The settings' problems in the console's words: <c>--baud: 12345 is not a standard rate (…).</c></summary>
+    private static IEnumerable<string> Problems(HostLinkClientSettings settings)
+        => settings.Validate()
+            .Where(p => OptionOfKey.ContainsKey(p.Key))
+            .Select(p => $"{OptionOfKey[p.Key]}: {p.Message}.");
+
+    private void Validate(CommandResult result)
+    {
+        try
+        {
+            foreach (string problem in Problems(ToSettings(result)))
+            {
+                result.AddError(problem);
+            }
+        }
+        catch (UsageException e)
+        {
+            result.AddError(e.Message);
+        }
+        catch (InvalidOperationException)
+        {
+            // An option's value could not be read at all: its own parse error says so.
         }
     }
 }

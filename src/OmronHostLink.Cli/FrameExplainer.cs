@@ -102,9 +102,9 @@ internal static class FrameExplainer
         }
 
         x.Unit = check.Unit;
-        if (check.Unit > 31)
+        if (SettingRules.UnitNumber(check.Unit) is { } problem)
         {
-            x.Notes.Add($"Unit {check.Unit} is beyond 0-31, the unit numbers Host Link allows.");
+            x.Notes.Add($"Unit {problem}: Host Link does not address it.");
         }
 
         string header = Encoding.ASCII.GetString(frame, 3, 2);

@@ -38,8 +38,8 @@ internal static class Numbers
             int dash = part.IndexOf('-', 1);
             if (dash > 0)
             {
-                int from = (int)ParseInteger(part[..dash], 0, 31, option + " unit");
-                int to = (int)ParseInteger(part[(dash + 1)..], 0, 31, option + " unit");
+                int from = (int)ParseInteger(part[..dash], 0, SettingRules.MaxUnitNumber, option + " unit");
+                int to = (int)ParseInteger(part[(dash + 1)..], 0, SettingRules.MaxUnitNumber, option + " unit");
                 if (to < from)
                 {
                     throw new UsageException($"{option}: the range {part} runs backwards.");
@@ -52,7 +52,7 @@ internal static class Numbers
             }
             else
             {
-                units.Add((int)ParseInteger(part, 0, 31, option + " unit"));
+                units.Add((int)ParseInteger(part, 0, SettingRules.MaxUnitNumber, option + " unit"));
             }
         }
 

@@ -31,26 +31,6 @@ internal static class OptionValues
             CustomParser = result => ParseInteger(result, name, min, max),
         };
 
-    /// <summary>An option that takes one of a few numbers (<c>--data-bits 7|8</c>).</summary>
-    public static Option<int> IntegerChoice(string name, string description, int defaultValue, params int[] choices)
-        => new(name)
-        {
-            Description = description,
-            HelpName = string.Join('|', choices),
-            DefaultValueFactory = _ => defaultValue,
-            CustomParser = result =>
-            {
-                string text = Token(result);
-                if (int.TryParse(text, NumberStyles.None, CultureInfo.InvariantCulture, out int value) && choices.Contains(value))
-                {
-                    return value;
-                }
-
-                result.AddError($"{name}: '{text}' is not {Either(choices.Select(c => c.ToString(CultureInfo.InvariantCulture)))}.");
-                return defaultValue;
-            },
-        };
-
     /// <summary>An option that takes one of a few words, in any case; the value is the word in lower case.</summary>
     public static Option<string> Choice(string name, string description, string defaultValue, params string[] choices)
         => new(name)
@@ -102,34 +82,6 @@ internal static class OptionValues
             },
         };
 
-    /// <summary><c>--baud</c> for a serial line: one of the standard rates the serial settings accept.</summary>
-    public static Option<int> BaudRate(string name, string description, int defaultValue)
-        => new(name)
-        {
-            Description = description,
-            HelpName = "n",
-            DefaultValueFactory = _ => defaultValue,
-            CustomParser = result =>
-            {
-                int? rate = ParseInteger(result, name, 1, int.MaxValue);
-                if (rate is not { } r)
-                {
-                    return defaultValue;
-                }
-
-                try
-                {
-                    new SerialLineSettings { PortName = "-", BaudRate = r }.Validate();
-                }
-                catch (ArgumentException e)
-                {
-                    result.AddError(SerialMessage(e));
-                }
-
-                return r;
-            },
-        };
-
     /// <summary>A serial-settings error in the console's terms: the option instead of the property.</summary>
     public static string SerialMessage(ArgumentException e)
     {
@@ -156,10 +108,10 @@ internal static class OptionValues
             return (int)value;
         }
 
-        string range = max == int.MaxValue ? $"of at least {min}" : $"{min}-{max}";
+        string range = min == int.MinValue && max == int.MaxValue ? "" : max == int.MaxValue ? $" of at least {min}" : $" {min}-{max}";
         result.AddError(Numbers.TryParseInteger(text, long.MinValue, long.MaxValue, out _)
-            ? $"{name}: {text} is not {range}."
-            : $"{name}: '{text}' is not a whole number {range}.");
+            ? $"{name}: {text} is not{range}."
+            : $"{name}: '{text}' is not a whole number{range}.");
         return null;
     }
 
@@ -177,10 +129,4 @@ internal static class OptionValues
     }
 
     private static string Token(ArgumentResult result) => result.Tokens.Count == 0 ? string.Empty : result.Tokens[^1].Value;
-
-    private static string Either(IEnumerable<string> choices)
-    {
-        string[] c = choices.ToArray();
-        return c.Length == 1 ? c[0] : string.Join(", ", c[..^1]) + " or " + c[^1];
-    }
 }

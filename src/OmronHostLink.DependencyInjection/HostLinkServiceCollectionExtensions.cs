@@ -1,10 +1,10 @@
+using System.Diagnostics.Metrics;
 using Microsoft.Extensions.Configuration;
 using Microsoft.Extensions.DependencyInjection.Extensions;
+using Microsoft.Extensions.Logging;
 using Microsoft.Extensions.Options;
 using OmronHostLink;
 using OmronHostLink.DependencyInjection;
-using OmronHostLink.DependencyInjection.Configuration;
-using OmronHostLink.DependencyInjection.Validation;
 
 namespace Microsoft.Extensions.DependencyInjection;
 
@@ -14,7 +14,9 @@ namespace Microsoft.Extensions.DependencyInjection;
 /// on first use, logs through the container's <c>ILoggerFactory</c>, measures through its <c>IMeterFactory</c> (a
 /// named client's metrics and spans carry its name as <c>hostlink.link.name</c>), and is closed when the container is
 /// disposed.
-/// Its settings are checked when the host starts: every problem is reported at once, named by its configuration key.
+/// Its settings are the library's <see cref="HostLinkClientSettings"/>, read from configuration by
+/// <see cref="HostLinkClientSettings.Read"/> and checked when the host starts by <see cref="HostLinkClientSettings.Validate"/>:
+/// every problem is reported at once, named by its configuration key.
 /// </summary>
 /// <example>
 /// <code>
@@ -127,11 +129,7 @@ public static class HostLinkServiceCollectionExtensions
         OptionsBuilder<HostLinkClientSettings> options = services.AddOptions<HostLinkClientSettings>(optionsName);
         if (configuration is not null)
         {
-            options.Configure(s =>
-            {
-                s.ConfigurationPath = (configuration as IConfigurationSection)?.Path ?? "";
-                HostLinkSettingsReader.Read(configuration, s);
-            });
+            options.Configure(s => s.Read(configuration.AsEnumerable(makePathsRelative: true)));
         }
 
         if (configure is not null)
@@ -140,6 +138,7 @@ public static class HostLinkServiceCollectionExtensions
         }
 
         options.ValidateOnStart();
+        services.AddSingleton(new HostLinkClientSource(optionsName, name, configuration));
         services.TryAddEnumerable(ServiceDescriptor.Singleton<IValidateOptions<HostLinkClientSettings>, HostLinkClientSettingsValidator>());
 
         if (name is null)
@@ -154,11 +153,20 @@ public static class HostLinkServiceCollectionExtensions
         return services;
     }
 
+    /// <summary>
+    /// The client the settings describe, logging through the container's logger factory and measuring through its meter
+    /// factory (when it has them), named in metrics and traces by its registered name.
+    /// </summary>
     private static HostLinkClient Create(IServiceProvider services, string optionsName, string? name)
     {
         // Throws OptionsValidationException, naming every problem, when the host was not started to check them.
         HostLinkClientSettings settings = services.GetRequiredService<IOptionsMonitor<HostLinkClientSettings>>().Get(optionsName);
-        return HostLinkClientSettingsMapper.CreateClient(settings, services, name);
+        return settings.CreateClient(o =>
+        {
+            o.LoggerFactory = services.GetService<ILoggerFactory>();
+            o.MeterFactory = services.GetService<IMeterFactory>();
+            o.LinkName = name;
+        });
     }
 
     private static void CheckName(string name)

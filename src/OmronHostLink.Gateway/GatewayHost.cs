@@ -39,7 +39,7 @@ public static class GatewayHost
 
         IConfigurationSection hostLink = builder.Configuration.GetSection(GatewayOptions.SectionName);
         services.AddOptions<GatewayOptions>()
-            .Configure(options => ConfigurationSchema.Bind(hostLink, options))
+            .Configure(options => LinkClients.Bind(hostLink, options))
             .ValidateOnStart();
         services.AddSingleton<IValidateOptions<GatewayOptions>, GatewayOptionsValidator>();
         services.AddLinkClients(builder.Configuration);

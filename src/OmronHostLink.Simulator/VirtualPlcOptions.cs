@@ -62,9 +62,9 @@ public sealed class VirtualPlcOptions
 
         foreach (int unit in Units)
         {
-            if ((uint)unit > 31)
+            if ((uint)unit > HostLinkUnit.MaxUnitNumber)
             {
-                throw new ArgumentException($"Unit numbers are 0-31; {unit} is not.", nameof(Units));
+                throw new ArgumentException($"Unit numbers are 0-{HostLinkUnit.MaxUnitNumber}; {unit} is not.", nameof(Units));
             }
         }
 

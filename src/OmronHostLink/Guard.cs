@@ -20,9 +20,9 @@ internal static class Guard
 
     public static void Unit(int unit, [CallerArgumentExpression(nameof(unit))] string? name = null)
     {
-        if ((uint)unit > 31)
+        if (SettingRules.UnitNumber(unit) is { } problem)
         {
-            throw new ArgumentOutOfRangeException(name, unit, $"Host Link unit number must be 0-31; it was {unit}.");
+            throw new ArgumentOutOfRangeException(name, unit, $"The Host Link unit: {problem}.");
         }
     }
 }

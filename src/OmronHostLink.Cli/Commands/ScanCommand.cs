@@ -8,7 +8,7 @@ internal static class ScanCommand
     public static Command Create(CliContext context)
     {
         var command = new Command("scan", "Probe each unit number with one short TS; print the unit, model and mode of each that answers. Exit 4 when none answers.");
-        var connection = new ConnectionOptions(includeUnit: false, defaultTimeoutMs: 100, defaultRetries: 1);
+        var connection = new ConnectionOptions(includeUnit: false, defaultTimeout: TimeSpan.FromMilliseconds(100), defaultRetries: 1);
         connection.AddTo(command);
         var units = new Option<string>("--units") { Description = "Unit numbers to probe: 0-31, 0,1,5 or 0-3,7.", DefaultValueFactory = _ => "0-31", HelpName = "list" };
         Option<bool> json = CliContext.JsonOption();

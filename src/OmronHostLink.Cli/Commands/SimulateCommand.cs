@@ -23,9 +23,9 @@ internal static class SimulateCommand
         Option<string> mode = OptionValues.Choice("--mode", "Operating mode at start.", "program", "program", "monitor", "run");
         var memory = new Option<string?>("--memory") { Description = "JSON file with initial memory and state, e.g. {\"D100\":[1,2,3],\"mode\":\"run\"}.", HelpName = "file.json" };
         Option<int?> baud = OptionValues.OptionalInteger("--baud", "Line speed: on TCP, emulate the wire time of this speed (default none); on a serial port, the port's speed (default 9600).", 1, 10_000_000, "n");
-        Option<int> dataBits = OptionValues.IntegerChoice("--data-bits", "Serial data bits.", 7, 7, 8);
+        Option<int> dataBits = OptionValues.Integer("--data-bits", "Serial data bits: 7 or 8.", new SerialLineSettings().DataBits, int.MinValue, int.MaxValue, "7|8");
         Option<string> parity = OptionValues.Choice("--parity", "Serial parity.", "even", "none", "even", "odd");
-        Option<int> stopBits = OptionValues.IntegerChoice("--stop-bits", "Serial stop bits.", 2, 1, 2);
+        Option<int> stopBits = OptionValues.Integer("--stop-bits", "Serial stop bits: 1 or 2.", (int)new SerialLineSettings().StopBits, int.MinValue, int.MaxValue, "1|2");
         Option<TimeSpan?> turnaround = Durations.Option("--turnaround", "Time between a command and its answer.", TimeSpan.Zero, TimeSpan.Zero, TimeSpan.FromMinutes(1));
         var model = new Option<string?>("--model") { Description = "The PLC model to emulate (CPM1A, C200HS, CP1E-E, ...: its areas, commands and MM code; see 'hostlink model --list'), or just the code MM reports, two hex digits (default 30 = CS/CJ).", HelpName = "name|hex" };
         var drop = OptionValues.Probability("--fault-drop", "Probability of not answering at all.");
@@ -99,7 +99,7 @@ internal static class SimulateCommand
                     BaudRate = baudRate ?? 9600,
                     DataBits = parse.GetValue(dataBits),
                     Parity = parse.GetValue(parity) switch { "none" => SerialParity.None, "odd" => SerialParity.Odd, _ => SerialParity.Even },
-                    StopBits = parse.GetValue(stopBits) == 1 ? SerialStopBits.One : SerialStopBits.Two,
+                    StopBits = (SerialStopBits)parse.GetValue(stopBits),
                 };
                 try
                 {

@@ -68,12 +68,25 @@ public static class ConfigurationSchema
                 : value;
     }
 
+    /// <summary>True when <paramref name="key"/> is one of <paramref name="type"/>'s own settings.</summary>
+    internal static bool IsSetting(Type type, string key) => Settings(type).ContainsKey(key);
+
     private static void CheckObject(IConfigurationSection section, string path, Type type, List<string> failures, Values? values)
     {
         Dictionary<string, PropertyInfo> settings = Settings(type);
+        if (type == typeof(LinkOptions))
+        {
+            CheckClient(section, path, failures);
+        }
+
         foreach (IConfigurationSection child in section.GetChildren())
         {
             string childPath = $"{path}:{child.Key}";
+            if (type == typeof(LinkOptions) && !settings.ContainsKey(child.Key))
+            {
+                continue;
+            }
+
             if (!settings.TryGetValue(child.Key, out PropertyInfo? property))
             {
                 failures.Add($"{childPath} is not a setting here; the settings of {path} are {string.Join(", ", settings.Keys.Order(StringComparer.Ordinal))}.");
@@ -82,6 +95,22 @@ public static class ConfigurationSchema
 
             CheckValue(child, childPath, property.PropertyType, failures, values);
         }
+    }
+
+    /// <summary>
+    /// A link's other keys are its client's: read and checked by the library (<see cref="HostLinkClientSettings.Validate"/>),
+    /// as the DI package does, for an enabled link.
+    /// </summary>
+    private static void CheckClient(IConfigurationSection link, string path, List<string> failures)
+    {
+        if (bool.TryParse(link[nameof(LinkOptions.Enabled)], out bool enabled) && !enabled)
+        {
+            return;
+        }
+
+        var client = new HostLinkClientSettings();
+        client.Read(LinkClients.ClientKeys(link));
+        failures.AddRange(client.Validate().Select(p => p.Key.Length == 0 ? $"{path}: {p.Message}." : $"{path}:{p.Key}: {p.Message}."));
     }
 
     private static void CheckValue(IConfigurationSection section, string path, Type type, List<string> failures, Values? values)

@@ -1,5 +1,3 @@
-using OmronHostLink.Transports;
-
 namespace OmronHostLink.Gateway.Configuration;
 
 /// <summary>The <c>HostLink</c> section: the links the worker polls.</summary>
@@ -12,41 +10,32 @@ public sealed class GatewayOptions
     public Dictionary<string, LinkOptions> Links { get; set; } = new(StringComparer.OrdinalIgnoreCase);
 }
 
-/// <summary>One link: a serial port or a TCP serial-device server, one <see cref="HostLinkClient"/>, and its poll groups.</summary>
+/// <summary>
+/// One link: one <see cref="HostLinkClient"/> and its poll groups. Besides <see cref="Enabled"/>, <see cref="Backoff"/>
+/// and <see cref="Groups"/>, the link's section holds the client's settings as the library reads them everywhere
+/// (<see cref="Client"/>: <c>Serial</c>, <c>Tcp</c>, <c>CommandSet</c>, <c>TurnaroundAllowance</c>, <c>ReadRetries</c>, …).
+/// </summary>
 public sealed class LinkOptions
 {
     /// <summary>False to keep the link in the file without polling it (for example in one environment only). Default true.</summary>
     public bool Enabled { get; set; } = true;
-
-    /// <summary>A serial port and its line settings. Set exactly one of <see cref="Serial"/> and <see cref="Tcp"/>.</summary>
-    public SerialLineSettings? Serial { get; set; }
-
-    /// <summary><c>host:port</c> of a serial-device server (or the simulator). Set exactly one of <see cref="Serial"/> and <see cref="Tcp"/>.</summary>
-    public string? Tcp { get; set; }
-
-    /// <summary>For <see cref="Tcp"/>: how long a connection attempt may take. Default 5 s.</summary>
-    public TimeSpan ConnectTimeout { get; set; } = TimeSpan.FromSeconds(5);
-
-    /// <summary>For <see cref="Tcp"/>: the baud rate of the serial side behind the server, for frame deadlines. Default 9600.</summary>
-    public int? LineBaudRate { get; set; }
-
-    /// <summary>C-mode (default) or FINS for the reads.</summary>
-    public HostLinkCommandSet Protocol { get; set; } = HostLinkCommandSet.CMode;
-
-    /// <summary>How long the PLC (and a gateway) may take to start answering. Default 300 ms.</summary>
-    public TimeSpan TurnaroundAllowance { get; set; } = TimeSpan.FromMilliseconds(300);
-
-    /// <summary>How often a read is repeated after a timeout or damaged frame before the poll counts as failed. Default 2.</summary>
-    public int ReadRetries { get; set; } = 2;
-
-    /// <summary>Word order of 32-bit values. Default LowWordFirst (Omron).</summary>
-    public WordOrder WordOrder { get; set; } = WordOrder.LowWordFirst;
 
     /// <summary>How often a PLC that stopped answering is tried again.</summary>
     public BackoffOptions Backoff { get; set; } = new();
 
     /// <summary>The poll groups, keyed by name.</summary>
     public Dictionary<string, PollGroupOptions> Groups { get; set; } = new(StringComparer.OrdinalIgnoreCase);
+
+    /// <summary>The link's client, read from the section's other keys by <see cref="HostLinkClientSettings.Read"/>.</summary>
+    public HostLinkClientSettings Client { get; } = new();
+
+    /// <summary>The command set the client uses (the address ranges of the groups depend on it).</summary>
+    public HostLinkCommandSet CommandSet => Client.CommandSet ?? Defaults.CommandSet;
+
+    /// <summary>How the client's 32-bit values lie in two words.</summary>
+    public WordOrder WordOrder => Client.WordOrder ?? Defaults.WordOrder;
+
+    private static HostLinkClientOptions Defaults { get; } = new();
 }
 
 /// <summary>Capped exponential backoff: <see cref="Initial"/>, doubling up to <see cref="Max"/>.</summary>

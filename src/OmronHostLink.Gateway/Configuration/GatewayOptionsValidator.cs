@@ -61,61 +61,8 @@ public sealed class GatewayOptionsValidator : IValidateOptions<GatewayOptions>
 
     private static void ValidateLink(string path, LinkOptions link, List<string> failures)
     {
-        bool hasSerial = link.Serial is not null;
-        bool hasTcp = !string.IsNullOrWhiteSpace(link.Tcp);
-        if (hasSerial == hasTcp)
-        {
-            failures.Add($"{path}: set exactly one of Serial and Tcp ({(hasSerial ? "both are set" : "neither is set")}).");
-        }
-
-        if (link.Serial is { } serial)
-        {
-            try
-            {
-                serial.Validate();
-            }
-            catch (ArgumentException e)
-            {
-                failures.Add($"{path}:Serial:{e.ParamName}: {StripParamName(e)}");
-            }
-        }
-
-        if (hasTcp)
-        {
-            try
-            {
-                TcpTransport.ParseEndpoint(link.Tcp!);
-            }
-            catch (FormatException e)
-            {
-                failures.Add($"{path}:Tcp: {e.Message}");
-            }
-        }
-
-        if (link.ConnectTimeout <= TimeSpan.Zero)
-        {
-            failures.Add($"{path}:ConnectTimeout must be more than 0; it is {link.ConnectTimeout}.");
-        }
-
-        if (link.LineBaudRate is { } baud && baud is < 300 or > 1_000_000)
-        {
-            failures.Add($"{path}:LineBaudRate must be 300-1000000; it is {baud}.");
-        }
-
-        if (!Enum.IsDefined(link.Protocol))
-        {
-            failures.Add($"{path}:Protocol must be CMode or Fins; it is {(int)link.Protocol}.");
-        }
-
-        if (link.TurnaroundAllowance <= TimeSpan.Zero || link.TurnaroundAllowance > TimeSpan.FromMinutes(1))
-        {
-            failures.Add($"{path}:TurnaroundAllowance must be more than 0 and at most 1 minute; it is {link.TurnaroundAllowance}.");
-        }
-
-        if (link.ReadRetries is < 0 or > 10)
-        {
-            failures.Add($"{path}:ReadRetries must be 0-10; it is {link.ReadRetries}.");
-        }
+        // The client's keys: the library's one validation, as the DI package reports it.
+        failures.AddRange(link.Client.Validate().Select(p => p.Key.Length == 0 ? $"{path}: {p.Message}." : $"{path}:{p.Key}: {p.Message}."));
 
         if (link.Backoff is null)
         {
@@ -147,16 +94,16 @@ public sealed class GatewayOptionsValidator : IValidateOptions<GatewayOptions>
         {
             if (group is not null)
             {
-                ValidateGroup($"{path}:Groups:{groupName}", group, link.Protocol, failures);
+                ValidateGroup($"{path}:Groups:{groupName}", group, link.CommandSet, failures);
             }
         }
     }
 
     private static void ValidateGroup(string path, PollGroupOptions group, HostLinkCommandSet protocol, List<string> failures)
     {
-        if (group.Unit is < 0 or > 31)
+        if (group.Unit is < 0 or > HostLinkUnit.MaxUnitNumber)
         {
-            failures.Add($"{path}:Unit must be 0-31; it is {group.Unit}.");
+            failures.Add($"{path}:Unit must be 0-{HostLinkUnit.MaxUnitNumber}; it is {group.Unit}.");
         }
 
         if (group.Interval <= TimeSpan.Zero || group.Interval > LongestWait)

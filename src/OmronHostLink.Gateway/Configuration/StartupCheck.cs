@@ -21,11 +21,10 @@ internal static class StartupCheck
         try
         {
             var worker = new GatewayOptions();
-            ConfigurationSchema.Bind(hostLink, worker);
+            LinkClients.Bind(hostLink, worker);
             var sim = new SimulatorOptions();
             ConfigurationSchema.Bind(simulator, sim);
             return new GatewayOptionsValidator().Validate(null, worker).Succeeded
-                && new LinkClients.LineSpeedValidator().Validate(null, worker).Succeeded
                 && new SimulatorOptionsValidator().Validate(null, sim).Succeeded
                 && Validator.TryValidateObject(sim, new ValidationContext(sim), null, validateAllProperties: true);
         }

@@ -290,8 +290,11 @@ public sealed class MqttGateway : IHostedService, IAsyncDisposable
                 .WithTopic(filter)
                 .WithQualityOfServiceLevel(MqttClientOptionsFactory.QualityOfService(Math.Max(_options.QoS, 1)))
                 .WithNoLocal(true)
-                // A retained command would be carried out again at every connection: never take one.
-                .WithRetainHandling(MqttRetainHandling.DoNotSendOnSubscribe));
+                // A retained command would be carried out again for every new subscriber: never take one. The broker
+                // does not send the stored ones, and keeps the retain flag on the ones it forwards live (MQTT 5 "retain
+                // as published"; without it a live retained command arrives looking like any other).
+                .WithRetainHandling(MqttRetainHandling.DoNotSendOnSubscribe)
+                .WithRetainAsPublished(true));
         }
 
         MqttClientSubscribeResult result = await client.SubscribeAsync(builder.Build(), cancellationToken).ConfigureAwait(false);
@@ -376,6 +379,16 @@ public sealed class MqttGateway : IHostedService, IAsyncDisposable
 
     private static string Describe(Exception e)
     {
+        // The socket's own words ("Connection refused") say it all: the log names the broker already, and MQTTnet's
+        // wrapper would name it again as a DnsEndPoint ("host 'Unspecified/127.0.0.1:1883'").
+        for (Exception? x = e; x is not null; x = x.InnerException)
+        {
+            if (x is System.Net.Sockets.SocketException socket)
+            {
+                return socket.Message;
+            }
+        }
+
         var parts = new List<string>();
         for (Exception? x = e; x is not null; x = x.InnerException)
         {
@@ -386,6 +399,6 @@ public sealed class MqttGateway : IHostedService, IAsyncDisposable
             }
         }
 
-        return parts.Count == 0 ? e.GetType().Name : string.Join(": ", parts);
+        return parts.Count == 0 ? e.GetType().Name : string.Join(": ", parts).Replace("Unspecified/", "", StringComparison.Ordinal);
     }
 }

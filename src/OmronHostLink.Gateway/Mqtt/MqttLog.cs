@@ -49,6 +49,9 @@ public static partial class MqttLog
 
         /// <summary>Write commands are accepted (logged at each connection).</summary>
         public const int WritesAccepted = 1113;
+
+        /// <summary>A retained command was cleared (an empty retained message on a command topic): ignored.</summary>
+        public const int RetainedCommandCleared = 1114;
     }
 
     [LoggerMessage(EventId = Events.Connected, Level = LogLevel.Information, Message = "MQTT: connected to {Broker} as {ClientId}; publishing under {Prefix}/")]
@@ -92,4 +95,7 @@ public static partial class MqttLog
 
     [LoggerMessage(EventId = Events.WritesAccepted, Level = LogLevel.Information, Message = "MQTT: accepting write commands for {Count} writable tag(s) on {Filters}")]
     internal static partial void WritesAccepted(ILogger logger, int count, string filters);
+
+    [LoggerMessage(EventId = Events.RetainedCommandCleared, Level = LogLevel.Debug, Message = "MQTT: the retained command on {Topic} was cleared; nothing to do")]
+    internal static partial void RetainedCommandCleared(ILogger logger, string topic);
 }

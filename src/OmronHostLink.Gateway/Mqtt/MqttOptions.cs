@@ -100,4 +100,11 @@ public sealed class MqttWriteOptions
     /// Default false: the worker does not subscribe to any command topic.
     /// </summary>
     public bool Enabled { get; set; }
+
+    /// <summary>
+    /// Topic prefixes a command's MQTT 5 response topic may lie under, such as <c>scada/replies</c>: a reply goes to the
+    /// command's own result topic (<c>{command topic}/result</c>) or under one of these, never elsewhere. A command whose
+    /// response topic is anywhere else is refused (and answered on its result topic). None by default.
+    /// </summary>
+    public List<string> ReplyPrefixes { get; set; } = [];
 }

@@ -93,8 +93,39 @@ public sealed class MqttOptionsValidator : IValidateOptions<MqttOptions>
         }
 
         ValidateTls(options.Tls, failures);
+        ValidateReplyPrefixes(options, failures);
         ValidateTags(failures);
         return failures.Count == 0 ? ValidateOptionsResult.Success : ValidateOptionsResult.Fail(failures);
+    }
+
+    private static void ValidateReplyPrefixes(MqttOptions options, List<string> failures)
+    {
+        List<string> prefixes = options.Writes?.ReplyPrefixes ?? [];
+        for (int i = 0; i < prefixes.Count; i++)
+        {
+            string key = $"{MqttOptions.SectionName}:Writes:ReplyPrefixes:{i}";
+            string prefix = prefixes[i] ?? "";
+            string? levelProblem = prefix.Split('/').Select(l => l.Length == 0 ? "is empty (a leading, trailing or doubled '/')" : MqttTopics.LevelProblem(l)).FirstOrDefault(p => p is not null);
+            if (prefix.Length == 0 || prefix.StartsWith('$') || levelProblem is not null)
+            {
+                failures.Add($"{key} '{prefix}' is not a topic prefix: {(prefix.Length == 0 ? "it is empty" : prefix.StartsWith('$') ? "'$' topics are the broker's" : "a level " + levelProblem)}; write levels without wildcards, such as scada/replies.");
+            }
+            else if (Overlaps(prefix, options.TopicPrefix))
+            {
+                failures.Add($"{key} '{prefix}' overlaps {MqttOptions.SectionName}:TopicPrefix '{options.TopicPrefix}': replies there could land on value, status or command topics. Use a prefix of its own, such as scada/replies.");
+            }
+        }
+    }
+
+    /// <summary>Whether one topic prefix contains the other, level by level.</summary>
+    private static bool Overlaps(string a, string? b)
+    {
+        if (string.IsNullOrEmpty(b))
+        {
+            return false;
+        }
+
+        return a == b || a.StartsWith(b + "/", StringComparison.Ordinal) || b.StartsWith(a + "/", StringComparison.Ordinal);
     }
 
     private static void ValidatePrefix(string? prefix, List<string> failures)
@@ -208,7 +239,7 @@ public sealed class MqttOptionsValidator : IValidateOptions<MqttOptions>
 
                 if (group.Writable)
                 {
-                    ValidateWritable(groupPath, group, link.Protocol, failures);
+                    ValidateWritable(groupPath, group, link.CommandSet, failures);
                 }
             }
         }

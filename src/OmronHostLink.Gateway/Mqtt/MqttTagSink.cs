@@ -65,7 +65,7 @@ public sealed class MqttTagSink : ITagOutput
 
             object? value = change.Quality == TagQuality.Good ? change.Value : change.Value ?? state.Value;
             DateTimeOffset? time = change.Quality == TagQuality.Good ? change.Time : state.ReadTime;
-            string valueJson = JsonSerializer.Serialize(value, typeof(object), MqttJsonContext.Default);
+            string valueJson = JsonSerializer.Serialize(value, typeof(object), MqttJson.Context);
             if (state.Published && state.Quality == change.Quality && state.ValueJson == valueJson)
             {
                 return;
@@ -139,6 +139,6 @@ public sealed class MqttTagSink : ITagOutput
                 Address = address,
                 Error = Error,
             },
-            MqttJsonContext.Default.TagPayload);
+            MqttJson.Context.TagPayload);
     }
 }

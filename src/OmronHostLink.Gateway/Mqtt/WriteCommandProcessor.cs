@@ -27,12 +27,17 @@ public sealed class WriteCommandProcessor
     private readonly ILogger _logger;
     private readonly TimeProvider _time;
     private readonly bool _enabled;
+    private readonly string[] _replyPrefixes;
+
+    /// <summary>A command's JSON as written: a property given twice is an error, not "the last one wins".</summary>
+    private static readonly JsonDocumentOptions StrictJson = new() { AllowDuplicateProperties = false };
 
     /// <summary>Creates the processor.</summary>
     public WriteCommandProcessor(MqttOptions options, MqttTopics topics, TagCatalog catalog, OpenLinks links, OutboundQueue queue, MqttMetrics metrics, ILogger<WriteCommandProcessor> logger, TimeProvider timeProvider)
     {
         ArgumentNullException.ThrowIfNull(options);
         _enabled = options.Writes.Enabled;
+        _replyPrefixes = options.Writes.ReplyPrefixes.ToArray();
         _topics = topics;
         _catalog = catalog;
         _links = links;
@@ -61,7 +66,15 @@ public sealed class WriteCommandProcessor
         {
             await foreach (WriteCommand command in _commands.Reader.ReadAllAsync(cancellationToken).ConfigureAwait(false))
             {
-                await ExecuteAsync(command, cancellationToken).ConfigureAwait(false);
+                try
+                {
+                    await ExecuteAsync(command, cancellationToken).ConfigureAwait(false);
+                }
+                catch (Exception e) when (e is not OperationCanceledException && e is not OutOfMemoryException)
+                {
+                    // A bug must not end the loop: every later command would go unanswered.
+                    Refuse(command, command.Topic, $"the gateway failed on the command ({e.GetType().Name}: {e.Message}).");
+                }
             }
         }
         catch (OperationCanceledException) when (cancellationToken.IsCancellationRequested)
@@ -71,15 +84,28 @@ public sealed class WriteCommandProcessor
     }
 
     /// <summary>Checks and carries out one command, and queues its reply.</summary>
-    public async Task<WriteResultPayload> ExecuteAsync(WriteCommand command, CancellationToken cancellationToken)
+    /// <returns>The reply; null for a command ignored without one (clearing a retained command).</returns>
+    public async Task<WriteResultPayload?> ExecuteAsync(WriteCommand command, CancellationToken cancellationToken)
     {
         ArgumentNullException.ThrowIfNull(command);
+        if (command.Retained && command.Payload.Length == 0)
+        {
+            // Someone clears a retained command (publish -r with no payload): nothing to do and nobody to answer.
+            MqttLog.RetainedCommandCleared(_logger, command.Topic);
+            return null;
+        }
+
         if (!_topics.TryParseCommand(command.Topic, out string link, out int unit, out string name))
         {
             return Refuse(command, command.Topic, $"{command.Topic} is not a command topic ({_topics.Prefix}/{{link}}/{{unit}}/{{tag}}/set).");
         }
 
         string tagTopic = _topics.Tag(link, unit, name);
+        if (!IsAllowedReplyTopic(command))
+        {
+            return Refuse(command, tagTopic, $"the response topic '{Shorten(command.ResponseTopic!)}' is neither this command's result topic nor under a reply prefix (Mqtt:Writes:ReplyPrefixes); the reply goes to {MqttTopics.ResultTopic(command.Topic)}.");
+        }
+
         if (!_enabled)
         {
             return Refuse(command, tagTopic, "writes are disabled (Mqtt:Writes:Enabled is false).");
@@ -87,7 +113,7 @@ public sealed class WriteCommandProcessor
 
         if (command.Retained)
         {
-            return Refuse(command, tagTopic, "the command came from the broker's retained store; publish write commands without the retain flag.");
+            return Refuse(command, tagTopic, "the command was published with the retain flag; a retained command would run again for every new subscriber, so publish write commands without it.");
         }
 
         TagDefinition? tag = _catalog.Find(link, unit, name);
@@ -104,10 +130,18 @@ public sealed class WriteCommandProcessor
         JsonElement value;
         try
         {
-            using JsonDocument document = JsonDocument.Parse(command.Payload);
+            using JsonDocument document = JsonDocument.Parse(command.Payload, StrictJson);
             JsonElement root = document.RootElement;
             if (root.ValueKind == JsonValueKind.Object)
             {
+                foreach (JsonProperty property in root.EnumerateObject())
+                {
+                    if (property.Name != "value")
+                    {
+                        return Refuse(command, tagTopic, $"the payload's object holds \"{Shorten(property.Name)}\"; it takes \"value\" only: {{\"value\": 1234}}.");
+                    }
+                }
+
                 if (!root.TryGetProperty("value", out JsonElement inner))
                 {
                     return Refuse(command, tagTopic, "the payload is a JSON object without \"value\"; send the value bare (1234) or as {\"value\": 1234}.");
@@ -188,11 +222,32 @@ public sealed class WriteCommandProcessor
     private WriteResultPayload Reply(WriteCommand command, WriteResultPayload result)
     {
         _metrics.Write(result.Status);
-        bool useResponseTopic = !string.IsNullOrEmpty(command.ResponseTopic) && MqttTopics.IsPublishable(command.ResponseTopic);
+        bool useResponseTopic = !string.IsNullOrEmpty(command.ResponseTopic) && IsAllowedReplyTopic(command);
         string topic = useResponseTopic ? command.ResponseTopic! : MqttTopics.ResultTopic(command.Topic);
-        byte[] payload = JsonSerializer.SerializeToUtf8Bytes(result, MqttJsonContext.Default.WriteResultPayload);
+        byte[] payload = JsonSerializer.SerializeToUtf8Bytes(result, MqttJson.Context.WriteResultPayload);
         _queue.Enqueue(new OutboundMessage(topic, payload, Retain: false, useResponseTopic ? command.CorrelationData : null));
         return result;
+    }
+
+    /// <summary>
+    /// No response topic, the command's own result topic, or a topic under a configured reply prefix: a reply can never
+    /// land on a value, status or command topic, nor anywhere else the gateway's credentials may publish.
+    /// </summary>
+    private bool IsAllowedReplyTopic(WriteCommand command)
+    {
+        string? topic = command.ResponseTopic;
+        if (string.IsNullOrEmpty(topic))
+        {
+            return true;
+        }
+
+        if (!MqttTopics.IsPublishable(topic))
+        {
+            return false;
+        }
+
+        return topic == MqttTopics.ResultTopic(command.Topic)
+            || _replyPrefixes.Any(p => topic.StartsWith(p + "/", StringComparison.Ordinal) && topic.Length > p.Length + 1);
     }
 
     private static string Shorten(string text) => text.Length > 60 ? text.Substring(0, 60) + "…" : text;

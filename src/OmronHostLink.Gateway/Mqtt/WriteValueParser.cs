@@ -9,6 +9,11 @@ namespace OmronHostLink.Gateway.Mqtt;
 /// </summary>
 public static class WriteValueParser
 {
+    /// <summary>The smallest positive normal IEEE 754 single (2^-126); below it a REAL loses significant digits.</summary>
+    private const float SmallestNormalSingle = 1.17549435E-38f;
+
+    /// <summary>The smallest positive normal IEEE 754 double (2^-1022).</summary>
+    private const double SmallestNormalDouble = 2.2250738585072014E-308;
     /// <summary>
     /// Reads the value of a write command for a tag and turns it into the words to write (for <c>bit</c>: one word,
     /// 0 or 1). Nothing is sent for a value this refuses.
@@ -179,10 +184,9 @@ public static class WriteValueParser
                 return true;
 
             case PlcValueType.Float:
-                if (item.ValueKind != JsonValueKind.Number || !item.TryGetDouble(out double d)
-                    || !float.IsFinite((float)d))
+                if (!TryReal(item, single: true, out double d))
                 {
-                    error = $"a float takes a JSON number within ±{float.MaxValue.ToString("R", CultureInfo.InvariantCulture)}; got {Describe(item)}.";
+                    error = $"a float takes a JSON number within ±{Text(float.MaxValue)}, and 0 or at least ±{Text(SmallestNormalSingle)} in magnitude; got {Describe(item)}.";
                     return false;
                 }
 
@@ -190,9 +194,9 @@ public static class WriteValueParser
                 return true;
 
             case PlcValueType.Double:
-                if (item.ValueKind != JsonValueKind.Number || !item.TryGetDouble(out double dd) || !double.IsFinite(dd))
+                if (!TryReal(item, single: false, out double dd))
                 {
-                    error = $"a double takes a JSON number within ±{double.MaxValue.ToString("R", CultureInfo.InvariantCulture)}; got {Describe(item)}.";
+                    error = $"a double takes a JSON number within ±{Text(double.MaxValue)}, and 0 or at least ±{Text(SmallestNormalDouble)} in magnitude; got {Describe(item)}.";
                     return false;
                 }
 
@@ -204,6 +208,56 @@ public static class WriteValueParser
                 return false;
         }
     }
+
+    /// <summary>
+    /// A JSON number the real type holds as given: finite, within its range once rounded to it, and not so small that it
+    /// would be stored as 0 or as a denormal with fewer significant digits (1e-50 to a float would silently become 0).
+    /// </summary>
+    private static bool TryReal(JsonElement item, bool single, out double value)
+    {
+        if (item.ValueKind != JsonValueKind.Number || !item.TryGetDouble(out value) || !double.IsFinite(value))
+        {
+            value = 0;
+            return false;
+        }
+
+        double stored = single ? (float)value : value;
+        double magnitude = Math.Abs(stored);
+        if (double.IsInfinity(magnitude))
+        {
+            return false;
+        }
+
+        if (magnitude == 0)
+        {
+            // 0 as written, or a number so small that it rounds to 0 (1e-50 to a float, 1e-400 even to a double).
+            return !HasNonZeroDigit(item.GetRawText());
+        }
+
+        return magnitude >= (single ? SmallestNormalSingle : SmallestNormalDouble);
+    }
+
+    private static bool HasNonZeroDigit(string number)
+    {
+        foreach (char c in number)
+        {
+            if (c is 'e' or 'E')
+            {
+                return false;
+            }
+
+            if (c is >= '1' and <= '9')
+            {
+                return true;
+            }
+        }
+
+        return false;
+    }
+
+    private static string Text(double value) => value.ToString("R", CultureInfo.InvariantCulture);
+
+    private static string Text(float value) => value.ToString("R", CultureInfo.InvariantCulture);
 
     private static bool TryInteger(JsonElement item, PlcValueType type, long min, long max, out long value, out string error)
     {

@@ -45,8 +45,8 @@ internal sealed class LinkPoller(string name, LinkOptions options, Func<HostLink
             _units.TryAdd(g.UnitNumber, new UnitHealth());
         }
 
-        GatewayLog.LinkStarted(logger, name, _groups.Count, plc.Description);
         sink.LinkOpened(name, plc);
+        GatewayLog.LinkStarted(logger, name, _groups.Count, plc.Description);
         try
         {
             // Started in configuration order: each first read queues at the gate before the next group's.

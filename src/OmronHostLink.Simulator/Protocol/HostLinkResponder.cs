@@ -78,7 +78,7 @@ public sealed class HostLinkResponder
     /// <returns>The answer, or null when the PLC sends none (XZ; a message too short to carry a unit and header).</returns>
     public SimResponse? Respond(ReadOnlySpan<byte> message)
     {
-        if (message.Length < CModeCommand.PrefixLength || !MessagePrefix.TryReadUnit(message, out int unit) || unit > 31)
+        if (message.Length < CModeCommand.PrefixLength || !MessagePrefix.TryReadUnit(message, out int unit) || unit > HostLinkUnit.MaxUnitNumber)
         {
             return null;
         }
@@ -93,9 +93,9 @@ public sealed class HostLinkResponder
     /// <returns>The answer, or null when the PLC sends none (XZ).</returns>
     public SimResponse? Respond(int unit, ReadOnlySpan<byte> header, ReadOnlySpan<byte> text)
     {
-        if ((uint)unit > 31)
+        if ((uint)unit > HostLinkUnit.MaxUnitNumber)
         {
-            throw new ArgumentOutOfRangeException(nameof(unit), unit, "Unit numbers are 0-31.");
+            throw new ArgumentOutOfRangeException(nameof(unit), unit, $"Unit numbers are 0-{HostLinkUnit.MaxUnitNumber}.");
         }
 
         if (header.Length != 2)

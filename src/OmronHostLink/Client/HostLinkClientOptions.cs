@@ -107,20 +107,19 @@ public sealed class HostLinkClientOptions
     /// <exception cref="ArgumentException">An option is out of range.</exception>
     public void Validate()
     {
-        Guard.Unit(UnitNumber, nameof(UnitNumber));
+        // The rules are the settings' own (SettingRules): one check, whichever way the values arrive.
+        Check(nameof(UnitNumber), UnitNumber, SettingRules.UnitNumber(UnitNumber));
         if (LineTiming is null)
         {
             throw new ArgumentException("LineTiming is required.", nameof(LineTiming));
         }
 
-        if (TurnaroundAllowance <= TimeSpan.Zero || TurnaroundAllowance > TimeSpan.FromMinutes(1))
-        {
-            throw new ArgumentOutOfRangeException(nameof(TurnaroundAllowance), TurnaroundAllowance, "TurnaroundAllowance must be more than 0 and at most 1 minute.");
-        }
-
-        Guard.InRange(ReadRetries, 0, 10, nameof(ReadRetries));
-        Guard.InRange(WriteRetries, 0, 10, nameof(WriteRetries));
-        Guard.InRange(FinsResponseWait, 0, 15, nameof(FinsResponseWait));
+        Check(nameof(TurnaroundAllowance), TurnaroundAllowance, SettingRules.TurnaroundAllowance(TurnaroundAllowance));
+        Check(nameof(ReadRetries), ReadRetries, SettingRules.Retries(ReadRetries));
+        Check(nameof(WriteRetries), WriteRetries, SettingRules.Retries(WriteRetries));
+        Check(nameof(FinsResponseWait), FinsResponseWait, SettingRules.FinsResponseWait(FinsResponseWait));
+        Check(nameof(CommandSet), CommandSet, SettingRules.CommandSet(CommandSet));
+        Check(nameof(WordOrder), WordOrder, SettingRules.WordOrder(WordOrder));
         if (SendInterval < TimeSpan.Zero || SendInterval > MaxSendInterval)
         {
             throw new ArgumentOutOfRangeException(nameof(SendInterval), SendInterval, "SendInterval must be between 0 and 10 s.");
@@ -133,9 +132,9 @@ public sealed class HostLinkClientOptions
 
         foreach (KeyValuePair<int, TimeSpan> unit in UnitSendIntervals)
         {
-            if ((uint)unit.Key > 31)
+            if (SettingRules.UnitNumber(unit.Key) is not null)
             {
-                throw new ArgumentOutOfRangeException(nameof(UnitSendIntervals), unit.Key, $"UnitSendIntervals names unit {unit.Key}; Host Link unit numbers are 0-31.");
+                throw new ArgumentOutOfRangeException(nameof(UnitSendIntervals), unit.Key, $"UnitSendIntervals names unit {unit.Key}; Host Link unit numbers are 0-{HostLinkUnit.MaxUnitNumber}.");
             }
 
             if (unit.Value < TimeSpan.Zero || unit.Value > MaxSendInterval)
@@ -149,14 +148,22 @@ public sealed class HostLinkClientOptions
             throw new ArgumentException("TimeProvider is required.", nameof(TimeProvider));
         }
 
-        if (Model is not null && !string.Equals(Model, UnitModels.Auto, StringComparison.OrdinalIgnoreCase) && !PlcModelProfile.TryParse(Model, out _))
+        if (Model is not null && SettingRules.Model(Model) is { } modelProblem)
         {
-            throw new ArgumentException($"Model '{Model}' is not a known PLC model; use one of {PlcModelProfile.KnownNames()}, or auto to ask the PLC (MM).", nameof(Model));
+            throw new ArgumentException($"Model {modelProblem}.", nameof(Model));
         }
 
         if (LinkName is not null && LinkName.Trim().Length == 0)
         {
             throw new ArgumentException("LinkName is empty; leave it unset (null) to name the link by its port or host:port.", nameof(LinkName));
+        }
+    }
+
+    private static void Check(string name, object value, string? problem)
+    {
+        if (problem is not null)
+        {
+            throw new ArgumentOutOfRangeException(name, value, $"{name} {problem}.");
         }
     }
 

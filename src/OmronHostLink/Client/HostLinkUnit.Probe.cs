@@ -18,9 +18,9 @@ public partial class HostLinkUnit
     public ValueTask<TimeSpan?> ProbeAsync(TimeSpan? turnaround = null, CancellationToken cancellationToken = default)
     {
         TimeSpan wait = turnaround ?? Options.TurnaroundAllowance;
-        if (wait <= TimeSpan.Zero || wait > TimeSpan.FromMinutes(1))
+        if (SettingRules.TurnaroundAllowance(wait) is { } problem)
         {
-            throw new ArgumentOutOfRangeException(nameof(turnaround), wait, "The turnaround must be more than 0 and at most 1 minute.");
+            throw new ArgumentOutOfRangeException(nameof(turnaround), wait, $"The turnaround {problem}.");
         }
 
         return Connection.ProbeAsync(UnitNumber, wait, cancellationToken);

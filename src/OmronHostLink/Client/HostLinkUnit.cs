@@ -14,6 +14,9 @@ namespace OmronHostLink;
 /// </summary>
 public partial class HostLinkUnit
 {
+    /// <summary>The highest unit number Host Link addresses (the lowest is 0).</summary>
+    public const int MaxUnitNumber = 31;
+
     private protected readonly HostLinkConnection Connection;
     private protected readonly HostLinkClientOptions Options;
     private protected readonly UnitModels Models;

@@ -6,9 +6,6 @@ namespace OmronHostLink.Transports;
 /// </summary>
 public sealed class SerialLineSettings
 {
-    private static readonly int[] SupportedBaudRates =
-        [300, 600, 1200, 1800, 2400, 4800, 9600, 19200, 38400, 57600, 115200, 230400];
-
     /// <summary>
     /// The device: <c>COM3</c> on Windows; <c>/dev/ttyUSB0</c>, <c>/dev/ttyS0</c>, <c>/dev/pts/5</c> or a symbolic
     /// link to one (such as <c>/tmp/ttyV0</c> made by socat) on Linux.
@@ -57,53 +54,21 @@ public sealed class SerialLineSettings
     /// <exception cref="ArgumentException">A setting is out of range or two settings contradict each other.</exception>
     public void Validate()
     {
-        if (string.IsNullOrWhiteSpace(PortName))
-        {
-            throw new ArgumentException(
-                "SerialLineSettings.PortName is empty; set it to the serial device, e.g. COM3 or /dev/ttyUSB0.", nameof(PortName));
-        }
+        // The rules are the client settings' own (SettingRules): one check, whichever way the values arrive.
+        Check(nameof(PortName), SettingRules.PortName(PortName ?? ""));
+        Check(nameof(BaudRate), SettingRules.BaudRate(BaudRate));
+        Check(nameof(DataBits), SettingRules.DataBits(DataBits));
+        Check(nameof(Parity), SettingRules.Parity(Parity));
+        Check(nameof(StopBits), SettingRules.StopBits(StopBits));
+        Check(nameof(Handshake), SettingRules.Handshake(Handshake));
+        Check(nameof(RtsEnable), SettingRules.RtsEnable(RtsEnable, Handshake));
+    }
 
-        if (PortName.IndexOf('\0') >= 0)
+    private static void Check(string property, string? problem)
+    {
+        if (problem is not null)
         {
-            throw new ArgumentException("SerialLineSettings.PortName contains a NUL character.", nameof(PortName));
-        }
-
-        if (Array.IndexOf(SupportedBaudRates, BaudRate) < 0)
-        {
-            throw new ArgumentException(
-                $"SerialLineSettings.BaudRate {BaudRate} is not a supported standard rate; use one of {string.Join(", ", SupportedBaudRates)}.",
-                nameof(BaudRate));
-        }
-
-        if (DataBits is not (7 or 8))
-        {
-            throw new ArgumentException(
-                $"SerialLineSettings.DataBits must be 7 or 8; it was {DataBits}.", nameof(DataBits));
-        }
-
-        if (Parity is not (SerialParity.None or SerialParity.Even or SerialParity.Odd))
-        {
-            throw new ArgumentException(
-                $"SerialLineSettings.Parity {(int)Parity} is not a SerialParity value (None, Even or Odd).", nameof(Parity));
-        }
-
-        if (StopBits is not (SerialStopBits.One or SerialStopBits.Two))
-        {
-            throw new ArgumentException(
-                $"SerialLineSettings.StopBits {(int)StopBits} is not a SerialStopBits value (One or Two).", nameof(StopBits));
-        }
-
-        if (Handshake is not (SerialHandshake.None or SerialHandshake.RequestToSend or SerialHandshake.XOnXOff))
-        {
-            throw new ArgumentException(
-                $"SerialLineSettings.Handshake {(int)Handshake} is not a SerialHandshake value (None, RequestToSend or XOnXOff).",
-                nameof(Handshake));
-        }
-
-        if (RtsEnable && Handshake == SerialHandshake.RequestToSend)
-        {
-            throw new ArgumentException(
-                "SerialLineSettings.RtsEnable cannot be set when Handshake is RequestToSend: the driver controls RTS.", nameof(RtsEnable));
+            throw new ArgumentException($"{nameof(SerialLineSettings)}.{property} {problem}.", property);
         }
     }
 

@@ -13,12 +13,22 @@ public sealed class TcpTransport : IHostLinkTransport
     /// <summary>Creates the transport; nothing connects until the first exchange.</summary>
     public TcpTransport(string host, int port, TimeSpan? connectTimeout = null, LineTiming? lineTiming = null)
     {
-        if (string.IsNullOrWhiteSpace(host))
+        Guard.NotNull(host);
+        if (SettingRules.Host(host) is { } badHost)
         {
-            throw new ArgumentException("The host name is empty.", nameof(host));
+            throw new ArgumentException($"The host {badHost}.", nameof(host));
         }
 
-        Guard.InRange(port, 1, 65535);
+        if (SettingRules.TcpPort(port) is { } badPort)
+        {
+            throw new ArgumentOutOfRangeException(nameof(port), port, $"The port {badPort}.");
+        }
+
+        if (connectTimeout is { } t && SettingRules.ConnectTimeout(t) is { } badTimeout)
+        {
+            throw new ArgumentOutOfRangeException(nameof(connectTimeout), t, $"The connect timeout {badTimeout}.");
+        }
+
         Host = host;
         Port = port;
         ConnectTimeout = connectTimeout ?? TimeSpan.FromSeconds(5);
@@ -45,13 +55,9 @@ public sealed class TcpTransport : IHostLinkTransport
     public static (string Host, int Port) ParseEndpoint(string text)
     {
         Guard.NotNull(text);
-        int colon = text.LastIndexOf(':');
-        if (colon <= 0 || !int.TryParse(text.Substring(colon + 1), System.Globalization.NumberStyles.None, System.Globalization.CultureInfo.InvariantCulture, out int port) || port is < 1 or > 65535)
-        {
-            throw new FormatException($"'{text}' is not host:port with a port number 1-65535.");
-        }
-
-        return (text.Substring(0, colon).Trim('[', ']'), port);
+        return SettingRules.TryParseEndpoint(text, out string host, out int port, out string? error)
+            ? (host, port)
+            : throw new FormatException(error + ".");
     }
 
     /// <inheritdoc/>

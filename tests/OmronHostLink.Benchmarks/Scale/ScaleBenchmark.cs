@@ -273,8 +273,8 @@ internal static class ScaleBenchmark
             linksNode[LinkName(l)] = new JsonObject
             {
                 ["Tcp"] = $"127.0.0.1:{servers[l].Port}",
-                ["LineBaudRate"] = s.Baud,
-                ["Protocol"] = "CMode",
+                ["Serial"] = new JsonObject { ["BaudRate"] = s.Baud },
+                ["CommandSet"] = "CMode",
                 ["Groups"] = groups,
             };
         }

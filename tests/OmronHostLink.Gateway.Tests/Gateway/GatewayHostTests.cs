@@ -32,10 +32,10 @@ public sealed class GatewayHostTests(ITestOutputHelper output) : IDisposable
     private static Dictionary<string, string?> Link(int port) => new()
     {
         ["HostLink:Links:plc:Tcp"] = $"127.0.0.1:{port}",
-        ["HostLink:Links:plc:LineBaudRate"] = "115200",
+        ["HostLink:Links:plc:Serial:BaudRate"] = "115200",
         ["HostLink:Links:plc:TurnaroundAllowance"] = "00:00:00.200",
         ["HostLink:Links:plc:ReadRetries"] = "1",
-        ["HostLink:Links:plc:ConnectTimeout"] = "00:00:00.500",
+        ["HostLink:Links:plc:Tcp:ConnectTimeout"] = "00:00:00.500",
         ["HostLink:Links:plc:Backoff:Initial"] = "00:00:00.100",
         ["HostLink:Links:plc:Backoff:Max"] = "00:00:00.200",
     };
@@ -369,8 +369,8 @@ public sealed class GatewayHostTests(ITestOutputHelper output) : IDisposable
         { "HostLink:Links:plc:Groups:g:Interval", "2.00:00:00", "HostLink:Links:plc:Groups:g:Interval must be more than 0 and at most 1 day; it is 2.00:00:00" },
         { "HostLink:Links:plc:Backoff:Max", "3.00:00:00", "HostLink:Links:plc:Backoff:Max must be at most 1 day; it is 3.00:00:00" },
         { "HostLink:Links:plc:Groups:g:Log", "Sometimes", "HostLink:Links:plc:Groups:g:Log 'Sometimes' is not EveryPoll or OnChange" },
-        { "HostLink:Links:plc:Serial:PortName", "/dev/ttyS0", "HostLink:Links:plc: set exactly one of Serial and Tcp (both are set)" },
-        { "HostLink:Links:plc:Tcp", "", "HostLink:Links:plc: set exactly one of Serial and Tcp (neither is set)" },
+        { "HostLink:Links:plc:Serial:PortName", "/dev/ttyS0", "HostLink:Links:plc:Tcp: cannot be combined with Serial:PortName" },
+        { "HostLink:Links:plc:Tcp", "", "HostLink:Links:plc: no link is set" },
         { "HostLink:Links:plc:Tcp", "gateway", "HostLink:Links:plc:Tcp: 'gateway' is not host:port" },
         { "HostLink:Links:plc:Backoff:Initial", "00:00:00", "HostLink:Links:plc:Backoff:Initial must be more than 0" },
         { "HostLink:Links:plc:Enabled", "false", "HostLink:Links: no enabled link is configured" },

@@ -2,8 +2,6 @@ using Microsoft.Extensions.Configuration;
 using Microsoft.Extensions.DependencyInjection;
 using Microsoft.Extensions.Hosting;
 using Microsoft.Extensions.Options;
-using OmronHostLink.DependencyInjection;
-using OmronHostLink.Link;
 using OmronHostLink.Transports;
 using OmronHostLink.Gateway;
 using OmronHostLink.Gateway.Configuration;
@@ -16,23 +14,21 @@ public sealed class LinkClientsTests
     [Fact]
     public void A_tcp_link_maps_its_endpoint_connect_timeout_line_speed_and_client_settings()
     {
-        var link = new LinkOptions
+        LinkOptions link = BindLink(new()
         {
-            Tcp = "127.0.0.1:9601",
-            ConnectTimeout = TimeSpan.FromSeconds(3),
-            LineBaudRate = 19200,
-            Protocol = HostLinkCommandSet.Fins,
-            TurnaroundAllowance = TimeSpan.FromMilliseconds(450),
-            ReadRetries = 4,
-            WordOrder = WordOrder.HighWordFirst,
-        };
-        var settings = new HostLinkClientSettings();
-
-        LinkClients.Map(link, settings);
+            ["Tcp"] = "127.0.0.1:9601",
+            ["Tcp:ConnectTimeout"] = "3s",
+            ["Serial:BaudRate"] = "19200",
+            ["CommandSet"] = "Fins",
+            ["TurnaroundAllowance"] = "450ms",
+            ["ReadRetries"] = "4",
+            ["WordOrder"] = "HighWordFirst",
+        });
+        HostLinkClientSettings settings = link.Client;
 
         (settings.Tcp.Host, settings.Tcp.Port, settings.Tcp.ConnectTimeout).Should().Be(("127.0.0.1", 9601, TimeSpan.FromSeconds(3)));
         settings.Serial.PortName.Should().BeNull();
-        HostLinkClientOptions options = HostLinkClientSettingsMapper.ToClientOptions(settings);
+        HostLinkClientOptions options = settings.ToClientOptions();
         options.LineTiming.Should().BeEquivalentTo(new LineTiming(19200, 11), "the line behind the server, 7E2");
         options.CommandSet.Should().Be(HostLinkCommandSet.Fins);
         options.TurnaroundAllowance.Should().Be(TimeSpan.FromMilliseconds(450));
@@ -54,11 +50,19 @@ public sealed class LinkClientsTests
             Handshake = SerialHandshake.RequestToSend,
             DtrEnable = true,
         };
-        var settings = new HostLinkClientSettings();
 
-        LinkClients.Map(new LinkOptions { Serial = serial }, settings);
+        HostLinkClientSettings settings = BindLink(new()
+        {
+            ["Serial:PortName"] = "/dev/ttyUSB1",
+            ["Serial:BaudRate"] = "38400",
+            ["Serial:DataBits"] = "8",
+            ["Serial:Parity"] = "None",
+            ["Serial:StopBits"] = "One",
+            ["Serial:Handshake"] = "RequestToSend",
+            ["Serial:DtrEnable"] = "true",
+        }).Client;
 
-        HostLinkClientSettingsMapper.ToSerialLineSettings(settings).Should().BeEquivalentTo(serial);
+        settings.Serial.ToLineSettings().Should().BeEquivalentTo(serial);
         settings.Tcp.Host.Should().BeNull();
     }
 
@@ -70,7 +74,7 @@ public sealed class LinkClientsTests
             ["HostLink:Links:press:Tcp"] = "127.0.0.1:1",
             ["HostLink:Links:press:Groups:g:Address"] = "D0",
             ["HostLink:Links:oven:Tcp"] = "127.0.0.1:2",
-            ["HostLink:Links:oven:LineBaudRate"] = "9600",
+            ["HostLink:Links:oven:Serial:BaudRate"] = "9600",
             ["HostLink:Links:oven:Groups:g:Address"] = "D0",
             ["HostLink:Links:spare:Enabled"] = "false",
         });
@@ -107,14 +111,25 @@ public sealed class LinkClientsTests
         using IHost host = Build(new()
         {
             ["HostLink:Links:press:Tcp"] = "127.0.0.1:1",
-            ["HostLink:Links:press:LineBaudRate"] = "100000",
+            ["HostLink:Links:press:Serial:BaudRate"] = "100000",
             ["HostLink:Links:press:Groups:g:Address"] = "D0",
         });
 
         Exception? error = await Record.ExceptionAsync(() => host.StartAsync());
 
         error.Should().BeOfType<OptionsValidationException>().Which.Failures.Should().ContainSingle()
-            .Which.Should().StartWith("HostLink:Links:press:LineBaudRate 100000 is not a standard rate (300, 600,");
+            .Which.Should().StartWith("HostLink:Links:press:Serial:BaudRate: 100000 is not a standard rate (300, 600,");
+    }
+
+    /// <summary>The link <c>plc</c> bound from its keys (below <c>HostLink:Links:plc</c>) and a poll group.</summary>
+    private static LinkOptions BindLink(Dictionary<string, string?> keys)
+    {
+        var configuration = new ConfigurationManager();
+        configuration.AddInMemoryCollection(keys.ToDictionary(k => "HostLink:Links:plc:" + k.Key, k => k.Value));
+        configuration.AddInMemoryCollection(new Dictionary<string, string?> { ["HostLink:Links:plc:Groups:g:Address"] = "D0" });
+        var options = new GatewayOptions();
+        LinkClients.Bind(configuration.GetSection(GatewayOptions.SectionName), options);
+        return options.Links["plc"];
     }
 
     private static IHost Build(Dictionary<string, string?> config)

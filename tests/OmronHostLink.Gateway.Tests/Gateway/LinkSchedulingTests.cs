@@ -109,10 +109,10 @@ public sealed class LinkSchedulingTests(ITestOutputHelper output) : IAsyncLifeti
     private Dictionary<string, string?> Link() => new()
     {
         ["HostLink:Links:plc:Tcp"] = $"127.0.0.1:{_simulator.Port}",
-        ["HostLink:Links:plc:LineBaudRate"] = "115200",
+        ["HostLink:Links:plc:Serial:BaudRate"] = "115200",
         ["HostLink:Links:plc:TurnaroundAllowance"] = "00:00:00.200",
         ["HostLink:Links:plc:ReadRetries"] = "1",
-        ["HostLink:Links:plc:ConnectTimeout"] = "00:00:00.500",
+        ["HostLink:Links:plc:Tcp:ConnectTimeout"] = "00:00:00.500",
     };
 
     private static void Group(Dictionary<string, string?> config, string name, string address, int count = 1, int intervalMs = 50, int unit = 0)

@@ -27,7 +27,7 @@ public sealed class SystemdServiceTests(ITestOutputHelper output)
             $"--Simulator:Port={port.ToString(CultureInfo.InvariantCulture)}",
             "--Simulator:Memory:D100=1234",
             $"--HostLink:Links:sim:Tcp=127.0.0.1:{port.ToString(CultureInfo.InvariantCulture)}",
-            "--HostLink:Links:sim:LineBaudRate=115200",
+            "--HostLink:Links:sim:Serial:BaudRate=115200",
             "--HostLink:Links:sim:Groups:level:Address=D100",
             "--HostLink:Links:sim:Groups:level:Type=int16",
             "--HostLink:Links:sim:Groups:level:Interval=00:00:00.200",

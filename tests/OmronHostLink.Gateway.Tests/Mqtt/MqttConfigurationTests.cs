@@ -75,6 +75,11 @@ public sealed class MqttConfigurationTests
         { $"Mqtt:Tls:Enabled=true;Mqtt:Tls:CaFile={NotPem}", $"Mqtt:Tls:CaFile '{NotPem}' cannot be read as PEM certificates" },
         { "Mqtt:Tls:Enabled=true;Mqtt:Tls:CaFile=/nonexistent/ca.pem;Mqtt:Tls:AllowUntrustedCertificates=true", "Mqtt:Tls: set either CaFile or AllowUntrustedCertificates, not both" },
         { "Mqtt:Tls:AllowUntrustedCertificates=true", "Mqtt:Tls:Enabled is false but AllowUntrustedCertificates is set" },
+        { "Mqtt:Writes:ReplyPrefixes:0=test", "Mqtt:Writes:ReplyPrefixes:0 'test' overlaps Mqtt:TopicPrefix 'test'" },
+        { "Mqtt:Writes:ReplyPrefixes:0=test/replies", "Mqtt:Writes:ReplyPrefixes:0 'test/replies' overlaps Mqtt:TopicPrefix 'test'" },
+        { "Mqtt:Writes:ReplyPrefixes:0=replies/+", "Mqtt:Writes:ReplyPrefixes:0 'replies/+' is not a topic prefix: a level holds '+'" },
+        { "Mqtt:Writes:ReplyPrefixes:0=replies/", "Mqtt:Writes:ReplyPrefixes:0 'replies/' is not a topic prefix: a level is empty" },
+        { "Mqtt:Writes:ReplyPrefixes:0=scada/replies", "" },
         { "HostLink:Links:plc:Groups:g:Writable=true", "" }, // a writable int16 in DM is fine
         { "HostLink:Links:plc:Groups:flag:Writable=true", "HostLink:Links:plc:Groups:flag:Writable: T5 is a timer/counter completion flag" },
         { "HostLink:Links:plc:Groups:bits:Writable=true", "HostLink:Links:plc:Groups:bits:Writable: a writable bit group must have Count 1" },
@@ -128,6 +133,27 @@ public sealed class MqttConfigurationTests
         Exception? error = await Record.ExceptionAsync(() => host.StartAsync());
 
         Messages(error!).Should().Contain(m => m.Contains("HostLink:Links:status: a link cannot be named 'status' with MQTT on", StringComparison.Ordinal));
+    }
+
+    [Fact]
+    public async Task An_unreachable_broker_is_named_once_in_plain_words()
+    {
+        Dictionary<string, string?> config = MqttGatewayConfig.Create(9, broker: null); // Mqtt:Port 1: closed on 127.0.0.1
+        MqttGatewayConfig.Group(config, "g", "D100");
+        var logs = new CapturingLoggerProvider();
+        using IHost host = MqttGatewayConfig.Build(config, logs);
+        await host.StartAsync();
+        try
+        {
+            await MqttGatewayConfig.Eventually(() => logs.WithEvent(MqttLog.Events.Unreachable).Count > 0, "the broker is reported unreachable", logs);
+        }
+        finally
+        {
+            await host.StopAsync();
+        }
+
+        logs.WithEvent(MqttLog.Events.Unreachable)[0].Message.Should().StartWith("MQTT: broker 127.0.0.1:1 not reachable (Connection refused);")
+            .And.NotContain("Unspecified");
     }
 
     private static IEnumerable<string> Messages(Exception e) => e is AggregateException a

@@ -18,10 +18,10 @@ public static class MqttGatewayConfig
     public static Dictionary<string, string?> Create(int plcPort, MosquittoBroker? broker, string clientId = "worker-test") => new()
     {
         ["HostLink:Links:plc:Tcp"] = $"127.0.0.1:{plcPort}",
-        ["HostLink:Links:plc:LineBaudRate"] = "115200",
+        ["HostLink:Links:plc:Serial:BaudRate"] = "115200",
         ["HostLink:Links:plc:TurnaroundAllowance"] = "00:00:00.200",
         ["HostLink:Links:plc:ReadRetries"] = "1",
-        ["HostLink:Links:plc:ConnectTimeout"] = "00:00:00.500",
+        ["HostLink:Links:plc:Tcp:ConnectTimeout"] = "00:00:00.500",
         ["HostLink:Links:plc:Backoff:Initial"] = "00:00:00.100",
         ["HostLink:Links:plc:Backoff:Max"] = "00:00:00.200",
         ["Mqtt:Host"] = "127.0.0.1",

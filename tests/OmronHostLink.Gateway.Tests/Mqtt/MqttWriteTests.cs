@@ -2,6 +2,7 @@ using System.Text;
 using System.Text.Json;
 using Microsoft.Extensions.Hosting;
 using OmronHostLink.Simulator;
+using OmronHostLink.Gateway;
 using OmronHostLink.Gateway.Mqtt;
 using Xunit.Abstractions;
 
@@ -151,6 +152,7 @@ public sealed class MqttWriteTests(ITestOutputHelper output) : IAsyncLifetime
     {
         Dictionary<string, string?> config = MqttGatewayConfig.Create(_simulator.Port, _broker);
         config["Mqtt:Writes:Enabled"] = writes ? "true" : "false";
+        config["Mqtt:Writes:ReplyPrefixes:0"] = "replies";
         MqttGatewayConfig.Group(config, "setpoint", "D500", "int16", intervalMs: 50, writable: true);
         MqttGatewayConfig.Group(config, "readonly", "D600", "int16", intervalMs: 50);
         MqttGatewayConfig.Group(config, "valve", "CIO10.03", "bit", intervalMs: 50, writable: true);
@@ -161,6 +163,9 @@ public sealed class MqttWriteTests(ITestOutputHelper output) : IAsyncLifetime
         {
             // Commands are taken once the worker has subscribed.
             await MqttGatewayConfig.Eventually(() => _logs.WithEvent(MqttLog.Events.WritesAccepted).Count > 0, "the worker subscribes to its command topics", _logs);
+
+            // A command that comes before the link is set up is refused ("not being polled"): wait for the link.
+            await MqttGatewayConfig.Eventually(() => _logs.WithEvent(GatewayLog.Events.LinkStarted).Count > 0, "the link polls", _logs);
         }
     }
 

@@ -31,7 +31,7 @@ public sealed class EventPipeMetricsTests(ITestOutputHelper output)
         await using GatewayProcess worker = GatewayProcess.Start(
         [
             $"--HostLink:Links:press:Tcp=127.0.0.1:{press.EndPoint.Port}",
-            "--HostLink:Links:press:LineBaudRate=9600",
+            "--HostLink:Links:press:Serial:BaudRate=9600",
             "--HostLink:Links:press:Groups:counter:Address=D0",
             "--HostLink:Links:press:Groups:counter:Interval=00:00:00.200",
             "--HostLink:Links:press:Groups:levels:Address=D100",
@@ -43,7 +43,7 @@ public sealed class EventPipeMetricsTests(ITestOutputHelper output)
             "--HostLink:Links:press:Groups:spare:Address=D0",
             "--HostLink:Links:press:Groups:spare:Interval=00:00:01",
             $"--HostLink:Links:oven:Tcp=127.0.0.1:{oven.EndPoint.Port}",
-            "--HostLink:Links:oven:LineBaudRate=115200",
+            "--HostLink:Links:oven:Serial:BaudRate=115200",
             "--HostLink:Links:oven:Groups:temperature:Address=D200",
             "--HostLink:Links:oven:Groups:temperature:Type=float",
             "--HostLink:Links:oven:Groups:temperature:Interval=00:00:00.100",

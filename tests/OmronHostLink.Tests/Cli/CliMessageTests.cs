@@ -26,7 +26,7 @@ public sealed class CliMessageTests
     [InlineData("--baud", "fast", "--baud: 'fast' is not")]
     [InlineData("--unit", "x", "--unit: 'x' is not")]
     [InlineData("--retries", "many", "--retries: 'many' is not")]
-    [InlineData("--data-bits", "6", "--data-bits: '6' is not")]
+    [InlineData("--data-bits", "6", "--data-bits: 6 is not")]
     [InlineData("--parity", "mark", "--parity: 'mark' is not")]
     public async Task A_bad_option_value_is_named_in_the_users_words(string option, string value, string expected)
     {

@@ -55,7 +55,7 @@ public sealed class CliModelTests
         beyond.Err.Should().Contain("D2048 is beyond the DM area of a CP1E E-type (D0–D2047)");
         last.ExitCode.Should().Be(0, last.ToString());
         unknown.ExitCode.Should().Be(2, unknown.ToString());
-        unknown.Err.Should().Contain("--model 'CPM9' is not a known PLC model");
+        unknown.Err.Should().Contain("--model: 'CPM9' is not a known PLC model");
     }
 
     [Fact]

@@ -42,7 +42,7 @@ public sealed class HostLinkClientRegistrationTests
                   "oven": {
                     "Serial": { "PortName": "{{pty.PathA}}", "BaudRate": 115200 },
                     "UnitNumber": 3,
-                    "Protocol": "Fins",
+                    "CommandSet": "Fins",
                     "WordOrder": "HighWordFirst",
                     "TurnaroundAllowance": "00:00:00.500"
                   }
@@ -113,7 +113,7 @@ public sealed class HostLinkClientRegistrationTests
             {
                 o.Tcp.Host = "127.0.0.1";
                 o.Tcp.Port = sim.Port;
-                o.Protocol = HostLinkCommandSet.Fins;
+                o.CommandSet = HostLinkCommandSet.Fins;
             });
         });
         await host.Host.StartAsync();

@@ -29,7 +29,7 @@ public sealed class HostLinkConfigurationValidationTests
             "Serial": { "BaudRate": 12345, "DataBits": 6 },
             "UnitNumber": 40,
             "ReadRetries": -1,
-            "Protocol": "Finz",
+            "CommandSet": "Finz",
             "TurnaroundAllowance": "abc",
             "LocalEcho": "yes",
             "FinsResponseWait": 16
@@ -42,7 +42,7 @@ public sealed class HostLinkConfigurationValidationTests
             $"{Line1}:Serial:DataBits: 6 is not 7 or 8",
             $"{Line1}:UnitNumber: 40 is not a unit number (0-31)",
             $"{Line1}:ReadRetries: -1 is not 0-10",
-            $"{Line1}:Protocol: 'Finz' is not one of CMode, Fins",
+            $"{Line1}:CommandSet: 'Finz' is not one of CMode, Fins",
             $"{Line1}:TurnaroundAllowance: 'abc' is not a duration; write 300ms, 1.5s, 2m or 00:00:00.300",
             $"{Line1}:LocalEcho: 'yes' is not true or false",
             $"{Line1}:FinsResponseWait: 16 is not 0-15 (units of 10 ms)");
@@ -63,9 +63,9 @@ public sealed class HostLinkConfigurationValidationTests
     public async Task A_misspelt_protocol_is_an_error_naming_the_key_not_a_dropped_link()
     {
         IReadOnlyList<string> failures = await JsonHost.StartFailuresAsync(
-            OneClient("""  "Tcp": "127.0.0.1:9", "Protocol": "Finz" """), AllClients);
+            OneClient("""  "Tcp": "127.0.0.1:9", "CommandSet": "Finz" """), AllClients);
 
-        failures.Should().Equal($"{Line1}:Protocol: 'Finz' is not one of CMode, Fins");
+        failures.Should().Equal($"{Line1}:CommandSet: 'Finz' is not one of CMode, Fins");
     }
 
     [Fact]
@@ -86,7 +86,7 @@ public sealed class HostLinkConfigurationValidationTests
             $"{Line1}:TurnaroundAlowance: not a Host Link client setting; did you mean TurnaroundAllowance?",
             $"{Line1}:BaudRate: not a Host Link client setting; did you mean Serial:BaudRate?",
             $"{Line1}:Unit: not a Host Link client setting; did you mean UnitNumber?",
-            $"{Line1}:Colour: not a Host Link client setting (known: Serial, Tcp, UnitNumber, Protocol, TurnaroundAllowance, ReadRetries, WriteRetries, WordOrder, LocalEcho, FinsResponseWait, AllowReadModifyWriteBits, Model)");
+            $"{Line1}:Colour: not a Host Link client setting (known: Serial, Tcp, UnitNumber, CommandSet, TurnaroundAllowance, ReadRetries, WriteRetries, WordOrder, LocalEcho, FinsResponseWait, AllowReadModifyWriteBits, Model)");
     }
 
     [Theory]
@@ -183,7 +183,7 @@ public sealed class HostLinkConfigurationValidationTests
             {
               "HostLink": {
                 "Clients": {
-                  "line1": { "Tcp": "127.0.0.1:9", "Protocol": "Finz" },
+                  "line1": { "Tcp": "127.0.0.1:9", "CommandSet": "Finz" },
                   "line2": { "Serial": { "PortName": "COM3", "DataBits": 9 } }
                 }
               }
@@ -193,7 +193,7 @@ public sealed class HostLinkConfigurationValidationTests
         IReadOnlyList<string> failures = await JsonHost.StartFailuresAsync(json, AllClients);
 
         failures.Should().BeEquivalentTo(
-            $"{Line1}:Protocol: 'Finz' is not one of CMode, Fins",
+            $"{Line1}:CommandSet: 'Finz' is not one of CMode, Fins",
             "HostLink:Clients:line2:Serial:DataBits: 9 is not 7 or 8");
     }
 
@@ -250,7 +250,7 @@ public sealed class HostLinkConfigurationValidationTests
         await using JsonHost host = JsonHost.Build(
             OneClient("""
                 "serial": { "portname": "/dev/ttyUSB0", "parity": "odd", "stopBits": "1", "dataBits": 8, "handshake": "xonxoff", "dtrEnable": "True" },
-                "protocol": "fins", "wordOrder": "highwordfirst", "allowReadModifyWriteBits": true, "writeRetries": 1
+                "commandSet": "fins", "wordOrder": "highwordfirst", "allowReadModifyWriteBits": true, "writeRetries": 1
                 """),
             AllClients);
         await host.Host.StartAsync();
@@ -262,7 +262,7 @@ public sealed class HostLinkConfigurationValidationTests
         s.Serial.DataBits.Should().Be(8);
         s.Serial.Handshake.Should().Be(SerialHandshake.XOnXOff);
         s.Serial.DtrEnable.Should().BeTrue();
-        s.Protocol.Should().Be(HostLinkCommandSet.Fins);
+        s.CommandSet.Should().Be(HostLinkCommandSet.Fins);
         s.WordOrder.Should().Be(WordOrder.HighWordFirst);
         s.AllowReadModifyWriteBits.Should().BeTrue();
         s.WriteRetries.Should().Be(1);

@@ -115,7 +115,7 @@ public sealed class SerialLineSettingsTests
         var settings = Valid();
         settings.DataBits = dataBits;
         settings.Invoking(s => s.Validate()).Should().Throw<ArgumentException>()
-            .Where(e => e.ParamName == "DataBits").WithMessage($"*DataBits must be 7 or 8; it was {dataBits}*");
+            .Where(e => e.ParamName == "DataBits").WithMessage($"*DataBits {dataBits} is not 7 or 8*");
     }
 
     [Fact]

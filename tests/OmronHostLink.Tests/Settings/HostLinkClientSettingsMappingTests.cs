@@ -1,10 +1,9 @@
-using OmronHostLink.DependencyInjection;
 using OmronHostLink.Transports;
 
-namespace OmronHostLink.Tests.DependencyInjection;
+namespace OmronHostLink.Tests.Settings;
 
 /// <summary>Every setting reaches the library's option types; unset ones keep the library's defaults.</summary>
-public sealed class HostLinkClientSettingsMapperTests
+public sealed class HostLinkClientSettingsMappingTests
 {
     [Fact]
     public void Every_setting_reaches_the_library()
@@ -23,7 +22,7 @@ public sealed class HostLinkClientSettingsMapperTests
                 RtsEnable = true,
             },
             UnitNumber = 7,
-            Protocol = HostLinkCommandSet.Fins,
+            CommandSet = HostLinkCommandSet.Fins,
             TurnaroundAllowance = TimeSpan.FromMilliseconds(750),
             ReadRetries = 5,
             WriteRetries = 1,
@@ -34,7 +33,7 @@ public sealed class HostLinkClientSettingsMapperTests
             Model = "CPM1A",
         };
 
-        HostLinkClientOptions options = HostLinkClientSettingsMapper.ToClientOptions(settings);
+        HostLinkClientOptions options = settings.ToClientOptions();
         options.Model.Should().Be("CPM1A");
         options.UnitNumber.Should().Be(7);
         options.CommandSet.Should().Be(HostLinkCommandSet.Fins);
@@ -48,7 +47,7 @@ public sealed class HostLinkClientSettingsMapperTests
         options.LineTiming.BaudRate.Should().Be(19200);
         options.LineTiming.BitsPerCharacter.Should().Be(11, "8O1 is 1 start + 8 data + 1 parity + 1 stop bit");
 
-        SerialLineSettings line = HostLinkClientSettingsMapper.ToSerialLineSettings(settings);
+        SerialLineSettings line = settings.Serial.ToLineSettings();
         line.PortName.Should().Be("/dev/ttyS4");
         line.BaudRate.Should().Be(19200);
         line.DataBits.Should().Be(8);
@@ -66,8 +65,8 @@ public sealed class HostLinkClientSettingsMapperTests
         settings.Tcp.Host = "127.0.0.1";
         settings.Tcp.Port = 9;
 
-        HostLinkClientSettingsMapper.ToClientOptions(settings).Should().BeEquivalentTo(new HostLinkClientOptions(), o => o.Excluding(x => x.LineTiming));
-        HostLinkClientSettingsMapper.ToClientOptions(settings).LineTiming.Should().BeEquivalentTo(OmronHostLink.Transports.LineTiming.Default);
-        HostLinkClientSettingsMapper.ToSerialLineSettings(settings).Should().BeEquivalentTo(new SerialLineSettings());
+        settings.ToClientOptions().Should().BeEquivalentTo(new HostLinkClientOptions(), o => o.Excluding(x => x.LineTiming));
+        settings.ToClientOptions().LineTiming.Should().BeEquivalentTo(OmronHostLink.Transports.LineTiming.Default);
+        settings.Serial.ToLineSettings().Should().BeEquivalentTo(new SerialLineSettings());
     }
 }
