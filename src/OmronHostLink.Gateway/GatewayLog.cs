@@ -46,6 +46,9 @@ public static partial class GatewayLog
 
         /// <summary>The in-process simulator stopped.</summary>
         public const int SimulatorStopped = 1021;
+
+        /// <summary>The in-process simulator's port is taken: the gateway stops with exit code 2.</summary>
+        public const int SimulatorPortInUse = 1022;
     }
 
     [LoggerMessage(EventId = Events.Values, Level = LogLevel.Information, Message = "{Link}/{Group}: unit {Unit} {Address} = {Values}")]
@@ -86,4 +89,7 @@ public static partial class GatewayLog
 
     [LoggerMessage(EventId = Events.SimulatorStopped, Level = LogLevel.Information, Message = "Simulator: stopped ({Faults})")]
     internal static partial void SimulatorStopped(ILogger logger, string faults);
+
+    [LoggerMessage(EventId = Events.SimulatorPortInUse, Level = LogLevel.Critical, Message = "Simulator:Port {Port} on 127.0.0.1 is in use by another program (a second gateway?); choose another port or stop that program. Stopping.")]
+    internal static partial void SimulatorPortInUse(ILogger logger, int port);
 }

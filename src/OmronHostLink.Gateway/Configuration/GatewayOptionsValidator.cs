@@ -64,6 +64,12 @@ public sealed class GatewayOptionsValidator : IValidateOptions<GatewayOptions>
         // The client's keys: the library's one validation, as the DI package reports it.
         failures.AddRange(link.Client.Validate().Select(p => p.Key.Length == 0 ? $"{path}: {p.Message}." : $"{path}:{p.Key}: {p.Message}."));
 
+        // A URL or a dotted number that is no IPv4 address would be looked up as a host name, and retried for ever.
+        if (link.Client.Tcp.Host is { Length: > 0 } host && HostSyntax.Problem(host.Trim()) is { } problem)
+        {
+            failures.Add($"{path}:Tcp '{host}' does not name a host: {problem}.");
+        }
+
         if (link.Backoff is null)
         {
             failures.Add($"{path}:Backoff is missing.");

@@ -29,7 +29,7 @@ public sealed class MqttOptionsValidator : IValidateOptions<MqttOptions>
         }
 
         const string root = MqttOptions.SectionName;
-        var failures = new List<string>();
+        var failures = new List<string>(ConfigurationSchema.Check(_configuration.GetSection(root), typeof(MqttOptions)));
         if (string.IsNullOrWhiteSpace(options.Host))
         {
             failures.Add($"{root}:Host is empty; set the broker's host name or address (e.g. 127.0.0.1 or broker.plant.local).");
@@ -37,6 +37,10 @@ public sealed class MqttOptionsValidator : IValidateOptions<MqttOptions>
         else if (options.Host.Any(char.IsWhiteSpace) || options.Host.Contains('/', StringComparison.Ordinal) || options.Host.Count(c => c == ':') == 1)
         {
             failures.Add($"{root}:Host '{options.Host}' is not a host name or address (no scheme, no port: the port is {root}:Port).");
+        }
+        else if (HostSyntax.Problem(options.Host) is { } hostProblem)
+        {
+            failures.Add($"{root}:Host '{options.Host}' is not a host name or address: {hostProblem}.");
         }
 
         if (options.Port is { } port && port is < 1 or > 65535)
@@ -65,9 +69,14 @@ public sealed class MqttOptionsValidator : IValidateOptions<MqttOptions>
             failures.Add($"{root}:QueueCapacity must be 1-10000000; it is {options.QueueCapacity}.");
         }
 
-        if (options.KeepAlive < TimeSpan.Zero || options.KeepAlive > TimeSpan.FromSeconds(ushort.MaxValue))
+        if (options.KeepAlive < TimeSpan.FromSeconds(1) || options.KeepAlive > TimeSpan.FromSeconds(ushort.MaxValue))
         {
-            failures.Add($"{root}:KeepAlive must be 0 (off) to 18:12:15; it is {options.KeepAlive}.");
+            // 0 would turn MQTT keep-alive off: a broker that vanished without closing the connection would go unnoticed.
+            failures.Add($"{root}:KeepAlive must be 1s to 18:12:15 (whole seconds); it is {options.KeepAlive}.");
+        }
+        else if (options.KeepAlive.Ticks % TimeSpan.TicksPerSecond != 0)
+        {
+            failures.Add($"{root}:KeepAlive is sent in whole seconds; {options.KeepAlive} is not.");
         }
 
         if (options.Timeout <= TimeSpan.Zero)

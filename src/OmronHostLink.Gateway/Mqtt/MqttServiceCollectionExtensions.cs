@@ -26,7 +26,7 @@ public static class MqttServiceCollectionExtensions
             return services;
         }
 
-        services.AddOptions<MqttOptions>().Bind(section).ValidateOnStart();
+        services.AddOptions<MqttOptions>().Configure(o => ConfigurationSchema.Bind(section, o)).ValidateOnStart();
         services.AddSingleton<IValidateOptions<MqttOptions>>(new MqttOptionsValidator(configuration));
         services.AddOutputServices();
         services.AddSingleton(sp =>

@@ -1,4 +1,5 @@
 using System.Net;
+using System.Net.Sockets;
 using Microsoft.Extensions.Hosting;
 using Microsoft.Extensions.Logging;
 using Microsoft.Extensions.Options;
@@ -15,15 +16,17 @@ public sealed class SimulatorHostedService : IHostedService, IAsyncDisposable
 {
     private readonly IOptions<SimulatorOptions> _options;
     private readonly ILogger _logger;
+    private readonly IHostApplicationLifetime _lifetime;
     private TcpSimulatorHost? _host;
     private CancellationTokenSource? _animation;
     private Task? _animating;
 
     /// <summary>Creates the service.</summary>
-    public SimulatorHostedService(IOptions<SimulatorOptions> options, ILogger<SimulatorHostedService> logger)
+    public SimulatorHostedService(IOptions<SimulatorOptions> options, ILogger<SimulatorHostedService> logger, IHostApplicationLifetime lifetime)
     {
         _options = options;
         _logger = logger;
+        _lifetime = lifetime;
     }
 
     /// <summary>The virtual PLC, once started.</summary>
@@ -60,7 +63,20 @@ public sealed class SimulatorHostedService : IHostedService, IAsyncDisposable
         }
 
         var host = new TcpSimulatorHost(plc, new IPEndPoint(IPAddress.Loopback, o.Port));
-        await host.StartAsync(cancellationToken).ConfigureAwait(false);
+        try
+        {
+            await host.StartAsync(cancellationToken).ConfigureAwait(false);
+        }
+        catch (SocketException e) when (e.SocketErrorCode == SocketError.AddressAlreadyInUse)
+        {
+            // One line, not the host's failure with two stack traces: another program (often a second gateway) has it.
+            await host.DisposeAsync().ConfigureAwait(false);
+            GatewayLog.SimulatorPortInUse(_logger, o.Port);
+            Environment.ExitCode = GatewayProgram.InvalidConfiguration;
+            _lifetime.StopApplication();
+            return;
+        }
+
         _host = host;
         Plc = plc;
         string faults = plc.Options.Faults.Any ? $" with faults (seed {plc.Options.Faults.Seed})" : "";

@@ -53,6 +53,13 @@ public static class TelemetryExport
         return services;
     }
 
+    /// <summary>The keys of the <c>OpenTelemetry</c> section, for the configuration check.</summary>
+    public sealed class Settings
+    {
+        /// <summary><c>None</c> (default), <c>Console</c> or <c>Otlp</c>.</summary>
+        public string? Exporter { get; set; }
+    }
+
     /// <summary>Carries the start-up failure of an unknown exporter name.</summary>
     private sealed class ExporterChoice
     {

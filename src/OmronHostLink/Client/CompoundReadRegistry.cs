@@ -21,6 +21,10 @@ internal sealed class CompoundReadRegistry
             && r.Openings == openings
             && r.Items.AsSpan().SequenceEqual(items is CompoundItem[] a ? a : items.ToArray());
 
+    /// <summary>Whether <paramref name="unit"/> holds another tag set's registration on the link as it is now open (contention).</summary>
+    public bool HoldsOther(int unit, IReadOnlyList<CompoundItem> items, long openings)
+        => _registered.TryGetValue(unit, out (CompoundItem[] Items, long Openings) r) && r.Openings == openings && !Holds(unit, items, openings);
+
     /// <summary>Records that <paramref name="unit"/> now holds <paramref name="items"/>.</summary>
     public void Registered(int unit, IReadOnlyList<CompoundItem> items, long openings) => _registered[unit] = (items.ToArray(), openings);
 

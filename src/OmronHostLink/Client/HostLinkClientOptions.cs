@@ -46,11 +46,13 @@ public sealed class HostLinkClientOptions
 
     /// <summary>
     /// Whether C-mode planned reads (<c>ReadTagsAsync</c>, <c>WatchAsync</c>) may use QQ, the compound read (QQMR
-    /// registration, then one QQIR a cycle), where it costs fewer characters than area reads. Default true. Turn it off
-    /// for PLCs without QQ: the CP2E (W614 lists no QQ), and others whose model profile says so
-    /// (<c>PlcModelProfile.SupportsCompoundRead</c>); such a PLC answers QQ with IC.
+    /// registration once, then one QQIR a cycle), where it costs fewer characters than area reads: 100 scattered tags
+    /// at 9600 bps read several times faster. Default false (the plans of earlier versions); turn it on for PLCs with QQ
+    /// (CS/CJ, CP1, C200H/HS/HX, CQM1/CQM1H, CPM1/CPM2, SRM1: W342 p168, C200HS p428, CQM1H p470, CPM1 p302). Leave it off
+    /// for the CP2E (W614 lists no QQ) and any model whose profile says so (<c>PlcModelProfile.SupportsCompoundRead</c>);
+    /// a unit whose model profile lacks QQ is read by area even when it is on.
     /// </summary>
-    public bool UseCompoundRead { get; set; } = true;
+    public bool UseCompoundRead { get; set; }
 
     /// <summary>
     /// The line echoes what we send before the PLC answers (2-wire RS-485 adapters without echo suppression): expect and

@@ -1,5 +1,6 @@
 using OmronHostLink.Planning;
 using OmronHostLink.Protocol;
+using OmronHostLink.Protocol.CMode;
 using OmronHostLink.Protocol.Fins;
 
 namespace OmronHostLink;
@@ -64,7 +65,7 @@ public partial class HostLinkUnit
     }
 
     /// <summary>The plan this view's reads of <paramref name="tags"/> use: its command set and line, tags without a unit from this unit.</summary>
-    private ReadPlan Plan(IReadOnlyList<PlcTag> tags) => new ReadPlanner(Options.CommandSet, LineTiming).Plan(tags, UnitNumber);
+    private ReadPlan Plan(IReadOnlyList<PlcTag> tags) => new ReadPlanner(Options.CommandSet, LineTiming) { UseCompoundRead = Options.UseCompoundRead }.Plan(tags, UnitNumber);
 
     private ValueTask<ushort[]> ExecuteAsync(PlannedRead read, CancellationToken cancellationToken)
     {
@@ -78,6 +79,8 @@ public partial class HostLinkUnit
         {
             case PlannedReadKind.FinsMultiple:
                 return ReadScatteredWordsAsync(read.Items, cancellationToken);
+            case PlannedReadKind.CModeCompound:
+                return ReadCompoundWordsAsync(read, model, cancellationToken);
             case PlannedReadKind.CModeCompletionFlags:
                 return FlagWordsAsync(CModeReadCompletionFlagsAsync(read.Start, read.Count, cancellationToken, model));
             case PlannedReadKind.FinsCompletionFlags:
@@ -100,6 +103,16 @@ public partial class HostLinkUnit
             return;
         }
 
+        if (read.Kind == PlannedReadKind.CModeCompound)
+        {
+            foreach (PlcAddress item in read.Items)
+            {
+                EnsureModel(model, item, 1, HostLinkCommandSet.CMode, forWrite: false);
+            }
+
+            return;
+        }
+
         if (read.Kind == PlannedReadKind.FinsMultiple)
         {
             model.EnsureFins();
@@ -119,6 +132,46 @@ public partial class HostLinkUnit
     {
         await GetModelProfileAsync(cancellationToken).ConfigureAwait(false);
         return await ExecuteAsync(read, cancellationToken).ConfigureAwait(false);
+    }
+
+    /// <summary>
+    /// A planned compound read: QQIR, registering first when the unit holds nothing (the first cycle, a reopened link,
+    /// a restarted PLC). When another tag set holds the unit's registration, this cycle takes its turn only if the
+    /// registration and QQIR cost no more characters than the area reads they replace, and reads those otherwise. A
+    /// model without QQ always reads by area.
+    /// </summary>
+    private async ValueTask<ushort[]> ReadCompoundWordsAsync(PlannedRead read, PlcModelProfile? model, CancellationToken cancellationToken)
+    {
+        var items = new CompoundItem[read.Items.Count];
+        for (int i = 0; i < items.Length; i++)
+        {
+            items[i] = CompoundItem.For(read.Items[i]);
+        }
+
+        int fallbackCost = read.Fallback.Sum(r => r.Characters);
+        bool contended = CompoundReads.HoldsOther(UnitNumber, items, Connection.Openings);
+        if (model?.SupportsCompoundRead != false && (!contended || read.RegistrationCharacters + read.Characters <= fallbackCost))
+        {
+            return await ReadCompoundItemsAsync(items, cancellationToken).ConfigureAwait(false);
+        }
+
+        var words = new Dictionary<PlcAddress, ushort>();
+        foreach (PlannedRead area in read.Fallback)
+        {
+            ushort[] values = await ExecuteAsync(area, cancellationToken).ConfigureAwait(false);
+            for (int i = 0; i < values.Length; i++)
+            {
+                words[area.WordAt(i)] = values[i];
+            }
+        }
+
+        var result = new ushort[items.Length];
+        for (int i = 0; i < result.Length; i++)
+        {
+            result[i] = words[read.Items[i]];
+        }
+
+        return result;
     }
 
     private static async ValueTask<ushort[]> FlagWordsAsync(ValueTask<bool[]> reading)

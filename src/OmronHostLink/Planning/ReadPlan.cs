@@ -17,13 +17,22 @@ public enum PlannedReadKind
 
     /// <summary>One FINS 0101 read of timer/counter completion flags (bit access); each flag is returned as a word 0 or 1.</summary>
     FinsCompletionFlags,
+
+    /// <summary>
+    /// One C-mode QQIR of scattered words registered with QQMR (QQ, the compound read): at most 128 words of one unit,
+    /// one snapshot. The registration is sent when the unit does not hold it; a cycle whose registration would cost
+    /// more than the area reads it replaces reads those instead.
+    /// </summary>
+    CModeCompound,
 }
 
 /// <summary>One transaction of a <see cref="ReadPlan"/>.</summary>
 public sealed class PlannedRead
 {
-    internal PlannedRead(PlannedReadKind kind, int unit, PlcAddress start, int count, IReadOnlyList<PlcAddress> items, int characters, int exchanges)
+    internal PlannedRead(PlannedReadKind kind, int unit, PlcAddress start, int count, IReadOnlyList<PlcAddress> items, int characters, int exchanges, IReadOnlyList<PlannedRead>? fallback = null, int registrationCharacters = 0)
     {
+        Fallback = fallback ?? Array.Empty<PlannedRead>();
+        RegistrationCharacters = registrationCharacters;
         Kind = kind;
         Unit = unit;
         Start = start;
@@ -48,7 +57,7 @@ public sealed class PlannedRead
     /// <summary>Whether the read returns timer/counter completion flags (as words 0 or 1) rather than words.</summary>
     public bool IsCompletionFlags => Kind is PlannedReadKind.CModeCompletionFlags or PlannedReadKind.FinsCompletionFlags;
 
-    /// <summary>The words of a <see cref="PlannedReadKind.FinsMultiple"/> read, in order; empty for area reads.</summary>
+    /// <summary>The words of a <see cref="PlannedReadKind.FinsMultiple"/> or <see cref="PlannedReadKind.CModeCompound"/> read, in order; empty for area reads.</summary>
     public IReadOnlyList<PlcAddress> Items { get; }
 
     /// <summary>Characters on the line both ways (command, answer frames, CR delimiters).</summary>
@@ -58,12 +67,19 @@ public sealed class PlannedRead
     public int Exchanges { get; }
 
     /// <summary>The address of the <paramref name="index"/>-th word this read returns.</summary>
-    public PlcAddress WordAt(int index) => Kind == PlannedReadKind.FinsMultiple ? Items[index] : Start.Offset(index);
+    public PlcAddress WordAt(int index) => Kind is PlannedReadKind.FinsMultiple or PlannedReadKind.CModeCompound ? Items[index] : Start.Offset(index);
+
+    /// <summary>A compound read's area reads of the same words, for a cycle that would otherwise pay the registration.</summary>
+    internal IReadOnlyList<PlannedRead> Fallback { get; }
+
+    /// <summary>Characters of a compound read's QQMR registration (both ways), paid when the unit does not hold it.</summary>
+    internal int RegistrationCharacters { get; }
 
     /// <inheritdoc/>
     public override string ToString() => Kind switch
     {
         PlannedReadKind.FinsMultiple => $"unit {Unit:D2} 0104 × {Count}",
+        PlannedReadKind.CModeCompound => $"unit {Unit:D2} C-mode QQIR × {Count}",
         PlannedReadKind.CModeCompletionFlags => $"unit {Unit:D2} C-mode RG {Start} × {Count} flags",
         PlannedReadKind.FinsCompletionFlags => $"unit {Unit:D2} 0101 {Start} × {Count} flags",
         _ => $"unit {Unit:D2} {(Kind == PlannedReadKind.CModeArea ? "C-mode" : "0101")} {Start} × {Count}",

@@ -70,6 +70,13 @@ public sealed class ReadPlanner
     /// <summary>Whether FINS plans may use 0104.</summary>
     public bool UseMultipleRead { get; }
 
+    /// <summary>
+    /// Whether C-mode plans may use QQ, the compound read: per unit, up to 128 scattered words (CIO, LR, HR, AR, DM, EM;
+    /// timers, counters and completion flags keep their area reads) read with one QQIR where that costs fewer characters
+    /// than their area reads. Default true; false for PLCs without QQ (see <c>HostLinkClientOptions.UseCompoundRead</c>).
+    /// </summary>
+    public bool UseCompoundRead { get; init; } = true;
+
     /// <summary>Plans the reads of <paramref name="tags"/>.</summary>
     /// <param name="tags">The tags; duplicates and overlaps are read once.</param>
     /// <param name="defaultUnit">The unit of tags that carry none.</param>
@@ -120,6 +127,11 @@ public sealed class ReadPlanner
             PlanFlags(space.Key.Unit, space.Key.Area, Clusters(space.Value), reads);
         }
 
+        if (CommandSet == HostLinkCommandSet.CMode && UseCompoundRead)
+        {
+            PlanCompound(spaces, reads);
+        }
+
         foreach (KeyValuePair<int, List<PlcAddress>> unitItems in multiple)
         {
             List<PlcAddress> items = unitItems.Value;
@@ -142,6 +154,26 @@ public sealed class ReadPlanner
         return command + FrameWriter.WireLength(message, CModeResponseFixed, 4) + (exchanges - 1);
     }
 
+    /// <summary>Characters (both ways) of one QQIR of <paramref name="words"/> registered words, and its frame exchanges.</summary>
+    public static int CompoundReadCharacters(int words, out int exchanges)
+    {
+        int command = CModeCommand.PrefixLength + 2 + FrameWriter.FinalOverhead;
+        int message = CModeResponse.PrefixLength + CompoundCommands.AnswerFixed + (words * 5) - 1;
+        int fixedLength = CModeResponse.PrefixLength + CompoundCommands.AnswerFixed;
+        exchanges = FrameWriter.CountFrames(message, fixedLength, 1);
+        return command + FrameWriter.WireLength(message, fixedLength, 1) + (exchanges - 1);
+    }
+
+    /// <summary>Characters (both ways) of the QQMR registering <paramref name="words"/> words, and its frame exchanges.</summary>
+    internal static int CompoundRegisterCharacters(int words, out int exchanges)
+    {
+        int message = CModeCommand.PrefixLength + 2 + (words * (CompoundItem.Length + 1)) - 1;
+        int fixedLength = CModeCommand.PrefixLength + 2 + CompoundItem.Length;
+        exchanges = FrameWriter.CountFrames(message, fixedLength, CompoundItem.Length + 1);
+        int answer = CModeResponse.PrefixLength + CompoundCommands.AnswerFixed + FrameWriter.FinalOverhead;
+        return FrameWriter.WireLength(message, fixedLength, CompoundItem.Length + 1) + (exchanges - 1) + answer;
+    }
+
     /// <summary>Characters (both ways) of one C-mode RG read of <paramref name="flags"/> completion flags, and its frame exchanges.</summary>
     internal static int CModeFlagCharacters(int flags, out int exchanges)
     {
@@ -161,6 +193,80 @@ public sealed class ReadPlanner
     /// <summary>Characters (both ways) of one FINS 0104 read of <paramref name="items"/> words.</summary>
     public static int MultipleChars(int items)
         => FinsCommandFixed + FinsResponseFixed + (items * (FinsItemCommandChars + FinsItemResponseChars));
+
+    /// <summary>
+    /// Per unit, whether one QQIR of some of its words (the dearest to read by area, up to 128) plus area reads of the
+    /// rest costs fewer characters a cycle than the area reads alone; if so the unit's area reads of those areas are
+    /// replaced. The registration is not counted here: it is paid once, not per cycle.
+    /// </summary>
+    private void PlanCompound(SortedDictionary<(int Unit, PlcArea Area, int Bank), List<(int Start, int End)>> spaces, List<PlannedRead> reads)
+    {
+        foreach (int unit in spaces.Keys.Select(k => k.Unit).Distinct().ToArray())
+        {
+            var eligible = spaces.Where(s => s.Key.Unit == unit && s.Key.Area is not (PlcArea.Timer or PlcArea.Counter)).ToArray();
+            if (eligible.Length == 0)
+            {
+                continue;
+            }
+
+            List<PlannedRead> current = reads.Where(r => r.Kind == PlannedReadKind.CModeArea && r.Unit == unit && r.Start.Area is not (PlcArea.Timer or PlcArea.Counter)).ToList();
+            double currentCost = current.Sum(r => r.Characters + (r.Exchanges * _turnaroundChars));
+
+            // The clusters dearest per word when read alone go to QQ first.
+            var clusters = eligible
+                .SelectMany(s => Clusters(s.Value).Select(c => (s.Key.Area, s.Key.Bank, c.Start, c.End)))
+                .OrderByDescending(c => RangeCost(c.Area, c.End - c.Start) / (c.End - c.Start))
+                .ThenBy(c => c.Area).ThenBy(c => c.Start)
+                .ToList();
+            var words = new List<PlcAddress>();
+            var rest = new Dictionary<(PlcArea Area, int Bank), List<(int Start, int End)>>();
+            foreach ((PlcArea area, int bank, int start, int end) in clusters)
+            {
+                if (words.Count + (end - start) <= CompoundItem.MaxWeight)
+                {
+                    for (int w = start; w < end; w++)
+                    {
+                        words.Add(PlcAddress.WordOf(area, w, bank));
+                    }
+                }
+                else
+                {
+                    if (!rest.TryGetValue((area, bank), out List<(int, int)>? list))
+                    {
+                        rest[(area, bank)] = list = new List<(int, int)>();
+                    }
+
+                    list.Add((start, end));
+                }
+            }
+
+            var restReads = new List<PlannedRead>();
+            foreach (KeyValuePair<(PlcArea Area, int Bank), List<(int Start, int End)>> space in rest)
+            {
+                PlanSpace(unit, space.Key.Area, space.Key.Bank, Clusters(space.Value), restReads, new SortedDictionary<int, List<PlcAddress>>());
+            }
+
+            int chars = CompoundReadCharacters(words.Count, out int exchanges);
+            double compoundCost = chars + (exchanges * _turnaroundChars) + restReads.Sum(r => r.Characters + (r.Exchanges * _turnaroundChars));
+            if (words.Count == 0 || compoundCost >= currentCost)
+            {
+                continue;
+            }
+
+            // Area reads of the same words, for a cycle that would have to pay the registration.
+            var fallback = new List<PlannedRead>();
+            foreach (IGrouping<(PlcArea Area, int Bank), PlcAddress> space in words.GroupBy(w => (w.Area, w.Bank)))
+            {
+                var spans = space.Select(w => (w.Word, w.Word + 1)).ToList();
+                PlanSpace(unit, space.Key.Area, space.Key.Bank, Clusters(spans), fallback, new SortedDictionary<int, List<PlcAddress>>());
+            }
+
+            int at = reads.IndexOf(current[0]);
+            reads.RemoveAll(current.Contains);
+            var compound = new PlannedRead(PlannedReadKind.CModeCompound, unit, words[0], words.Count, words.ToArray(), chars, exchanges, fallback, CompoundRegisterCharacters(words.Count, out _));
+            reads.InsertRange(Math.Min(at, reads.Count), restReads.Prepend(compound));
+        }
+    }
 
     private static List<(int Start, int End)> Clusters(List<(int Start, int End)> spans)
     {

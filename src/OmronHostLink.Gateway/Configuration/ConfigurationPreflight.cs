@@ -1,0 +1,157 @@
+using System.Text.Json;
+using Microsoft.Extensions.Configuration;
+using Microsoft.Extensions.Configuration.Json;
+using Microsoft.Extensions.Logging;
+using OmronHostLink.Gateway.Mqtt;
+using OmronHostLink.Gateway.Simulation;
+using OmronHostLink.Gateway.Telemetry;
+
+namespace OmronHostLink.Gateway.Configuration;
+
+/// <summary>
+/// The checks that no options validator can make, run before the host is built: a configuration file that cannot be
+/// read (a JSON syntax error, a key given twice, also in another case), a misspelt or unknown section, a log level
+/// that does not exist. Each problem names its file and line, or its key.
+/// </summary>
+public static class ConfigurationPreflight
+{
+    /// <summary>The sections the gateway reads, besides the generic host's own.</summary>
+    public static readonly string[] Sections =
+    [
+        GatewayOptions.SectionName, SimulatorOptions.SectionName, MqttOptions.SectionName, TelemetryExport.SectionName, "Logging",
+    ];
+
+    /// <summary>Keys the generic host reads at the top level of the configuration files.</summary>
+    private static readonly string[] HostKeys = ["AllowedHosts", "urls", "environment", "applicationName", "contentRoot", "Kestrel"];
+
+    /// <summary>What is wrong with a configuration that could not be loaded, in one line; null if the exception is no such problem.</summary>
+    public static string? LoadProblem(Exception e)
+    {
+        ArgumentNullException.ThrowIfNull(e);
+        if (e is not InvalidDataException { InnerException: { } inner } || !e.Message.StartsWith("Failed to load configuration", StringComparison.Ordinal))
+        {
+            return null;
+        }
+
+        string file = e.Message.Split('\'') is { Length: >= 3 } parts ? Path.GetFileName(parts[1]) : "a configuration file";
+        for (Exception? x = inner; x is not null; x = x.InnerException)
+        {
+            if (x is JsonException)
+            {
+                inner = x;
+                break;
+            }
+        }
+
+        return inner switch
+        {
+            JsonException { LineNumber: { } line, BytePositionInLine: { } column } json
+                => $"{file}, line {line + 1}, column {column + 1}: {StripPosition(json.Message)}",
+            FormatException duplicate when duplicate.Message.Contains("duplicate key", StringComparison.OrdinalIgnoreCase)
+                => $"{file}: {duplicate.Message.TrimEnd('.')} (keys are compared ignoring case: write each key once).",
+            _ => $"{file}: {inner.Message}",
+        };
+    }
+
+    /// <summary>Problems of the configuration as a whole, each naming its key.</summary>
+    public static List<string> Check(IConfiguration configuration)
+    {
+        ArgumentNullException.ThrowIfNull(configuration);
+        var failures = new List<string>();
+        CheckSections(configuration, failures);
+        CheckLogLevels(configuration, failures);
+        failures.AddRange(ConfigurationSchema.Check(configuration.GetSection(TelemetryExport.SectionName), typeof(TelemetryExport.Settings)));
+        return failures;
+    }
+
+    private static void CheckSections(IConfiguration configuration, List<string> failures)
+    {
+        // A file's top level is the gateway's to define; environment variables and the command line also carry the
+        // machine's own (PATH, HOME), so there only a near miss of a section's name is taken for a typo.
+        var fromFiles = new HashSet<string>(StringComparer.OrdinalIgnoreCase);
+        if (configuration is IConfigurationRoot root)
+        {
+            foreach (FileConfigurationProvider file in root.Providers.OfType<FileConfigurationProvider>())
+            {
+                foreach (string key in file.GetChildKeys([], null))
+                {
+                    fromFiles.Add(key);
+                }
+            }
+        }
+
+        foreach (IConfigurationSection section in configuration.GetChildren())
+        {
+            if (Sections.Contains(section.Key, StringComparer.OrdinalIgnoreCase) || HostKeys.Contains(section.Key, StringComparer.OrdinalIgnoreCase))
+            {
+                continue;
+            }
+
+            string? near = Sections.FirstOrDefault(s => Distance(s.ToUpperInvariant(), section.Key.ToUpperInvariant()) <= 2);
+            if (near is not null && (section.GetChildren().Any() || fromFiles.Contains(section.Key)))
+            {
+                failures.Add($"{section.Key} is not a section the gateway reads; did you mean {near}? The sections are {string.Join(", ", Sections)}.");
+            }
+            else if (near is null && fromFiles.Contains(section.Key))
+            {
+                failures.Add($"{section.Key} is not a section the gateway reads; the sections are {string.Join(", ", Sections)}.");
+            }
+        }
+    }
+
+    /// <summary>
+    /// The keys of log levels that do not exist. The logging framework would throw on them while the host is built;
+    /// the caller reports them and overrides them with a valid level, so the other sections can still be checked.
+    /// </summary>
+    public static List<string> BadLogLevels(IConfiguration configuration)
+    {
+        ArgumentNullException.ThrowIfNull(configuration);
+        IConfigurationSection logging = configuration.GetSection("Logging");
+
+        // Logging:LogLevel:<category> and Logging:<provider>:LogLevel:<category>.
+        return logging.GetSection("LogLevel").GetChildren()
+            .Concat(logging.GetChildren().SelectMany(p => p.GetSection("LogLevel").GetChildren()))
+            .Where(l => l.Value is { Length: > 0 } value && (!Enum.TryParse<LogLevel>(value, ignoreCase: true, out _) || int.TryParse(value, out _)))
+            .Select(l => l.Path)
+            .Distinct(StringComparer.OrdinalIgnoreCase)
+            .ToList();
+    }
+
+    private static void CheckLogLevels(IConfiguration configuration, List<string> failures)
+    {
+        foreach (string key in BadLogLevels(configuration))
+        {
+            failures.Add($"{key} '{configuration[key]}' is not a log level: {string.Join(", ", Enum.GetNames<LogLevel>())}.");
+        }
+    }
+
+    private static string StripPosition(string message)
+    {
+        int at = message.IndexOf(" LineNumber:", StringComparison.Ordinal);
+        return (at < 0 ? message : message.Substring(0, at)).TrimEnd();
+    }
+
+    /// <summary>Levenshtein distance, for telling a typo of a section name (Mqt, HostLinks) from another key.</summary>
+    private static int Distance(string a, string b)
+    {
+        var previous = new int[b.Length + 1];
+        var current = new int[b.Length + 1];
+        for (int j = 0; j <= b.Length; j++)
+        {
+            previous[j] = j;
+        }
+
+        for (int i = 1; i <= a.Length; i++)
+        {
+            current[0] = i;
+            for (int j = 1; j <= b.Length; j++)
+            {
+                current[j] = Math.Min(Math.Min(current[j - 1] + 1, previous[j] + 1), previous[j - 1] + (a[i - 1] == b[j - 1] ? 0 : 1));
+            }
+
+            (previous, current) = (current, previous);
+        }
+
+        return previous[b.Length];
+    }
+}
