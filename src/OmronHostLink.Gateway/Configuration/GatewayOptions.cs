@@ -26,6 +26,12 @@ public sealed class LinkOptions
     /// <summary>The poll groups, keyed by name.</summary>
     public Dictionary<string, PollGroupOptions> Groups { get; set; } = new(StringComparer.OrdinalIgnoreCase);
 
+    /// <summary>CSV files of tags (Kepware exports or plain files) whose rows become poll groups beside <see cref="Groups"/>.</summary>
+    public List<TagFileOptions> TagFiles { get; set; } = new();
+
+    /// <summary>What the tag files could not give, each naming the file and line; reported at start-up.</summary>
+    internal List<string> TagFileProblems { get; } = new();
+
     /// <summary>The link's client, read from the section's other keys by <see cref="HostLinkClientSettings.Read"/>.</summary>
     public HostLinkClientSettings Client { get; } = new();
 

@@ -61,6 +61,8 @@ public sealed class GatewayOptionsValidator : IValidateOptions<GatewayOptions>
 
     private static void ValidateLink(string path, LinkOptions link, List<string> failures)
     {
+        failures.AddRange(link.TagFileProblems.Select(p => $"{path}:{p}"));
+
         // The client's keys: the library's one validation, as the DI package reports it.
         failures.AddRange(link.Client.Validate().Select(p => p.Key.Length == 0 ? $"{path}: {p.Message}." : $"{path}:{p.Key}: {p.Message}."));
 

@@ -1,0 +1,114 @@
+using System.Diagnostics;
+using System.Net;
+using Microsoft.Extensions.Configuration;
+using Microsoft.Extensions.DependencyInjection;
+using Microsoft.Extensions.Hosting;
+using Microsoft.Extensions.Logging;
+using OmronHostLink.Simulator;
+using OmronHostLink.Simulator.Hosting;
+
+namespace OmronHostLink.Gateway.Tests.TagImport;
+
+/// <summary>A Kepware export (TagImport/Samples) as the running gateway's tags, polled from the simulator.</summary>
+public sealed class TagFileGatewayTests : IDisposable
+{
+    private static readonly TimeSpan Patience = TimeSpan.FromSeconds(15);
+    private readonly List<CapturingLoggerProvider> _logs = [];
+
+    public void Dispose()
+    {
+        foreach (CapturingLoggerProvider logs in _logs)
+        {
+            logs.Dispose();
+        }
+    }
+
+    private static Dictionary<string, string?> Config(int port, string file, string format = "Kepware") => new()
+    {
+        ["HostLink:Links:plc:Tcp"] = $"127.0.0.1:{port}",
+        ["HostLink:Links:plc:Serial:BaudRate"] = "115200",
+        ["HostLink:Links:plc:TurnaroundAllowance"] = "00:00:00.200",
+        ["HostLink:Links:plc:Backoff:Initial"] = "00:00:00.100",
+        ["HostLink:Links:plc:Backoff:Max"] = "00:00:00.200",
+        ["HostLink:Links:plc:TagFiles:0:Path"] = Path.Combine(AppContext.BaseDirectory, "TagImport", "Samples", file),
+        ["HostLink:Links:plc:TagFiles:0:Format"] = format,
+        ["HostLink:Links:plc:TagFiles:0:Unit"] = "0",
+    };
+
+    private IHost BuildHost(Dictionary<string, string?> config, CapturingLoggerProvider logs)
+    {
+        _logs.Add(logs);
+        var configuration = new ConfigurationManager();
+        configuration.AddInMemoryCollection(config);
+        HostApplicationBuilder builder = GatewayHost.CreateBuilder(new HostApplicationBuilderSettings
+        {
+            DisableDefaults = true,
+            EnvironmentName = "Test",
+            ContentRootPath = AppContext.BaseDirectory,
+            Configuration = configuration,
+        });
+        builder.Logging.SetMinimumLevel(LogLevel.Debug);
+        builder.Logging.AddProvider(logs);
+        builder.Services.Configure<HostOptions>(o => o.ShutdownTimeout = TimeSpan.FromSeconds(5));
+        return builder.Build();
+    }
+
+    private static string? LastValue(CapturingLoggerProvider logs, string group)
+        => logs.WithEvent(GatewayLog.Events.Values).Where(e => (string?)e["Group"] == group).Select(e => (string?)e["Values"]).LastOrDefault();
+
+    [Fact]
+    public async Task A_Kepware_export_becomes_running_tags_that_read_the_simulators_memory()
+    {
+        var plc = new VirtualPlc();
+        plc.WriteWords("D100", [1234]);
+        plc.WriteWords("D120", [1, 2, 3, 4]);
+        plc.WriteWords("D101", [unchecked((ushort)-5)]);
+        plc.WriteWords("D102", [0x0042]);
+        plc.WriteWords("H10", [0x0008]);
+        await using var simulator = new TcpSimulatorHost(plc, new IPEndPoint(IPAddress.Loopback, 0));
+        await simulator.StartAsync();
+        var logs = new CapturingLoggerProvider();
+        using IHost host = BuildHost(Config(simulator.EndPoint.Port, "kepware-c200h.csv"), logs);
+
+        await host.StartAsync();
+        try
+        {
+            string[] expected = ["Setpoint", "Offset", "Batch", "Recipe", "HoldBit", "Product", "TimerDone", "LinkWord", "Inputs", "TimerPV", "Total", "Matrix"];
+            var clock = Stopwatch.StartNew();
+            while (expected.Any(g => LastValue(logs, g) is null) && clock.Elapsed < Patience)
+            {
+                await logs.NextEntry.WaitAsync(Patience);
+            }
+
+            LastValue(logs, "Setpoint").Should().Be("0x04D2", "DM0100 (Word) is D100, 1234, logged as a hex word");
+            LastValue(logs, "Offset").Should().Be("-5", "DM0101 (Short) is D101 as int16");
+            LastValue(logs, "Batch").Should().Be("42", "DM0102 (BCD) reads 0x0042 as 42");
+            LastValue(logs, "Recipe").Should().Be("[0x0001, 0x0002, 0x0003, 0x0004]", "DM0120 [4] (Word Array) is four words");
+            expected.Where(g => LastValue(logs, g) is null).Should().BeEmpty("every row of the export is a running tag (LR, IR and TC areas included)");
+            LastValue(logs, "HoldBit")!.Should().BeOneOf("1", "True", "true");
+        }
+        finally
+        {
+            await host.StopAsync();
+        }
+    }
+
+    [Fact]
+    public async Task A_file_with_bad_rows_stops_the_start_naming_the_file_and_every_bad_line()
+    {
+        using IHost host = BuildHost(Config(9, "kepware-bad-rows.csv"), new CapturingLoggerProvider());
+
+        Exception? error = await Record.ExceptionAsync(() => host.StartAsync());
+
+        error.Should().NotBeNull();
+        string message = string.Join("\n", Messages(error!));
+        foreach (int line in new[] { 3, 4, 5, 6, 7, 8, 9, 10 })
+        {
+            message.Should().Contain($"HostLink:Links:plc:TagFiles:0:Path {Path.Combine(AppContext.BaseDirectory, "TagImport", "Samples", "kepware-bad-rows.csv")}, line {line}:");
+        }
+    }
+
+    private static IEnumerable<string> Messages(Exception e) => e is AggregateException a
+        ? a.InnerExceptions.SelectMany(Messages).Prepend(e.Message)
+        : e.InnerException is null ? [e.Message] : Messages(e.InnerException).Prepend(e.Message);
+}
