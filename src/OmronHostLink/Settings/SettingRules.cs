@@ -17,7 +17,7 @@ internal static class SettingRules
     public const int MaxRetries = 10;
 
     /// <summary>The highest FINS response wait, in units of 10 ms.</summary>
-    public const int MaxFinsResponseWait = 15;
+    public const int MaxFinsResponseWait = Protocol.Fins.FinsHeader.MaxResponseWait;
 
     /// <summary>The longest turnaround allowance.</summary>
     public static readonly TimeSpan LongestTurnaround = TimeSpan.FromMinutes(1);

@@ -32,6 +32,9 @@ internal readonly struct FinsHeader : IEquatable<FinsHeader>
     /// <summary>Bytes of a direct header (ICF DA2 SA2 SID).</summary>
     public const int DirectLength = 4;
 
+    /// <summary>The longest response wait time a Host Link FINS frame carries: one hex digit, in units of 10 ms.</summary>
+    public const int MaxResponseWait = 15;
+
     /// <summary>Bytes of a network header (ICF RSV GCT DNA DA1 DA2 SNA SA1 SA2 SID).</summary>
     public const int NetworkLength = 10;
 
@@ -194,7 +197,7 @@ internal readonly struct FinsHeader : IEquatable<FinsHeader>
     public static bool TryRead(ReadOnlySpan<byte> source, int responseWait, out FinsHeader header)
     {
         header = default;
-        if (source.IsEmpty || (uint)responseWait > 15)
+        if (source.IsEmpty || (uint)responseWait > MaxResponseWait)
         {
             return false;
         }
@@ -247,9 +250,9 @@ internal readonly struct FinsHeader : IEquatable<FinsHeader>
 
     private static void CheckWait(int responseWait)
     {
-        if ((uint)responseWait > 15)
+        if ((uint)responseWait > MaxResponseWait)
         {
-            throw new ArgumentOutOfRangeException(nameof(responseWait), responseWait, $"The Host Link response wait time must be 0-15 (× 10 ms); it was {responseWait}.");
+            throw new ArgumentOutOfRangeException(nameof(responseWait), responseWait, $"The Host Link response wait time must be 0-{MaxResponseWait} (× 10 ms); it was {responseWait}.");
         }
     }
 }
