@@ -24,6 +24,7 @@ internal sealed class ConnectionOptions
         ["UnitNumber"] = "--unit",
         ["TurnaroundAllowance"] = "--timeout",
         ["ReadRetries"] = "--retries",
+        ["Model"] = "--model",
     };
 
     public ConnectionOptions(bool includeUnit = true, TimeSpan? defaultTimeout = null, int? defaultRetries = null)
@@ -44,6 +45,7 @@ internal sealed class ConnectionOptions
         Timeout = Durations.Option("--timeout", "Time the PLC may take to start answering a frame (the wire time is added); default " + Durations.Format(timeout) + ".", null, TimeSpan.MinValue, TimeSpan.MaxValue);
         Retries = OptionValues.OptionalInteger("--retries", "Times a read is repeated after a timeout or damaged frame, 0-10 (writes are never repeated).", int.MinValue, int.MaxValue, "n");
         Fins = new Option<bool>("--fins") { Description = "Use FINS over Host Link (FA) where C-mode would otherwise be used: reads, writes, bit writes, status and mode." };
+        Model = new Option<string?>("--model") { Description = "The PLC model addresses and commands are checked against before anything is sent (CPM1A, CP1E-E, C200HS, CS1, ...: see 'hostlink model --list'), or auto to ask the PLC (MM).", HelpName = "name" };
     }
 
     public bool IncludeUnit { get; }
@@ -72,6 +74,8 @@ internal sealed class ConnectionOptions
 
     public Option<bool> Fins { get; }
 
+    public Option<string?> Model { get; }
+
     /// <summary>How 32- and 64-bit values lie in two or four words: Omron's own layout, low word first.</summary>
     public WordOrder WordOrder => WordOrder.LowWordFirst;
 
@@ -91,6 +95,7 @@ internal sealed class ConnectionOptions
         command.Add(Timeout);
         command.Add(Retries);
         command.Add(Fins);
+        command.Add(Model);
         command.Validators.Add(Validate);
     }
 
@@ -111,6 +116,7 @@ internal sealed class ConnectionOptions
             WriteRetries = 0,
             WordOrder = WordOrder,
             CommandSet = options.GetValue(Fins) ? HostLinkCommandSet.Fins : HostLinkCommandSet.CMode,
+            Model = options.GetValue(Model),
         };
         settings.Serial.BaudRate = options.GetValue(Baud);
         settings.Serial.DataBits = options.GetValue(DataBits);

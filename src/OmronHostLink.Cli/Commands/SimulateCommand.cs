@@ -27,7 +27,7 @@ internal static class SimulateCommand
         Option<string> parity = OptionValues.Choice("--parity", "Serial parity.", "even", "none", "even", "odd");
         Option<int> stopBits = OptionValues.Integer("--stop-bits", "Serial stop bits: 1 or 2.", (int)new SerialLineSettings().StopBits, int.MinValue, int.MaxValue, "1|2");
         Option<TimeSpan?> turnaround = Durations.Option("--turnaround", "Time between a command and its answer.", TimeSpan.Zero, TimeSpan.Zero, TimeSpan.FromMinutes(1));
-        var model = new Option<string?>("--model") { Description = "Model code MM reports, two hex digits (default 30 = CS/CJ).", HelpName = "hex" };
+        var model = new Option<string?>("--model") { Description = "The PLC model to emulate (CPM1A, C200HS, CP1E-E, ...: its areas, commands and MM code; see 'hostlink model --list'), or just the code MM reports, two hex digits (default 30 = CS/CJ).", HelpName = "name|hex" };
         var drop = OptionValues.Probability("--fault-drop", "Probability of not answering at all.");
         var corrupt = OptionValues.Probability("--fault-corrupt", "Probability of corrupting a character (the FCS no longer matches).");
         var noise = OptionValues.Probability("--fault-noise", "Probability of sending noise bytes before a frame.");
@@ -76,9 +76,18 @@ internal static class SimulateCommand
             };
             if (parse.GetValue(model) is { } modelText)
             {
-                options.ModelCode = byte.TryParse(modelText, NumberStyles.AllowHexSpecifier, CultureInfo.InvariantCulture, out byte code)
-                    ? code
-                    : throw new UsageException($"--model '{modelText}' is not two hex digits such as 30.");
+                if (modelText.Length <= 2 && byte.TryParse(modelText, NumberStyles.AllowHexSpecifier, CultureInfo.InvariantCulture, out byte code))
+                {
+                    options.ModelCode = code;
+                }
+                else if (PlcModelProfile.TryParse(modelText, out PlcModelProfile? profile))
+                {
+                    options.Model = profile.Name;
+                }
+                else
+                {
+                    throw new UsageException($"--model '{modelText}' is neither a known PLC model ({PlcModelProfile.KnownNames()}) nor two hex digits such as 30.");
+                }
             }
 
             SerialLineSettings? serial = null;
@@ -132,7 +141,8 @@ internal static class SimulateCommand
 
             string unitList = string.Join(",", options.Units.Select(u => u.ToString("D2", CultureInfo.InvariantCulture)));
             VirtualPlc first = line.Plcs[0];
-            string state = $"{StatusCommand.ModeName(first.Mode)} mode, model code {first.ModelCode:X2}"
+            string state = $"{StatusCommand.ModeName(first.Mode)} mode, "
+                + (first.Model is { } emulated ? $"emulating {emulated.WithArticle()} (MM {(emulated.ModelCode is { } mm ? mm.ToString("X2", CultureInfo.InvariantCulture) : "answered IC")})" : $"model code {first.ModelCode:X2}")
                 + (options.Units.Count == 1 ? string.Empty : oneCpu ? ", one PLC answering every unit" : ", each unit a PLC of its own");
             try
             {

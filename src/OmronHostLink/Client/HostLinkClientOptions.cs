@@ -150,9 +150,9 @@ public sealed class HostLinkClientOptions
             throw new ArgumentException("TimeProvider is required.", nameof(TimeProvider));
         }
 
-        if (Model is not null && !string.Equals(Model, UnitModels.Auto, StringComparison.OrdinalIgnoreCase) && !PlcModelProfile.TryParse(Model, out _))
+        if (Model is not null && SettingRules.Model(Model) is { } modelProblem)
         {
-            throw new ArgumentException($"Model '{Model}' is not a known PLC model; use one of {PlcModelProfile.KnownNames()}, or auto to ask the PLC (MM).", nameof(Model));
+            throw new ArgumentException($"Model {modelProblem}.", nameof(Model));
         }
 
         if (LinkName is not null && LinkName.Trim().Length == 0)

@@ -24,11 +24,22 @@ public partial class HostLinkUnit
     {
         Guard.NotNull(addresses);
         var items = new CompoundItem[addresses.Count];
+        var parsed = new PlcAddress[addresses.Count];
         for (int i = 0; i < items.Length; i++)
         {
             PlcAddress address = PlcAddress.Parse(addresses[i] ?? throw new ArgumentException($"Address {i} is null.", nameof(addresses)));
             address.EnsureRange(1, HostLinkCommandSet.CMode, forWrite: false);
             items[i] = CompoundItem.For(address);
+            parsed[i] = address;
+        }
+
+        if (await GetModelProfileAsync(cancellationToken).ConfigureAwait(false) is { } model)
+        {
+            model.EnsureCMode("QQ", "compound read");
+            foreach (PlcAddress address in parsed)
+            {
+                model.EnsureRange(address.AsWord(), 1, forWrite: false);
+            }
         }
 
         _ = new CompoundRegisterCommand(items); // refuses an empty or oversized set before anything is sent
@@ -41,6 +52,8 @@ public partial class HostLinkUnit
     /// <summary>QQIR of <paramref name="items"/>, registering them first unless the unit holds them; once more after end code 19.</summary>
     private protected async ValueTask<ushort[]> ReadCompoundItemsAsync(IReadOnlyList<CompoundItem> items, CancellationToken cancellationToken)
     {
+        // A model known to have no QQ is not sent one (it would answer IC).
+        (await GetModelProfileAsync(cancellationToken).ConfigureAwait(false))?.EnsureCMode("QQ", "compound read");
         await CompoundReads.Gate.WaitAsync(cancellationToken).ConfigureAwait(false);
         try
         {

@@ -1,7 +1,6 @@
 using System.Runtime.CompilerServices;
 using Microsoft.Extensions.Logging;
 using Microsoft.Extensions.Logging.Abstractions;
-using OmronHostLink.Protocol;
 using OmronHostLink.Protocol.CMode;
 using OmronHostLink.Transports;
 
@@ -12,20 +11,20 @@ namespace OmronHostLink.Link;
 /// place. Every transaction (a request, an INITIALIZE, a presence probe) runs in the same scope: it waits for the gate,
 /// opens the transport if the link is <see cref="LinkState.Closed"/>, runs its exchange over the
 /// <see cref="FrameChannel"/>, and on failure takes the state the failure leaves (<see cref="TransactionAttempt.After"/>),
-/// closing a lost stream at once. Retries and telemetry live here.
+/// closing a lost stream at once. Retries live here.
 /// </summary>
 /// <remarks>
-/// The parts: <see cref="FrameChannel"/> (the stream's bytes, frames, per-frame deadlines), <see cref="TransactionAttempt"/>
-/// (one exchange, frame by frame), <see cref="Resynchroniser"/> (<c>@**</c> and the TS fence). Deadlines come from the
-/// <see cref="LineTiming"/> and run on the <see cref="TimeProvider"/> of the options; <see cref="CommandTelemetry"/>
-/// measures each command over all its attempts.
+/// The parts: <see cref="FrameChannel"/> (bytes, frames, per-frame deadlines), <see cref="TransactionAttempt"/> (one
+/// exchange), <see cref="Resynchroniser"/> (<c>@**</c> and the TS fence), <see cref="SendSpacing"/> (the gap between
+/// exchanges), <see cref="CommandTelemetry"/> (per command, not per attempt). Deadlines come from the
+/// <see cref="LineTiming"/> and run on the options' <see cref="TimeProvider"/>.
 /// </remarks>
 internal sealed class HostLinkConnection : IAsyncDisposable
 {
     private readonly IHostLinkTransport _transport;
     private readonly ILogger _logger;
     private readonly TimeProvider _time;
-    private readonly HostLinkConnectionOptions _options;
+    private readonly SendSpacing _spacing;
     private readonly SemaphoreSlim _gate = new(1, 1);
     private readonly TransactionAttempt _attempt;
     private readonly Resynchroniser _resynchroniser;
@@ -34,13 +33,12 @@ internal sealed class HostLinkConnection : IAsyncDisposable
     private FrameChannel? _channel;
     private LinkStatus _status = new(LinkState.Closed);
     private int _sid;
-    private long _lastExchangeEnded;
 
     public HostLinkConnection(IHostLinkTransport transport, HostLinkConnectionOptions options)
     {
         _transport = transport;
         _time = options.TimeProvider;
-        _options = options;
+        _spacing = new SendSpacing(options);
         Timing = transport.LineTiming ?? options.LineTiming;
         _logger = options.LoggerFactory?.CreateLogger("OmronHostLink") ?? NullLogger.Instance;
         _attempt = new TransactionAttempt(Timing, options.TurnaroundAllowance, options.LocalEcho);
@@ -75,12 +73,7 @@ internal sealed class HostLinkConnection : IAsyncDisposable
 #endif
     public async ValueTask<TResult> ExecuteAsync<TState, TResult>(HostLinkRequest request, int retries, ResponseDecoder<TState, TResult> decode, TState state, CancellationToken cancellationToken)
     {
-        ExchangeShape shape = request.Shape;
-        if (!shape.MultiFrameCommand && !shape.SingleFrameOnly && request.Message.Length + FrameWriter.FinalOverhead > FrameWriter.MaxFirstFrameLength)
-        {
-            throw new ArgumentException($"The {request.Header} command is {request.Message.Length + FrameWriter.FinalOverhead} characters long; it must fit one {FrameWriter.MaxFirstFrameLength}-character frame.");
-        }
-
+        request.CheckLength();
         int attempt = 0;
         var telemetry = new CommandTelemetry(_instruments, _time, LinkName, _transport, request);
         try
@@ -143,11 +136,6 @@ internal sealed class HostLinkConnection : IAsyncDisposable
 
     public async ValueTask DisposeAsync()
     {
-        if (State == LinkState.Disposed)
-        {
-            return;
-        }
-
         await _gate.WaitAsync().ConfigureAwait(false);
         try
         {
@@ -185,7 +173,7 @@ internal sealed class HostLinkConnection : IAsyncDisposable
         {
             _attempt.Reset();
             FrameChannel channel = await OpenedAsync(cancellationToken).ConfigureAwait(false);
-            await KeepSendIntervalAsync(unit, cancellationToken).ConfigureAwait(false);
+            await _spacing.WaitAsync(unit, cancellationToken).ConfigureAwait(false);
             channel.FrameObserver = FrameObserver;
             channel.Begin(cancellationToken);
             try
@@ -212,7 +200,7 @@ internal sealed class HostLinkConnection : IAsyncDisposable
             finally
             {
                 channel.End();
-                _lastExchangeEnded = _time.GetTimestamp();
+                _spacing.ExchangeEnded();
             }
         }
         finally
@@ -222,36 +210,16 @@ internal sealed class HostLinkConnection : IAsyncDisposable
         }
     }
 
-    /// <summary>
-    /// The one place the next command waits for the send interval: until the gap since the last exchange ended (whatever
-    /// it was, answered or not) is the longer of the link's and the unit's.
-    /// </summary>
-    private Task KeepSendIntervalAsync(int unit, CancellationToken cancellationToken)
-    {
-        TimeSpan gap = _options.SendIntervalFor(unit);
-        if (gap <= TimeSpan.Zero || _lastExchangeEnded == 0)
-        {
-            return Task.CompletedTask;
-        }
+    /// <summary>Carries a request, resynchronising first if the last exchange failed; in step and unlogged, the attempt itself.</summary>
+    private ValueTask<TResult> CarryAsync<TState, TResult>(FrameChannel channel, HostLinkRequest request, ResponseDecoder<TState, TResult> decode, TState state)
+        => State == LinkState.Ready && !_logger.IsEnabled(LogLevel.Debug)
+            ? _attempt.RunAsync(channel, request, decode, state)
+            : ResynchroniseAndCarryAsync(channel, request, decode, state);
 
-        TimeSpan remaining = gap - _time.GetElapsedTime(_lastExchangeEnded);
-        if (remaining <= TimeSpan.Zero)
-        {
-            return Task.CompletedTask;
-        }
-
-#if NET
-        return Task.Delay(remaining, _time, cancellationToken);
-#else
-        return _time.Delay(remaining, cancellationToken);
-#endif
-    }
-
-    /// <summary>Carries a request: resynchronises first if the last exchange failed.</summary>
 #if NET
     [AsyncMethodBuilder(typeof(PoolingAsyncValueTaskMethodBuilder<>))]
 #endif
-    private async ValueTask<TResult> CarryAsync<TState, TResult>(FrameChannel channel, HostLinkRequest request, ResponseDecoder<TState, TResult> decode, TState state)
+    private async ValueTask<TResult> ResynchroniseAndCarryAsync<TState, TResult>(FrameChannel channel, HostLinkRequest request, ResponseDecoder<TState, TResult> decode, TState state)
     {
         if (State is LinkState.NeedsInitialize or LinkState.NeedsResync)
         {

@@ -23,4 +23,14 @@ internal readonly struct HostLinkRequest
 
     /// <summary>How the command travels and is answered.</summary>
     public ExchangeShape Shape { get; }
+
+    /// <summary>Refuses, before anything is sent, a command that cannot travel in multiple frames and does not fit one.</summary>
+    /// <exception cref="ArgumentException">The command is longer than one frame can carry.</exception>
+    public void CheckLength()
+    {
+        if (!Shape.MultiFrameCommand && !Shape.SingleFrameOnly && Message.Length + FrameWriter.FinalOverhead > FrameWriter.MaxFirstFrameLength)
+        {
+            throw new ArgumentException($"The {Header} command is {Message.Length + FrameWriter.FinalOverhead} characters long; it must fit one {FrameWriter.MaxFirstFrameLength}-character frame.");
+        }
+    }
 }

@@ -31,6 +31,7 @@ public sealed class HostLinkClientSettings
         { nameof(LocalEcho), (v, s) => s.LocalEcho = v.Boolean() ?? s.LocalEcho },
         { nameof(FinsResponseWait), (v, s) => s.FinsResponseWait = v.Integer() ?? s.FinsResponseWait },
         { nameof(AllowReadModifyWriteBits), (v, s) => s.AllowReadModifyWriteBits = v.Boolean() ?? s.AllowReadModifyWriteBits },
+        { nameof(Model), (v, s) => s.Model = v.Text() ?? s.Model },
         { nameof(SendInterval), (v, s) => s.SendInterval = v.Duration() ?? s.SendInterval },
     };
 
@@ -80,6 +81,13 @@ public sealed class HostLinkClientSettings
     /// program makes to the word between the read and the write is lost.
     /// </summary>
     public bool? AllowReadModifyWriteBits { get; set; }
+
+    /// <summary>
+    /// The PLC model addresses and commands are checked against before anything is sent (see
+    /// <see cref="HostLinkClientOptions.Model"/>): CPM1A, CP1E-E, C200HS, CS1, ..., or auto to ask the PLC (MM).
+    /// Default none: the CS/CJ sizes only.
+    /// </summary>
+    public string? Model { get; set; }
 
     /// <summary>
     /// The least time between the end of one exchange and the next command on the line, for PLCs and converters that
@@ -137,6 +145,7 @@ public sealed class HostLinkClientSettings
         Add(nameof(WriteRetries), WriteRetries is { } writeRetries ? SettingRules.Retries(writeRetries) : null);
         Add(nameof(WordOrder), WordOrder is { } order ? SettingRules.WordOrder(order) : null);
         Add(nameof(FinsResponseWait), FinsResponseWait is { } wait ? SettingRules.FinsResponseWait(wait) : null);
+        Add(nameof(Model), Model is { } model ? SettingRules.Model(model) : null);
         Add(nameof(SendInterval), SendInterval is { } gap ? SettingRules.SendInterval(gap) : null);
         return problems;
     }
@@ -158,6 +167,7 @@ public sealed class HostLinkClientSettings
         options.LocalEcho = LocalEcho ?? options.LocalEcho;
         options.FinsResponseWait = FinsResponseWait ?? options.FinsResponseWait;
         options.AllowReadModifyWriteBits = AllowReadModifyWriteBits ?? options.AllowReadModifyWriteBits;
+        options.Model = Model ?? options.Model;
         options.SendInterval = SendInterval ?? options.SendInterval;
 
         // Over TCP the transport cannot know the line's speed: the deadlines come from these settings. A local port

@@ -34,6 +34,12 @@ internal static class SettingRules
     public static string? Retries(int retries)
         => retries is < 0 or > MaxRetries ? $"{retries} is not 0-{MaxRetries}" : null;
 
+    /// <summary>A PLC model profile name, or <c>auto</c> (ask the PLC with MM).</summary>
+    public static string? Model(string model)
+        => string.Equals(model, UnitModels.Auto, StringComparison.OrdinalIgnoreCase) || PlcModelProfile.TryParse(model, out _)
+            ? null
+            : $"'{model}' is not a known PLC model; use one of {PlcModelProfile.KnownNames()}, or auto to ask the PLC (MM)";
+
     public static string? FinsResponseWait(int wait)
         => wait is < 0 or > MaxFinsResponseWait ? $"{wait} is not 0-{MaxFinsResponseWait} (units of 10 ms)" : null;
 

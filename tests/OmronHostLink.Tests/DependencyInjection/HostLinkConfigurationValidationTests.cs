@@ -50,6 +50,16 @@ public sealed class HostLinkConfigurationValidationTests
     }
 
     [Fact]
+    public async Task An_unknown_model_is_an_error_naming_the_key()
+    {
+        IReadOnlyList<string> failures = await JsonHost.StartFailuresAsync(
+            OneClient("""  "Tcp": "127.0.0.1:9", "Model": "CPM9" """), AllClients);
+
+        failures.Should().ContainSingle().Which.Should().StartWith($"{Line1}:Model: 'CPM9' is not a known PLC model; use one of C200H, ")
+            .And.EndWith(", or auto to ask the PLC (MM)");
+    }
+
+    [Fact]
     public async Task A_misspelt_protocol_is_an_error_naming_the_key_not_a_dropped_link()
     {
         IReadOnlyList<string> failures = await JsonHost.StartFailuresAsync(
@@ -76,7 +86,7 @@ public sealed class HostLinkConfigurationValidationTests
             $"{Line1}:TurnaroundAlowance: not a Host Link client setting; did you mean TurnaroundAllowance?",
             $"{Line1}:BaudRate: not a Host Link client setting; did you mean Serial:BaudRate?",
             $"{Line1}:Unit: not a Host Link client setting; did you mean UnitNumber?",
-            $"{Line1}:Colour: not a Host Link client setting (known: Serial, Tcp, UnitNumber, CommandSet, TurnaroundAllowance, ReadRetries, WriteRetries, WordOrder, LocalEcho, FinsResponseWait, AllowReadModifyWriteBits, SendInterval)");
+            $"{Line1}:Colour: not a Host Link client setting (known: Serial, Tcp, UnitNumber, CommandSet, TurnaroundAllowance, ReadRetries, WriteRetries, WordOrder, LocalEcho, FinsResponseWait, AllowReadModifyWriteBits, Model, SendInterval)");
     }
 
     [Theory]

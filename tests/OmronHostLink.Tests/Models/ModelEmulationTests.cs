@@ -212,6 +212,27 @@ public sealed class ModelEmulationTests
     }
 
     [Fact]
+    public async Task QQ_is_refused_before_the_wire_on_a_model_without_it_and_answered_on_one_with_it()
+    {
+        var cp2e = new VirtualPlc(new VirtualPlcOptions { Model = "CP2E" });
+        await using (var line = await EmulatedLine.StartAsync(cp2e, "CP2E"))
+        {
+            await FluentActions.Awaiting(() => line.Client.ReadCompoundAsync(["D0", "D1"]).AsTask()).Should().ThrowAsync<NotSupportedException>()
+                .WithMessage("A CP2E does not accept the C-mode compound read (QQ).");
+            line.BytesSent.Should().Be(0);
+        }
+
+        var cpm1a = new VirtualPlc(new VirtualPlcOptions { Model = "CPM1A" });
+        cpm1a.WriteWord(PlcArea.Dm, 6144, 0x0102);
+        await using (var line = await EmulatedLine.StartAsync(cpm1a, "CPM1A"))
+        {
+            await FluentActions.Awaiting(() => line.Client.ReadCompoundAsync(["D0", "D2000"]).AsTask()).Should().ThrowAsync<ArgumentOutOfRangeException>()
+                .WithMessage("D2000 is beyond the DM area of a CPM1/CPM1A*");
+            line.BytesSent.Should().Be(0);
+        }
+    }
+
+    [Fact]
     public void An_unknown_model_is_refused_when_the_options_are_checked()
     {
         var options = new HostLinkClientOptions { Model = "CPM9" };

@@ -30,9 +30,11 @@ public sealed class HostLinkClientSettingsMappingTests
             LocalEcho = true,
             FinsResponseWait = 3,
             AllowReadModifyWriteBits = true,
+            Model = "CPM1A",
         };
 
         HostLinkClientOptions options = settings.ToClientOptions();
+        options.Model.Should().Be("CPM1A");
         options.UnitNumber.Should().Be(7);
         options.CommandSet.Should().Be(HostLinkCommandSet.Fins);
         options.TurnaroundAllowance.Should().Be(TimeSpan.FromMilliseconds(750));
