@@ -32,6 +32,7 @@ public sealed class HostLinkClientSettings
         { nameof(FinsResponseWait), (v, s) => s.FinsResponseWait = v.Integer() ?? s.FinsResponseWait },
         { nameof(AllowReadModifyWriteBits), (v, s) => s.AllowReadModifyWriteBits = v.Boolean() ?? s.AllowReadModifyWriteBits },
         { nameof(Model), (v, s) => s.Model = v.Text() ?? s.Model },
+        { nameof(SendInterval), (v, s) => s.SendInterval = v.Duration() ?? s.SendInterval },
     };
 
     private readonly List<HostLinkSettingsProblem> _readProblems = new();
@@ -88,6 +89,12 @@ public sealed class HostLinkClientSettings
     /// </summary>
     public string? Model { get; set; }
 
+    /// <summary>
+    /// The least time between the end of one exchange and the next command on the line, for PLCs and converters that
+    /// drop a command sent right after an answer; 0 to 10 s. Default 0 (none). See <see cref="HostLinkClientOptions.SendInterval"/>.
+    /// </summary>
+    public TimeSpan? SendInterval { get; set; }
+
     /// <summary>The kinds of link a client can use; exactly one is chosen.</summary>
     internal IEnumerable<HostLinkEndpointSettings> Endpoints => [Serial, Tcp];
 
@@ -139,6 +146,7 @@ public sealed class HostLinkClientSettings
         Add(nameof(WordOrder), WordOrder is { } order ? SettingRules.WordOrder(order) : null);
         Add(nameof(FinsResponseWait), FinsResponseWait is { } wait ? SettingRules.FinsResponseWait(wait) : null);
         Add(nameof(Model), Model is { } model ? SettingRules.Model(model) : null);
+        Add(nameof(SendInterval), SendInterval is { } gap ? SettingRules.SendInterval(gap) : null);
         return problems;
     }
 
@@ -160,6 +168,7 @@ public sealed class HostLinkClientSettings
         options.FinsResponseWait = FinsResponseWait ?? options.FinsResponseWait;
         options.AllowReadModifyWriteBits = AllowReadModifyWriteBits ?? options.AllowReadModifyWriteBits;
         options.Model = Model ?? options.Model;
+        options.SendInterval = SendInterval ?? options.SendInterval;
 
         // Over TCP the transport cannot know the line's speed: the deadlines come from these settings. A local port
         // gives its own timing from the same values.

@@ -45,6 +45,9 @@ internal static class SettingRules
 
     public static string? TurnaroundAllowance(TimeSpan value) => Positive(value, LongestTurnaround, "1 minute");
 
+    public static string? SendInterval(TimeSpan value)
+        => value < TimeSpan.Zero || value > TimeSpan.FromSeconds(10) ? $"{value.TotalMilliseconds:0.###} ms is not 0 to 10 s" : null;
+
     public static string? ConnectTimeout(TimeSpan value) => Positive(value, LongestConnectTimeout, "5 minutes");
 
     public static string? CommandSet(HostLinkCommandSet value)
