@@ -58,7 +58,11 @@ public static class Duration
                 return true;
             }
 
-            error = $"'{text}' has no unit; write {number}ms, {number}s or {number}m (or 00:00:00.300)";
+            // The time-span example shows the reader's own number, taken as milliseconds.
+            string asTimeSpan = amount < 86_400_000m
+                ? TimeSpan.FromTicks((long)(amount * TimeSpan.TicksPerMillisecond)).ToString(@"hh\:mm\:ss\.FFFFFFF", CultureInfo.InvariantCulture).TrimEnd('.')
+                : "hh:mm:ss";
+            error = $"'{text}' has no unit; write {number}ms, {number}s or {number}m (or {asTimeSpan} for {number}ms)";
             return false;
         }
 

@@ -12,7 +12,7 @@ public sealed class CliDurationTests
         CliResult r = await Cli.RunAsync("monitor", "D0", "--interval", "100", "--count", "3", "--tcp", "127.0.0.1:1");
 
         r.ExitCode.Should().Be(2, r.ToString());
-        r.Err.Should().Contain("--interval: '100' has no unit; write 100ms, 100s or 100m (or 00:00:00.300)");
+        r.Err.Should().Contain("--interval: '100' has no unit; write 100ms, 100s or 100m (or 00:00:00.1 for 100ms)");
     }
 
     [Fact]

@@ -90,8 +90,8 @@ public sealed class HostLinkConfigurationValidationTests
     }
 
     [Theory]
-    [InlineData("300", "'300' has no unit; write 300ms, 300s or 300m (or 00:00:00.300)")]
-    [InlineData("0.5", "'0.5' has no unit; write 0.5ms, 0.5s or 0.5m (or 00:00:00.300)")]
+    [InlineData("300", "'300' has no unit; write 300ms, 300s or 300m (or 00:00:00.3 for 300ms)")]
+    [InlineData("0.5", "'0.5' has no unit; write 0.5ms, 0.5s or 0.5m (or 00:00:00.0005 for 0.5ms)")]
     [InlineData("abc", "'abc' is not a duration; write 300ms, 1.5s, 2m or 00:00:00.300")]
     [InlineData("300 parsecs", "'300 parsecs' is not a duration; write 300ms, 1.5s, 2m or 00:00:00.300")]
     [InlineData("-1s", "'-1s' is not a duration; write 300ms, 1.5s, 2m or 00:00:00.300")]
