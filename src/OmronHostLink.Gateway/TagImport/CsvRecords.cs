@@ -8,6 +8,20 @@ namespace OmronHostLink.Gateway.TagImport;
 /// </summary>
 public static class CsvRecords
 {
+    /// <summary>Reads every record of a tag file; a file that is not CSV becomes a problem on line 1 and null.</summary>
+    internal static List<CsvRecord>? ReadTagFile(TextReader reader, List<TagImportProblem> problems)
+    {
+        try
+        {
+            return Read(reader);
+        }
+        catch (FormatException e)
+        {
+            problems.Add(new TagImportProblem(1, "the file is not CSV: " + e.Message));
+            return null;
+        }
+    }
+
     /// <summary>Reads every record.</summary>
     /// <exception cref="FormatException">A quoted field is not closed, or text follows a closing quote; the message names the line.</exception>
     public static List<CsvRecord> Read(TextReader reader)

@@ -25,18 +25,8 @@ public static partial class KepwareTagCsv
     {
         var tags = new List<ImportedTag>();
         var problems = new List<TagImportProblem>();
-        List<CsvRecord> records;
-        try
-        {
-            records = CsvRecords.Read(reader);
-        }
-        catch (FormatException e)
-        {
-            problems.Add(new TagImportProblem(1, "the file is not CSV: " + e.Message));
-            return TagImportResult.From(tags, problems);
-        }
-
-        if (records.Count == 0)
+        List<CsvRecord>? records = CsvRecords.ReadTagFile(reader, problems);
+        if (records is null || records.Count == 0)
         {
             return TagImportResult.From(tags, problems);
         }
