@@ -4,6 +4,7 @@ using FluentAssertions;
 using OmronHostLink.Protocol.CMode;
 using OmronHostLink.Simulator;
 using OmronHostLink.Simulator.Hosting;
+using OmronHostLink.Tests.Infrastructure;
 using OmronHostLink.Transports;
 using Xunit;
 
@@ -22,7 +23,7 @@ public sealed class CompoundReadTests : IAsyncDisposable
     {
         (Stream host, Stream plcEnd) = InMemoryLink.CreatePair();
         _session = _plc.RunAsync(plcEnd, _stop.Token);
-        _client = HostLinkClient.ForStream(host, new HostLinkClientOptions { LineTiming = new LineTiming(115200, 11), TurnaroundAllowance = TimeSpan.FromMilliseconds(500) });
+        _client = HostLinkClient.ForStream(host, new HostLinkClientOptions { LineTiming = new LineTiming(115200, 11), TurnaroundAllowance = InProcessLine.InMemoryAllowance });
         _client.FrameObserver = (sent, frame) =>
         {
             if (sent)
