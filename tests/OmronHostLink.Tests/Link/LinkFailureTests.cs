@@ -20,7 +20,7 @@ public sealed class LinkFailureTests
     public async Task An_end_code_answer_leaves_the_link_in_step_so_no_fence_precedes_the_next_request()
     {
         (Stream host, Stream plcEnd) = InMemoryLink.CreatePair();
-        var options = new HostLinkClientOptions { LineTiming = new LineTiming(115200, 11), TurnaroundAllowance = TimeSpan.FromMilliseconds(150) };
+        var options = new HostLinkClientOptions { LineTiming = new LineTiming(115200, 11), TurnaroundAllowance = InProcessLine.InMemoryAllowance };
         await using var client = HostLinkClient.ForStream(host, options);
         await using var plc = new ScriptedPlc(plcEnd, f => f switch
         {
