@@ -69,7 +69,7 @@ public partial class HostLinkUnit
             int bit = address.Bit + done;
             PlcAddress from = first.Offset(bit / 16).WithBit(bit % 16);
             var command = MemoryAreaWriteCommand.Bits(FinsAddressing.Bit(from), values.Span.Slice(done, n));
-            await FinsAsync(command, 0, CommandEffect.Idempotent, ExpectNoData, "0102", cancellationToken).ConfigureAwait(false);
+            await FinsNoDataAsync(command, cancellationToken).ConfigureAwait(false);
             done += n;
         }
     }

@@ -192,8 +192,6 @@ public partial class HostLinkUnit
         var command = new MultipleMemoryAreaReadCommand(items);
         return FinsAsync(
             command,
-            command.ResponseDataLength,
-            CommandEffect.ReadOnly,
             static (data, c) =>
             {
                 FinsMultipleReadValue[] values = FinsMultipleReadValue.ReadAll(data, c);

@@ -21,15 +21,6 @@ namespace OmronHostLink.Planning;
 /// </remarks>
 public sealed class ReadPlanner
 {
-    // Framed sizes, in characters.
-    private const int CModeCommandChars = CModeCommand.PrefixLength + 8 + FrameWriter.FinalOverhead;
-    private const int CModeResponseFixed = CModeResponse.PrefixLength + CModeResponse.EndCodeLength;
-    private const int FinsCommandFixed = 5 + 1 + (2 * (FinsHeader.DirectLength + 2)) + FrameWriter.FinalOverhead;
-    private const int FinsResponseFixed = 5 + 2 + (2 * (FinsHeader.DirectLength + 4)) + FrameWriter.FinalOverhead;
-    private const int FinsAreaParameterChars = 2 * 6;
-    private const int FinsItemCommandChars = 2 * FinsMemoryAddress.Length;
-    private const int FinsItemResponseChars = 2 * 3;
-
     private readonly LineTimingCost _cost;
     private readonly double _turnaroundChars;
 
@@ -148,27 +139,23 @@ public sealed class ReadPlanner
     /// <summary>Characters (both ways) of one C-mode area read of <paramref name="words"/> words, and its frame exchanges.</summary>
     public static int CModeReadCharacters(PlcArea area, int words, out int exchanges)
     {
-        int command = CModeCommandChars + (area == PlcArea.Em ? 2 : 0);
-        int message = CModeResponseFixed + (4 * words);
-        exchanges = FrameWriter.CountFrames(message, CModeResponseFixed, 4);
-        return command + FrameWriter.WireLength(message, CModeResponseFixed, 4) + (exchanges - 1);
+        CModeArea read = CModeAddressing.AreaOf(area);
+        return CModeExchangeCharacters(AreaReadCommand.GetMessageLength(read), AreaReadCommand.MaxAnswerText(read, words), CModeResponse.EndCodeLength, CModeAreaInfo.CharactersPerEntry(read), out exchanges);
     }
 
     /// <summary>Characters (both ways) of one QQIR of <paramref name="words"/> registered words, and its frame exchanges.</summary>
     public static int CompoundReadCharacters(int words, out int exchanges)
-    {
-        int command = CModeCommand.PrefixLength + 2 + FrameWriter.FinalOverhead;
-        int message = CModeResponse.PrefixLength + CompoundCommands.AnswerFixed + (words * 5) - 1;
-        int fixedLength = CModeResponse.PrefixLength + CompoundCommands.AnswerFixed;
-        exchanges = FrameWriter.CountFrames(message, fixedLength, 1);
-        return command + FrameWriter.WireLength(message, fixedLength, 1) + (exchanges - 1);
-    }
+        => CompoundAnswerCharacters(CompoundCommands.DataLength(words, words * CompoundItem.WordAnswerLength), out exchanges);
 
-    /// <summary>Characters (both ways) of the QQMR registering <paramref name="words"/> words, and its frame exchanges.</summary>
-    internal static int CompoundRegisterCharacters(int words, out int exchanges)
+    /// <summary>Characters (both ways) of one QQIR whose answer data is <paramref name="dataLength"/> characters, and its frame exchanges.</summary>
+    internal static int CompoundAnswerCharacters(int dataLength, out int exchanges)
+        => CModeExchangeCharacters(CModeCommand.PrefixLength + CompoundCommands.ReadCommand.TextLength, CompoundCommands.AnswerFixed + dataLength, CompoundCommands.AnswerFixed, atom: 1, out exchanges);
+
+    /// <summary>Characters (both ways) of the QQMR registering <paramref name="items"/> items, and its frame exchanges.</summary>
+    internal static int CompoundRegisterCharacters(int items, out int exchanges)
     {
-        int message = CModeCommand.PrefixLength + 2 + (words * (CompoundItem.Length + 1)) - 1;
-        int fixedLength = CModeCommand.PrefixLength + 2 + CompoundItem.Length;
+        int message = CModeCommand.PrefixLength + CompoundRegisterCommand.GetTextLength(items);
+        int fixedLength = CModeCommand.PrefixLength + CompoundRegisterCommand.GetTextLength(1);
         exchanges = FrameWriter.CountFrames(message, fixedLength, CompoundItem.Length + 1);
         int answer = CModeResponse.PrefixLength + CompoundCommands.AnswerFixed + FrameWriter.FinalOverhead;
         return FrameWriter.WireLength(message, fixedLength, CompoundItem.Length + 1) + (exchanges - 1) + answer;
@@ -176,23 +163,32 @@ public sealed class ReadPlanner
 
     /// <summary>Characters (both ways) of one C-mode RG read of <paramref name="flags"/> completion flags, and its frame exchanges.</summary>
     internal static int CModeFlagCharacters(int flags, out int exchanges)
-    {
-        int message = CModeResponseFixed + flags;
-        exchanges = FrameWriter.CountFrames(message, CModeResponseFixed, 1);
-        return CModeCommandChars + FrameWriter.WireLength(message, CModeResponseFixed, 1) + (exchanges - 1);
-    }
+        => CModeExchangeCharacters(AreaReadCommand.GetMessageLength(CModeArea.TimerCounterStatus), AreaReadCommand.MaxAnswerText(CModeArea.TimerCounterStatus, flags), CModeResponse.EndCodeLength, CModeAreaInfo.CharactersPerEntry(CModeArea.TimerCounterStatus), out exchanges);
 
     /// <summary>Characters (both ways) of one FINS 0101 read of <paramref name="flags"/> completion flags (one byte each).</summary>
     internal static int FinsFlagCharacters(int flags)
-        => FinsCommandFixed + FinsAreaParameterChars + FinsResponseFixed + (2 * flags);
+        => FinsMessage.DirectCommandFrameLength(MemoryAreaReadCommand.ParametersLength) + FinsMessage.DirectResponseFrameLength(flags * FinsMemoryArea.BitSize);
 
     /// <summary>Characters (both ways) of one FINS 0101 read of <paramref name="words"/> words (at most 269).</summary>
     public static int FinsReadCharacters(int words)
-        => FinsCommandFixed + FinsAreaParameterChars + FinsResponseFixed + (4 * words);
+        => FinsMessage.DirectCommandFrameLength(MemoryAreaReadCommand.ParametersLength) + FinsMessage.DirectResponseFrameLength(words * FinsMemoryArea.WordSize);
 
     /// <summary>Characters (both ways) of one FINS 0104 read of <paramref name="items"/> words.</summary>
     public static int MultipleChars(int items)
-        => FinsCommandFixed + FinsResponseFixed + (items * (FinsItemCommandChars + FinsItemResponseChars));
+        => FinsMessage.DirectCommandFrameLength(items * FinsMemoryAddress.Length) + FinsMessage.DirectResponseFrameLength(items * MultipleMemoryAreaReadCommand.ResponseItemLength(FinsMemoryArea.WordSize));
+
+    /// <summary>
+    /// Characters both ways of one C-mode exchange: the command in one frame, then the answer (<paramref name="answerText"/>
+    /// characters after the header, of which <paramref name="answerFixed"/> stay in the first frame) cut into frames
+    /// between units of <paramref name="atom"/> characters, and the host's CR asking for each frame after the first.
+    /// </summary>
+    private static int CModeExchangeCharacters(int commandMessage, int answerText, int answerFixed, int atom, out int exchanges)
+    {
+        int answer = CModeResponse.PrefixLength + answerText;
+        int fixedLength = CModeResponse.PrefixLength + answerFixed;
+        exchanges = FrameWriter.CountFrames(answer, fixedLength, atom);
+        return commandMessage + FrameWriter.FinalOverhead + FrameWriter.WireLength(answer, fixedLength, atom) + (exchanges - 1);
+    }
 
     /// <summary>
     /// Per unit, whether one QQIR of some of its words (the dearest to read by area, up to 128) plus area reads of the
@@ -304,7 +300,7 @@ public sealed class ReadPlanner
     private void PlanSpace(int unit, PlcArea area, int bank, List<(int Start, int End)> clusters, List<PlannedRead> reads, SortedDictionary<int, List<PlcAddress>> multiple)
     {
         bool items = CommandSet == HostLinkCommandSet.Fins && UseMultipleRead;
-        const int ItemChars = FinsItemCommandChars + FinsItemResponseChars;
+        int itemChars = MultipleChars(1) - MultipleChars(0);
         int n = clusters.Count;
 
         // best[i]: cheapest way to read clusters 0..i-1; from[i] = j: clusters j..i-1 are one area read; -1: cluster i-1 as 0104 items.
@@ -325,7 +321,7 @@ public sealed class ReadPlanner
 
             if (items)
             {
-                double cost = best[i - 1] + ((clusters[i - 1].End - clusters[i - 1].Start) * ItemChars);
+                double cost = best[i - 1] + ((clusters[i - 1].End - clusters[i - 1].Start) * itemChars);
                 if (cost < best[i])
                 {
                     best[i] = cost;

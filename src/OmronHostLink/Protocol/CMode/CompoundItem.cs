@@ -40,6 +40,15 @@ internal readonly struct CompoundItem : IEquatable<CompoundItem>
     /// <summary>Characters of one item in QQMR: area 4, word 4, format 2.</summary>
     public const int Length = 10;
 
+    /// <summary>Characters of a word in the QQIR answer: four hex digits.</summary>
+    public const int WordAnswerLength = 4;
+
+    /// <summary>Characters of a bit (or a completion flag alone) in the QQIR answer: 0 or 1.</summary>
+    public const int BitAnswerLength = 1;
+
+    /// <summary>Characters of a timer/counter read with <c>CH</c> in the QQIR answer: the completion flag, then the PV.</summary>
+    public const int TimerCounterAnswerLength = BitAnswerLength + WordAnswerLength;
+
     /// <summary>The most items one registration holds (a timer/counter PV counts as two).</summary>
     public const int MaxWeight = 128;
 
@@ -76,7 +85,7 @@ internal readonly struct CompoundItem : IEquatable<CompoundItem>
     public int Weight => IsTimerCounterWord ? 2 : 1;
 
     /// <summary>Characters the item takes in the QQIR answer (without the comma before it).</summary>
-    public int AnswerLength => IsBit ? 1 : IsTimerCounterWord ? 5 : 4;
+    public int AnswerLength => IsBit ? BitAnswerLength : IsTimerCounterWord ? TimerCounterAnswerLength : WordAnswerLength;
 
     /// <summary>A word item.</summary>
     /// <exception cref="ArgumentOutOfRangeException">The word or bank is beyond what QQ reaches.</exception>
