@@ -112,86 +112,8 @@ public partial class HostLinkUnit
     public async Task CancelForcedBitsAsync(CancellationToken cancellationToken = default)
         => await FinsNoDataAsync(new ForcedSetResetCancelCommand(), cancellationToken).ConfigureAwait(false);
 
-    // ---- Used by the protocol-neutral members ----
-
-    private async Task<ushort[]> FinsReadWordsAsync(PlcAddress address, int count, CancellationToken cancellationToken)
-    {
-        // Beyond one command's limit the read is split into the fewest commands; the words are then not one snapshot.
-        var words = new ushort[count];
-        for (int done = 0; done < count;)
-        {
-            int n = Math.Min(MemoryAreaReadCommand.MaxWords, count - done);
-            var command = new MemoryAreaReadCommand(FinsAddressing.Word(address.Offset(done)), n);
-            await FinsAsync(
-                command,
-                static (data, s) =>
-                {
-                    FinsWords.Read(data, s.words.AsSpan(s.done, s.n));
-                    return true;
-                },
-                (words, done, n),
-                cancellationToken).ConfigureAwait(false);
-            done += n;
-        }
-
-        return words;
-    }
-
-    private async Task FinsWriteWordsAsync(PlcAddress address, ReadOnlyMemory<ushort> words, CancellationToken cancellationToken)
-    {
-        for (int done = 0; done < words.Length;)
-        {
-            int n = Math.Min(MemoryAreaWriteCommand.MaxWords, words.Length - done);
-            var command = MemoryAreaWriteCommand.Words(FinsAddressing.Word(address.Offset(done)), words.Span.Slice(done, n));
-            await FinsNoDataAsync(command, cancellationToken).ConfigureAwait(false);
-            done += n;
-        }
-    }
-
-    private async ValueTask FinsWriteBitAsync(PlcAddress address, bool value, CancellationToken cancellationToken)
-    {
-        address.EnsureRange(1, HostLinkCommandSet.Fins, forWrite: true);
-        EnsureModel(await GetModelProfileAsync(cancellationToken).ConfigureAwait(false), address, 1, HostLinkCommandSet.Fins, forWrite: true);
-        var command = MemoryAreaWriteCommand.Bits(FinsAddressing.Bit(address), new[] { value });
-        await FinsNoDataAsync(command, cancellationToken).ConfigureAwait(false);
-    }
-
-    private async ValueTask<bool[]> FinsReadCompletionFlagsAsync(PlcAddress address, int count, CancellationToken cancellationToken)
-    {
-        // Beyond one answer frame's bits the read is split into the fewest commands, as word reads are.
-        var flags = new bool[count];
-        for (int done = 0; done < count;)
-        {
-            int n = Math.Min(MemoryAreaReadCommand.MaxBits, count - done);
-            bool[] part = await FinsAsync(
-                new MemoryAreaReadCommand(FinsAddressing.Item(address.Offset(done)), n),
-                static (data, c) => FinsBits.Read(data, c),
-                n,
-                cancellationToken).ConfigureAwait(false);
-            part.CopyTo(flags, done);
-            done += n;
-        }
-
-        return flags;
-    }
-
-    private async Task<PlcStatus> FinsReadStatusAsync(CancellationToken cancellationToken)
-    {
-        FinsCpuStatus status = await ReadCpuStatusAsync(cancellationToken).ConfigureAwait(false);
-        PlcMode mode = status.Mode switch
-        {
-            FinsCpuMode.Run => PlcMode.Run,
-            FinsCpuMode.Monitor => PlcMode.Monitor,
-            _ => PlcMode.Program,
-        };
-        string message = status.ErrorMessage.Trim();
-
-        // CONTROLLER STATUS READ has no MS status word: its bits (UM protection, program area) are not reported.
-        return new PlcStatus(mode, statusWord: null, message.Length == 0 ? null : message);
-    }
-
     /// <summary>Sends one FINS command whose answer carries no data.</summary>
-    private protected async ValueTask FinsNoDataAsync(FinsCommand command, CancellationToken cancellationToken)
+    internal async ValueTask FinsNoDataAsync(FinsCommand command, CancellationToken cancellationToken)
         => await FinsAsync(
             command,
             static (data, c) => data.IsEmpty ? true : throw new HostLinkFrameException(FrameError.WrongLength, $"The answer to FINS {c.Row} should carry no data but carried {data.Length} bytes."),
@@ -200,7 +122,7 @@ public partial class HostLinkUnit
 
     /// <summary>Sends one FINS command in an FA frame and decodes the data of a successful answer.</summary>
     /// <remarks>How often it is repeated and how long its answer may be come from the command (<see cref="FinsCommand.Effect"/>, <see cref="FinsCommand.MaxResponseDataLength"/>).</remarks>
-    private protected ValueTask<TResult> FinsAsync<TState, TResult>(FinsCommand command, ResponseDecoder<TState, TResult> decodeData, TState state, CancellationToken cancellationToken)
+    internal ValueTask<TResult> FinsAsync<TState, TResult>(FinsCommand command, ResponseDecoder<TState, TResult> decodeData, TState state, CancellationToken cancellationToken)
     {
         // A model known to have no FINS over Host Link is not sent FA frames at all.
         if (Models.TryGet(UnitNumber, out PlcModelProfile? model) && model is not null)

@@ -17,42 +17,17 @@ public partial class HostLinkUnit
             ? Task.FromResult(known)
             : Models.GetAsync(UnitNumber, ct => new ValueTask<PlcModel>(ReadModelAsync(ct)), cancellationToken);
 
-    /// <summary>Refuses, before anything is sent, what <paramref name="model"/> does not have or accept.</summary>
-    private protected static void EnsureModel(PlcModelProfile? model, PlcAddress address, int count, HostLinkCommandSet commandSet, bool forWrite)
-    {
-        if (model is null)
-        {
-            return;
-        }
-
-        if (commandSet == HostLinkCommandSet.Fins)
-        {
-            model.EnsureFins();
-        }
-
-        model.EnsureRange(address.AsWord(), count, forWrite);
-    }
-
     private async Task<ushort[]> ReadWordsOfDetectedModelAsync(PlcAddress address, int count, CancellationToken cancellationToken)
     {
         PlcModelProfile? model = await GetModelProfileAsync(cancellationToken).ConfigureAwait(false);
-        EnsureModel(model, address, count, Options.CommandSet, forWrite: false);
-        return Options.CommandSet == HostLinkCommandSet.Fins
-            ? await FinsReadWordsAsync(address, count, cancellationToken).ConfigureAwait(false)
-            : await CModeReadWordsAsync(address, count, cancellationToken, model).ConfigureAwait(false);
+        Commands.EnsureModel(model, address, count, forWrite: false);
+        return await Commands.ReadWordsAsync(this, address, count, model, cancellationToken).ConfigureAwait(false);
     }
 
     private async Task WriteWordsOfDetectedModelAsync(PlcAddress address, ReadOnlyMemory<ushort> words, CancellationToken cancellationToken)
     {
         PlcModelProfile? model = await GetModelProfileAsync(cancellationToken).ConfigureAwait(false);
-        EnsureModel(model, address, words.Length, Options.CommandSet, forWrite: true);
-        if (Options.CommandSet == HostLinkCommandSet.Fins)
-        {
-            await FinsWriteWordsAsync(address, words, cancellationToken).ConfigureAwait(false);
-        }
-        else
-        {
-            await CModeWriteWordsAsync(address, words, cancellationToken, model).ConfigureAwait(false);
-        }
+        Commands.EnsureModel(model, address, words.Length, forWrite: true);
+        await Commands.WriteWordsAsync(this, address, words, model, cancellationToken).ConfigureAwait(false);
     }
 }

@@ -65,7 +65,7 @@ public partial class HostLinkUnit
     }
 
     /// <summary>The plan this view's reads of <paramref name="tags"/> use: its command set and line, tags without a unit from this unit.</summary>
-    private ReadPlan Plan(IReadOnlyList<PlcTag> tags) => new ReadPlanner(Options.CommandSet, LineTiming) { UseCompoundRead = Options.UseCompoundRead }.Plan(tags, UnitNumber);
+    private ReadPlan Plan(IReadOnlyList<PlcTag> tags) => new ReadPlanner(Commands.Kind, LineTiming) { UseCompoundRead = Options.UseCompoundRead }.Plan(tags, UnitNumber);
 
     private ValueTask<ushort[]> ExecuteAsync(PlannedRead read, CancellationToken cancellationToken)
     {
@@ -74,58 +74,29 @@ public partial class HostLinkUnit
             return ExecuteOnDetectedModelAsync(read, cancellationToken);
         }
 
-        EnsureModel(model, read);
-        switch (read.Kind)
-        {
-            case PlannedReadKind.FinsMultiple:
-                return ReadScatteredWordsAsync(read.Items, cancellationToken);
-            case PlannedReadKind.CModeCompound:
-                return ReadCompoundWordsAsync(read, model, cancellationToken);
-            case PlannedReadKind.CModeCompletionFlags:
-                return FlagWordsAsync(CModeReadCompletionFlagsAsync(read.Start, read.Count, cancellationToken, model));
-            case PlannedReadKind.FinsCompletionFlags:
-                read.Start.EnsureRange(read.Count, HostLinkCommandSet.Fins, forWrite: false);
-                return FlagWordsAsync(FinsReadCompletionFlagsAsync(read.Start, read.Count, cancellationToken));
-            case PlannedReadKind.FinsArea:
-                read.Start.EnsureRange(read.Count, HostLinkCommandSet.Fins, forWrite: false);
-                return new ValueTask<ushort[]>(FinsReadWordsAsync(read.Start, read.Count, cancellationToken));
-            default:
-                read.Start.EnsureRange(read.Count, HostLinkCommandSet.CMode, forWrite: false);
-                return CModeReadWordsAsync(read.Start, read.Count, cancellationToken, model);
-        }
-    }
-
-    // The plan was made without the model; what the model lacks (FINS, memory) is refused here, before the read is sent.
-    private static void EnsureModel(PlcModelProfile? model, PlannedRead read)
-    {
-        if (model is null)
-        {
-            return;
-        }
-
-        if (read.Kind == PlannedReadKind.CModeCompound)
+        // The plan was made without the model and names its command by kind, whatever this view's command set: the
+        // command set of the read is asked, and what the model lacks (FINS, memory) is refused before it is sent.
+        UnitCommandSet commands = UnitCommandSet.For(read.Kind is PlannedReadKind.FinsArea or PlannedReadKind.FinsCompletionFlags or PlannedReadKind.FinsMultiple ? HostLinkCommandSet.Fins : HostLinkCommandSet.CMode);
+        if (read.Kind is PlannedReadKind.FinsMultiple or PlannedReadKind.CModeCompound)
         {
             foreach (PlcAddress item in read.Items)
             {
-                EnsureModel(model, item, 1, HostLinkCommandSet.CMode, forWrite: false);
+                commands.EnsureModel(model, item, 1, forWrite: false);
             }
-
-            return;
         }
-
-        if (read.Kind == PlannedReadKind.FinsMultiple)
+        else
         {
-            model.EnsureFins();
-            foreach (PlcAddress item in read.Items)
-            {
-                model.EnsureRange(item.AsWord(), 1, forWrite: false);
-            }
-
-            return;
+            read.Start.EnsureRange(read.Count, commands.Kind, forWrite: false);
+            commands.EnsureModel(model, read.Start, read.Count, forWrite: false);
         }
 
-        bool fins = read.Kind is PlannedReadKind.FinsArea or PlannedReadKind.FinsCompletionFlags;
-        EnsureModel(model, read.Start, read.Count, fins ? HostLinkCommandSet.Fins : HostLinkCommandSet.CMode, forWrite: false);
+        return read.Kind switch
+        {
+            PlannedReadKind.FinsMultiple => ReadScatteredWordsAsync(read.Items, cancellationToken),
+            PlannedReadKind.CModeCompound => ReadCompoundWordsAsync(read, model, cancellationToken),
+            PlannedReadKind.CModeCompletionFlags or PlannedReadKind.FinsCompletionFlags => FlagWordsAsync(commands.ReadCompletionFlagsAsync(this, read.Start, read.Count, model, cancellationToken)),
+            _ => commands.ReadWordsAsync(this, read.Start, read.Count, model, cancellationToken),
+        };
     }
 
     private async ValueTask<ushort[]> ExecuteOnDetectedModelAsync(PlannedRead read, CancellationToken cancellationToken)
