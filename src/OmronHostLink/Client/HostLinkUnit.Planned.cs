@@ -139,7 +139,9 @@ public partial class HostLinkUnit
         var result = new ushort[items.Length];
         for (int i = 0; i < result.Length; i++)
         {
-            result[i] = words[read.Items[i]];
+            PlcAddress item = read.Items[i];
+            ushort word = words[item.AsWord()];
+            result[i] = item.IsBit ? (PlcWords.GetBit(word, item.Bit) ? (ushort)1 : (ushort)0) : word;
         }
 
         return result;

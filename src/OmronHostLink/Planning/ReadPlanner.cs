@@ -19,7 +19,7 @@ namespace OmronHostLink.Planning;
 /// 135 items (what one FA command frame holds) allows. Timer and counter completion flags (bit tags on <c>T5</c>,
 /// <c>C7</c>) are read by their own commands (C-mode RG, FINS 0101 with bit access), apart from the present values.
 /// </remarks>
-public sealed class ReadPlanner
+public sealed partial class ReadPlanner
 {
     private readonly LineTimingCost _cost;
     private readonly double _turnaroundChars;
@@ -62,9 +62,10 @@ public sealed class ReadPlanner
     public bool UseMultipleRead { get; }
 
     /// <summary>
-    /// Whether C-mode plans may use QQ, the compound read: per unit, up to 128 scattered words (CIO, LR, HR, AR, DM, EM;
-    /// timers, counters and completion flags keep their area reads) read with one QQIR where that costs fewer characters
-    /// than their area reads. Default true; false for PLCs without QQ (see <c>HostLinkClientOptions.UseCompoundRead</c>).
+    /// Whether C-mode plans may use QQ, the compound read: per unit, up to 128 items — scattered words of any area C-mode
+    /// reaches, timer/counter PVs (two items each), and bits of CIO, LR, HR and AR whose word no other tag needs —
+    /// read with one QQIR where that costs fewer characters than their area reads (completion flags keep their RG
+    /// reads). Default true; false for PLCs without QQ (see <c>HostLinkClientOptions.UseCompoundRead</c>).
     /// </summary>
     public bool UseCompoundRead { get; init; } = true;
 
@@ -77,6 +78,7 @@ public sealed class ReadPlanner
         Guard.NotNull(tags);
         Guard.Unit(defaultUnit);
         var units = new int[tags.Count];
+        var compoundNeeds = CommandSet == HostLinkCommandSet.CMode && UseCompoundRead ? new CompoundNeeds() : null;
         var spaces = new SortedDictionary<(int Unit, PlcArea Area, int Bank), List<(int Start, int End)>>();
         var flagSpaces = new SortedDictionary<(int Unit, PlcArea Area, int Bank), List<(int Start, int End)>>();
         for (int t = 0; t < tags.Count; t++)
@@ -103,6 +105,7 @@ public sealed class ReadPlanner
             }
 
             spans.Add((word.Word, word.Word + tag.WordCount));
+            compoundNeeds?.Add(units[t], tag);
         }
 
         var reads = new List<PlannedRead>();
@@ -118,9 +121,9 @@ public sealed class ReadPlanner
             PlanFlags(space.Key.Unit, space.Key.Area, Clusters(space.Value), reads);
         }
 
-        if (CommandSet == HostLinkCommandSet.CMode && UseCompoundRead)
+        if (compoundNeeds is not null)
         {
-            PlanCompound(spaces, reads);
+            PlanCompound(spaces, reads, compoundNeeds);
         }
 
         foreach (KeyValuePair<int, List<PlcAddress>> unitItems in multiple)
@@ -188,80 +191,6 @@ public sealed class ReadPlanner
         int fixedLength = CModeResponse.PrefixLength + answerFixed;
         exchanges = FrameWriter.CountFrames(answer, fixedLength, atom);
         return commandMessage + FrameWriter.FinalOverhead + FrameWriter.WireLength(answer, fixedLength, atom) + (exchanges - 1);
-    }
-
-    /// <summary>
-    /// Per unit, whether one QQIR of some of its words (the dearest to read by area, up to 128) plus area reads of the
-    /// rest costs fewer characters a cycle than the area reads alone; if so the unit's area reads of those areas are
-    /// replaced. The registration is not counted here: it is paid once, not per cycle.
-    /// </summary>
-    private void PlanCompound(SortedDictionary<(int Unit, PlcArea Area, int Bank), List<(int Start, int End)>> spaces, List<PlannedRead> reads)
-    {
-        foreach (int unit in spaces.Keys.Select(k => k.Unit).Distinct().ToArray())
-        {
-            var eligible = spaces.Where(s => s.Key.Unit == unit && s.Key.Area is not (PlcArea.Timer or PlcArea.Counter)).ToArray();
-            if (eligible.Length == 0)
-            {
-                continue;
-            }
-
-            List<PlannedRead> current = reads.Where(r => r.Kind == PlannedReadKind.CModeArea && r.Unit == unit && r.Start.Area is not (PlcArea.Timer or PlcArea.Counter)).ToList();
-            double currentCost = current.Sum(r => r.Characters + (r.Exchanges * _turnaroundChars));
-
-            // The clusters dearest per word when read alone go to QQ first.
-            var clusters = eligible
-                .SelectMany(s => Clusters(s.Value).Select(c => (s.Key.Area, s.Key.Bank, c.Start, c.End)))
-                .OrderByDescending(c => RangeCost(c.Area, c.End - c.Start) / (c.End - c.Start))
-                .ThenBy(c => c.Area).ThenBy(c => c.Start)
-                .ToList();
-            var words = new List<PlcAddress>();
-            var rest = new Dictionary<(PlcArea Area, int Bank), List<(int Start, int End)>>();
-            foreach ((PlcArea area, int bank, int start, int end) in clusters)
-            {
-                if (words.Count + (end - start) <= CompoundItem.MaxWeight)
-                {
-                    for (int w = start; w < end; w++)
-                    {
-                        words.Add(PlcAddress.WordOf(area, w, bank));
-                    }
-                }
-                else
-                {
-                    if (!rest.TryGetValue((area, bank), out List<(int, int)>? list))
-                    {
-                        rest[(area, bank)] = list = new List<(int, int)>();
-                    }
-
-                    list.Add((start, end));
-                }
-            }
-
-            var restReads = new List<PlannedRead>();
-            foreach (KeyValuePair<(PlcArea Area, int Bank), List<(int Start, int End)>> space in rest)
-            {
-                PlanSpace(unit, space.Key.Area, space.Key.Bank, Clusters(space.Value), restReads, new SortedDictionary<int, List<PlcAddress>>());
-            }
-
-            int chars = CompoundReadCharacters(words.Count, out int exchanges);
-            double compoundCost = chars + (exchanges * _turnaroundChars) + restReads.Sum(r => r.Characters + (r.Exchanges * _turnaroundChars));
-            if (words.Count == 0 || compoundCost >= currentCost)
-            {
-                continue;
-            }
-
-            // Area reads of the same words, for a cycle that would have to pay the registration.
-            var fallback = new List<PlannedRead>();
-            foreach (IGrouping<(PlcArea Area, int Bank), PlcAddress> space in words.GroupBy(w => (w.Area, w.Bank)))
-            {
-                var spans = space.Select(w => (w.Word, w.Word + 1)).ToList();
-                PlanSpace(unit, space.Key.Area, space.Key.Bank, Clusters(spans), fallback, new SortedDictionary<int, List<PlcAddress>>());
-            }
-
-            int at = reads.IndexOf(current[0]);
-            reads.RemoveAll(current.Contains);
-            var compound = new PlannedRead(PlannedReadKind.CModeCompound, unit, words[0], words.Count, words.ToArray(), chars, exchanges, fallback, CompoundRegisterCharacters(words.Count, out _));
-            reads.InsertRange(Math.Min(at, reads.Count), restReads.Prepend(compound));
-        }
     }
 
     private static List<(int Start, int End)> Clusters(List<(int Start, int End)> spans)

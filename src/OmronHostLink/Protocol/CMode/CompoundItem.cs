@@ -95,7 +95,13 @@ internal readonly struct CompoundItem : IEquatable<CompoundItem>
     /// <exception cref="ArgumentOutOfRangeException">The word, bit or bank is beyond what QQ reaches.</exception>
     public static CompoundItem ForBit(CompoundArea area, int word, int bit, int bank = 0) => Create(area, word, bit, bank);
 
-    /// <summary>The item reading <paramref name="address"/>: its bit for a bit address, else its word.</summary>
+    /// <summary>
+    /// Whether QQ reads single bits of <paramref name="area"/>: CIO, LR, HR and AR (DM and EM are read as words whatever
+    /// the format; a timer or counter's "bit" is its completion flag).
+    /// </summary>
+    public static bool ReadsBits(PlcArea area) => area is PlcArea.Cio or PlcArea.Link or PlcArea.Holding or PlcArea.Auxiliary;
+
+    /// <summary>The item reading <paramref name="address"/>: its bit for a bit address of an area <see cref="ReadsBits"/>, else its word.</summary>
     /// <exception cref="ArgumentException">The address is in the work area, which C-mode cannot reach.</exception>
     /// <exception cref="ArgumentOutOfRangeException">The address is beyond what QQ reaches.</exception>
     public static CompoundItem For(PlcAddress address)
@@ -112,7 +118,7 @@ internal readonly struct CompoundItem : IEquatable<CompoundItem>
             PlcArea.Em => CompoundArea.Em,
             _ => throw new ArgumentException($"{address} is in the {PlcAreaInfo.Name(address.Area)}, which C-mode cannot reach; use FINS.", nameof(address)),
         };
-        return address.IsBit ? ForBit(area, address.Word, address.Bit, address.Bank) : ForWord(area, address.Word, address.Bank);
+        return address.IsBit && ReadsBits(address.Area) ? ForBit(area, address.Word, address.Bit, address.Bank) : ForWord(area, address.Word, address.Bank);
     }
 
     /// <summary>The PLC word (or timer/counter) the item names; EM's current bank is taken as <paramref name="currentBank"/>.</summary>
