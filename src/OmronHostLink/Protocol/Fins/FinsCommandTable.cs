@@ -36,23 +36,7 @@ internal sealed class FinsCommandTable
 
     /// <summary>This table with <paramref name="rows"/> added; a row whose code is already present replaces it.</summary>
     public FinsCommandTable With(params FinsCommandRow[] rows)
-    {
-        var list = new List<FinsCommandRow>(_rows);
-        foreach (FinsCommandRow row in rows)
-        {
-            int at = list.FindIndex(r => r.Code == row.Code);
-            if (at >= 0)
-            {
-                list[at] = row;
-            }
-            else
-            {
-                list.Add(row);
-            }
-        }
-
-        return new FinsCommandTable(list.ToArray());
-    }
+        => new FinsCommandTable(TableRows.With(_rows, rows, r => r.Code));
 
     /// <summary>The row of a command code, or null.</summary>
     public FinsCommandRow? Find(ushort code)
