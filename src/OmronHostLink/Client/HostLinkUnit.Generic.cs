@@ -105,8 +105,9 @@ public partial class HostLinkUnit
 
     /// <summary>
     /// Writes consecutive values of type <typeparamref name="T"/> from <paramref name="address"/> as one command where
-    /// the protocol allows (C-mode spans frames; FINS splits beyond one frame). Bits: FINS bit writes, or with
-    /// <see cref="HostLinkClientOptions.AllowReadModifyWriteBits"/> and C-mode one read and one write of the words they cover.
+    /// the protocol allows (C-mode spans frames; FINS splits beyond one frame). Bits: FINS bit writes; a C-mode view
+    /// refuses them unless <see cref="HostLinkClientOptions.AllowReadModifyWriteBits"/> is set, and then makes one read
+    /// and one write of the words they cover (see <see cref="WriteBitAsync(PlcAddress, bool, CancellationToken)"/>).
     /// </summary>
     /// <typeparam name="T">bool, short, ushort, int, uint, float, double, <see cref="Bcd16"/> or <see cref="Bcd32"/>.</typeparam>
     /// <param name="address">The address of the first value.</param>
