@@ -1,8 +1,14 @@
-Imports System.Threading
+Imports System.Collections.Concurrent
 
 ''' <summary>What a WinForms Label gives the code under test: text, set on the UI thread.</summary>
 Public NotInheritable Class Label
+    Private ReadOnly _history As BlockingCollection(Of String)
     Private _text As String = ""
+
+    ''' <param name="history">Where every text set is also recorded, for a test to wait on; Nothing for none.</param>
+    Public Sub New(Optional history As BlockingCollection(Of String) = Nothing)
+        _history = history
+    End Sub
 
     Public Property Text As String
         Get
@@ -11,6 +17,7 @@ Public NotInheritable Class Label
         Set(value As String)
             TextThreadId = Environment.CurrentManagedThreadId
             _text = value
+            _history?.Add(value)
         End Set
     End Property
 

@@ -98,6 +98,19 @@ Public Class MigrationGuideTests
         End Using
     End Sub
 
+    <Fact>
+    Public Sub A_port_that_cannot_be_opened_is_ConnectionLost_on_the_UI_thread()
+        Using ui As New UiThread(), form As New WatchingForm()
+            ui.Run(Sub() form.StartWatching("/tmp/omronhostlink-no-such-port"), Limit)
+
+            Dim lost = Take(form.Changes)
+            Assert.StartsWith("PLC not answering: ", lost)
+            Assert.Contains("/tmp/omronhostlink-no-such-port", lost)
+            Assert.Equal(ui.ThreadId, form.Label2.TextThreadId)
+            Assert.True(form.HostLinkPlc1.IsWatching, "the watch keeps trying")
+        End Using
+    End Sub
+
     Private Shared Sub ThrowingHandler(sender As Object, e As TagValueChangedEventArgs)
         Throw New InvalidOperationException("a bug in a handler")
     End Sub

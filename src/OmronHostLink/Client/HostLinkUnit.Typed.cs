@@ -29,6 +29,11 @@ public partial class HostLinkUnit
         => (await ReadAsync<Bcd16>(address, cancellationToken).ConfigureAwait(false)).Value;
 
     /// <summary>Reads ASCII text stored two characters a word, high byte first, up to <paramref name="length"/> characters or the first NUL.</summary>
+    /// <exception cref="HostLinkEndCodeException">The PLC refused the command (its end code, header and unit are in the exception).</exception>
+    /// <exception cref="HostLinkTimeoutException">No answer in time, after the read retries.</exception>
+    /// <exception cref="HostLinkFrameException">The answer was damaged, from another unit, or not the answer to this command: never returned as data.</exception>
+    /// <exception cref="HostLinkConnectionException">The port or socket could not be opened, or was lost or closed during the exchange.</exception>
+    /// <exception cref="ObjectDisposedException">The client was disposed.</exception>
     public async Task<string> ReadStringAsync(string address, int length, CancellationToken cancellationToken = default)
     {
         Guard.InRange(length, 1, 20000);
@@ -62,6 +67,11 @@ public partial class HostLinkUnit
 
     /// <summary>Writes ASCII text two characters a word, high byte first (an odd length is padded with NUL).</summary>
     /// <exception cref="ArgumentException">The text holds a character outside ASCII (nothing is sent).</exception>
+    /// <exception cref="HostLinkEndCodeException">The PLC refused the write (01: C-mode writes are refused in RUN mode).</exception>
+    /// <exception cref="HostLinkTimeoutException">No answer in time (a write is repeated only with <see cref="HostLinkClientOptions.WriteRetries"/>).</exception>
+    /// <exception cref="HostLinkFrameException">The answer was damaged, from another unit, or not the answer to this command: never returned as data.</exception>
+    /// <exception cref="HostLinkConnectionException">The port or socket could not be opened, or was lost or closed during the exchange.</exception>
+    /// <exception cref="ObjectDisposedException">The client was disposed.</exception>
     public Task WriteStringAsync(string address, string text, CancellationToken cancellationToken = default)
         => WriteWordsAsync(address, PlcWords.FromString(text), cancellationToken);
 
