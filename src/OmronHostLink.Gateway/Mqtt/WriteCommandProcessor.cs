@@ -173,14 +173,14 @@ public sealed class WriteCommandProcessor
         string? error = null;
         try
         {
-            HostLinkUnit unitView = client.Unit(tag.Unit);
             if (tag.Type == PlcValueType.Bit)
             {
-                await unitView.WriteBitAsync(tag.Address, words[0] != 0, cancellationToken).ConfigureAwait(false);
+                // A bit is written on its own with FINS 0102 whatever the link's command set (C-mode has no bit write).
+                await client.Unit(tag.Unit, HostLinkCommandSet.Fins).WriteBitAsync(tag.Address, words[0] != 0, cancellationToken).ConfigureAwait(false);
             }
             else
             {
-                await unitView.WriteWordsAsync(tag.Address.AsWord(), words, cancellationToken).ConfigureAwait(false);
+                await client.Unit(tag.Unit).WriteWordsAsync(tag.Address.AsWord(), words, cancellationToken).ConfigureAwait(false);
             }
         }
         catch (HostLinkEndCodeException e)

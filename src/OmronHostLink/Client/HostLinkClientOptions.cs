@@ -32,12 +32,18 @@ public sealed class HostLinkClientOptions
     /// </summary>
     public int WriteRetries { get; set; }
 
-    /// <summary>Which command set (C-mode or FINS) reads and writes use where both can do the job. Default C-mode.</summary>
+    /// <summary>
+    /// Which command set (C-mode or FINS) reads, writes, bits, status and mode use. Default C-mode, which every Host
+    /// Link PLC speaks; FINS (CS/CJ/CP) reaches what C-mode cannot: the work area (W), DM/EM beyond 9999, and bit writes.
+    /// A C-mode client refuses those before anything is sent and says how to switch: this option, or a FINS view of one
+    /// unit, <c>plc.Unit(0, HostLinkCommandSet.Fins)</c>. The FINS services (clock, CPU data, forcing …) use FINS on either.
+    /// </summary>
     public HostLinkCommandSet CommandSet { get; set; } = HostLinkCommandSet.CMode;
 
     /// <summary>
-    /// Allow bit writes by reading the word, changing the bit and writing the word back, where FINS bit write is not wanted.
-    /// Off by default: anything that changes the word between the read and the write (the PLC program) is overwritten.
+    /// Lets a C-mode client write bits (C-mode has no bit write) by reading the word, changing the bit and writing the
+    /// word back: for PLCs without FINS. Off by default, and a C-mode client refuses bit writes: anything that changes
+    /// the word between the read and the write (the PLC program) is overwritten. With FINS bits are written directly.
     /// </summary>
     public bool AllowReadModifyWriteBits { get; set; }
 

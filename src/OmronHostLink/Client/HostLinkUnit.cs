@@ -69,6 +69,11 @@ public partial class HostLinkUnit
     /// </summary>
     /// <exception cref="FormatException">The address is not valid.</exception>
     /// <exception cref="ArgumentException">The range does not fit the area or the protocol (nothing is sent).</exception>
+    /// <exception cref="HostLinkEndCodeException">The PLC refused the command (its end code, header and unit are in the exception).</exception>
+    /// <exception cref="HostLinkTimeoutException">No answer in time, after the read retries.</exception>
+    /// <exception cref="HostLinkFrameException">The answer was damaged, from another unit, or not the answer to this command: never returned as data.</exception>
+    /// <exception cref="HostLinkConnectionException">The port or socket could not be opened, or was lost or closed during the exchange.</exception>
+    /// <exception cref="ObjectDisposedException">The client was disposed.</exception>
     public Task<ushort[]> ReadWordsAsync(string address, int count, CancellationToken cancellationToken = default)
         => ReadWordsAsync(PlcAddress.Parse(address), count, cancellationToken);
 
@@ -97,6 +102,11 @@ public partial class HostLinkUnit
     /// 267 words, what one FA command frame holds). Completes only when the PLC answered end code 00.
     /// </summary>
     /// <exception cref="HostLinkEndCodeException">The PLC refused the write (for example 01: C-mode writes are refused in RUN mode).</exception>
+    /// <exception cref="FinsEndCodeException">The PLC refused a FINS write.</exception>
+    /// <exception cref="HostLinkTimeoutException">No answer in time (a write is repeated only with <see cref="HostLinkClientOptions.WriteRetries"/>).</exception>
+    /// <exception cref="HostLinkFrameException">The answer was damaged, from another unit, or not the answer to this command: never returned as data.</exception>
+    /// <exception cref="HostLinkConnectionException">The port or socket could not be opened, or was lost or closed during the exchange.</exception>
+    /// <exception cref="ObjectDisposedException">The client was disposed.</exception>
     public Task WriteWordsAsync(string address, ReadOnlyMemory<ushort> words, CancellationToken cancellationToken = default)
         => WriteWordsAsync(PlcAddress.Parse(address), words, cancellationToken);
 
@@ -123,6 +133,11 @@ public partial class HostLinkUnit
     // ---- Status, mode, errors, model, test ----
 
     /// <summary>Reads the operating mode, the status word and any FAL/FALS message (C-mode MS; FINS 0601 when the protocol is FINS).</summary>
+    /// <exception cref="HostLinkEndCodeException">The PLC refused the command (its end code, header and unit are in the exception).</exception>
+    /// <exception cref="HostLinkTimeoutException">No answer in time, after the read retries.</exception>
+    /// <exception cref="HostLinkFrameException">The answer was damaged, from another unit, or not the answer to this command: never returned as data.</exception>
+    /// <exception cref="HostLinkConnectionException">The port or socket could not be opened, or was lost or closed during the exchange.</exception>
+    /// <exception cref="ObjectDisposedException">The client was disposed.</exception>
     public Task<PlcStatus> ReadStatusAsync(CancellationToken cancellationToken = default)
         => Options.CommandSet == HostLinkCommandSet.Fins
             ? FinsReadStatusAsync(cancellationToken)
@@ -132,6 +147,12 @@ public partial class HostLinkUnit
     /// Changes the operating mode (C-mode SC; FINS 0401/0402 when the protocol is FINS). Leaving RUN or MONITOR stops
     /// the machine's program: callers decide that, not the library.
     /// </summary>
+    /// <exception cref="HostLinkEndCodeException">The PLC refused the change.</exception>
+    /// <exception cref="FinsEndCodeException">The PLC refused a FINS change.</exception>
+    /// <exception cref="HostLinkTimeoutException">No answer in time (a write is repeated only with <see cref="HostLinkClientOptions.WriteRetries"/>).</exception>
+    /// <exception cref="HostLinkFrameException">The answer was damaged, from another unit, or not the answer to this command: never returned as data.</exception>
+    /// <exception cref="HostLinkConnectionException">The port or socket could not be opened, or was lost or closed during the exchange.</exception>
+    /// <exception cref="ObjectDisposedException">The client was disposed.</exception>
     public async Task SetModeAsync(PlcMode mode, CancellationToken cancellationToken = default)
     {
         if (Options.CommandSet == HostLinkCommandSet.Fins)
@@ -144,10 +165,20 @@ public partial class HostLinkUnit
     }
 
     /// <summary>Reads the error information (MF), clearing the errors afterwards when <paramref name="clear"/> is true.</summary>
+    /// <exception cref="HostLinkEndCodeException">The PLC refused the command (its end code, header and unit are in the exception).</exception>
+    /// <exception cref="HostLinkTimeoutException">No answer in time, after the read retries.</exception>
+    /// <exception cref="HostLinkFrameException">The answer was damaged, from another unit, or not the answer to this command: never returned as data.</exception>
+    /// <exception cref="HostLinkConnectionException">The port or socket could not be opened, or was lost or closed during the exchange.</exception>
+    /// <exception cref="ObjectDisposedException">The client was disposed.</exception>
     public Task<PlcErrorInfo> ReadErrorsAsync(bool clear = false, CancellationToken cancellationToken = default)
         => CModeAsync(new ErrorReadCommand(clear), static (data, _) => CModeResponse.ReadErrors(data), 0, cancellationToken).AsTask();
 
     /// <summary>Reads the PLC model code (MM).</summary>
+    /// <exception cref="HostLinkEndCodeException">The PLC refused the command (its end code, header and unit are in the exception).</exception>
+    /// <exception cref="HostLinkTimeoutException">No answer in time, after the read retries.</exception>
+    /// <exception cref="HostLinkFrameException">The answer was damaged, from another unit, or not the answer to this command: never returned as data.</exception>
+    /// <exception cref="HostLinkConnectionException">The port or socket could not be opened, or was lost or closed during the exchange.</exception>
+    /// <exception cref="ObjectDisposedException">The client was disposed.</exception>
     public Task<PlcModel> ReadModelAsync(CancellationToken cancellationToken = default)
         => CModeAsync(CModeCommands.ModelReadCommand, static (data, _) => CModeResponse.ReadModel(data), 0, cancellationToken).AsTask();
 
@@ -155,6 +186,11 @@ public partial class HostLinkUnit
     /// Sends TS (TEST) with <paramref name="text"/> and checks that the PLC echoes it unchanged. Returns the round-trip time.
     /// </summary>
     /// <exception cref="ArgumentException">The text is over 122 characters or holds characters that cannot travel in a frame.</exception>
+    /// <exception cref="HostLinkEndCodeException">The PLC refused the command (its end code, header and unit are in the exception).</exception>
+    /// <exception cref="HostLinkTimeoutException">No answer in time, after the read retries.</exception>
+    /// <exception cref="HostLinkFrameException">The answer was damaged, from another unit, or not the answer to this command: never returned as data.</exception>
+    /// <exception cref="HostLinkConnectionException">The port or socket could not be opened, or was lost or closed during the exchange.</exception>
+    /// <exception cref="ObjectDisposedException">The client was disposed.</exception>
     public async Task<TimeSpan> TestAsync(string text = "OMRONHOSTLINK", CancellationToken cancellationToken = default)
     {
         var command = new TestCommand(text);

@@ -187,7 +187,7 @@ public sealed class ClientSimulatorTests
         await rig.Client.WriteStringAsync("D10", "HELLO");
         (await rig.Client.ReadStringAsync("D10", 5)).Should().Be("HELLO");
 
-        await rig.Client.WriteBitAsync("CIO 100.05", true);
+        await rig.Client.Unit(0, HostLinkCommandSet.Fins).WriteBitAsync("CIO 100.05", true);
         rig.Plc.GetBit(PlcArea.Cio, 100, 5).Should().BeTrue();
         (await rig.Client.ReadBitAsync("CIO100.05")).Should().BeTrue();
         rig.Plc.SetFlag(PlcArea.Timer, 5, true);
