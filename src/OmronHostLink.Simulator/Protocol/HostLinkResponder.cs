@@ -140,10 +140,15 @@ public sealed class HostLinkResponder
                 : Reply(unit, row, CModeReply.EndCodeOnly(refusal, row.SubHeader));
         }
 
+        SimResponse? response;
         lock (_plc.SyncRoot)
         {
-            return Reply(unit, row, row.Execute!(command, _plc, unit));
+            response = Reply(unit, row, row.Execute!(command, _plc, unit));
         }
+
+        return _plc.Options.HostLinkCompatibleMode is { } compatible && response is not null
+            ? CompatibleModeAnswer.Frame(response, row.Header, CompatibleModeFraming.Of(compatible))
+            : response;
     }
 
     // FA only with FINS; the rest from the model's C-mode list (TS is answered by every model).
