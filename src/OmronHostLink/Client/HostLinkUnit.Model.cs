@@ -1,3 +1,5 @@
+using OmronHostLink.Protocol.CMode;
+
 namespace OmronHostLink;
 
 /// <summary>The PLC model a unit is checked against (<see cref="HostLinkClientOptions.Model"/>).</summary>
@@ -31,6 +33,18 @@ public partial class HostLinkUnit
         }
 
         model.EnsureRange(address.AsWord(), count, forWrite);
+    }
+
+    /// <summary>
+    /// Refuses, before anything is sent, a C-mode command the unit's model (configured, or already detected) does not
+    /// list: MM and XZ on a CP2E, for example. TS is answered by every model.
+    /// </summary>
+    private void EnsureModelAccepts(CModeCommand command)
+    {
+        if (command.Header != CModeHeaders.Test && Models.TryGet(UnitNumber, out PlcModelProfile? model) && model is not null)
+        {
+            model.EnsureCMode(command.Header, command.Row.Name);
+        }
     }
 
     private async Task<ushort[]> ReadWordsOfDetectedModelAsync(PlcAddress address, int count, CancellationToken cancellationToken)

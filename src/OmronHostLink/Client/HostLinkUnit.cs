@@ -184,7 +184,10 @@ public partial class HostLinkUnit
     // ---- C-mode plumbing ----
 
     private protected HostLinkRequest Request(CModeCommand command)
-        => new(UnitNumber, command.Header, command.ToMessage(UnitNumber), command.Exchange);
+    {
+        EnsureModelAccepts(command);
+        return new(UnitNumber, command.Header, command.ToMessage(UnitNumber), command.Exchange);
+    }
 
     /// <summary>How often a command is repeated after a timeout or damage: by what repeating it would do.</summary>
     private protected int RetriesFor(CommandEffect effect) => effect switch
