@@ -104,7 +104,7 @@ public partial class HostLinkUnit
     public Task WriteWordsAsync(PlcAddress address, ReadOnlyMemory<ushort> words, CancellationToken cancellationToken = default)
     {
         address = address.AsWord();
-        address.EnsureRange(words.Length, Options.CommandSet, forWrite: true);
+        address.EnsureRange(words.Length, Options.CommandSet, forWrite: Models.Off);
         if (!Models.TryGet(UnitNumber, out PlcModelProfile? model))
         {
             return WriteWordsOfDetectedModelAsync(address, words, cancellationToken);

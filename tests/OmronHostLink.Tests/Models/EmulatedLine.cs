@@ -17,18 +17,20 @@ internal sealed class EmulatedLine : IAsyncDisposable
     private readonly Task _session;
     private readonly List<string> _sent = [];
 
-    private EmulatedLine(VirtualPlc plc, string? model, HostLinkCompatibleMode? compatibleMode)
+    private EmulatedLine(VirtualPlc plc, string? model, HostLinkCompatibleMode? compatibleMode, Action<HostLinkClientOptions>? configure)
     {
         (Stream host, Stream plcEnd) = InMemoryLink.CreatePair();
         _host = new CountingStream(host);
         _session = plc.RunAsync(plcEnd, _stop.Token);
-        Client = HostLinkClient.ForStream(_host, new HostLinkClientOptions
+        var options = new HostLinkClientOptions
         {
             LineTiming = new LineTiming(115200, 11),
             TurnaroundAllowance = InProcessLine.InMemoryAllowance,
             Model = model,
             HostLinkCompatibleMode = compatibleMode,
-        });
+        };
+        configure?.Invoke(options);
+        Client = HostLinkClient.ForStream(_host, options);
         Client.FrameObserver = (sent, frame) =>
         {
             if (sent)
@@ -57,8 +59,8 @@ internal sealed class EmulatedLine : IAsyncDisposable
         }
     }
 
-    public static EmulatedLine Start(VirtualPlc plc, string? model, HostLinkCompatibleMode? compatibleMode = null)
-        => new(plc, model, compatibleMode);
+    public static EmulatedLine Start(VirtualPlc plc, string? model, HostLinkCompatibleMode? compatibleMode = null, Action<HostLinkClientOptions>? configure = null)
+        => new(plc, model, compatibleMode, configure);
 
     public async ValueTask DisposeAsync()
     {

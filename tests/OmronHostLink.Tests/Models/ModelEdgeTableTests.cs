@@ -264,9 +264,11 @@ public sealed class ModelEdgeTableTests
     [InlineData("CPM1A", "CIO252", true)]
     [InlineData("CPM1A", "CIO253", false)]
     [InlineData("CPM2A", "CIO253", false)]
-    // CS/CJ: A0–A447 are read-only (W342 5-2-2).
+    // CS/CJ: A0–A447 are read-only (W342 5-2-2). The C-series AR words are written with WJ (C200HS 11-3, CPM-Q 6-3).
     [InlineData("CS1", "A447", false)]
     [InlineData("CS1", "A448", true)]
+    [InlineData("C200HS", "A10", true)]
+    [InlineData("CPM1A", "A15", true)]
     public async Task Writes_to_read_only_words_are_refused_before_the_wire(string model, string address, bool writable)
     {
         var plc = new VirtualPlc(new VirtualPlcOptions { Model = model });
