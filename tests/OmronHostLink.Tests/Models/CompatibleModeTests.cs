@@ -27,21 +27,7 @@ public sealed class CompatibleModeTests
         plc.WriteWords(PlcArea.Dm, 0, values);
         await using RawHost raw = RawHost.Start(plc);
 
-        await raw.SendAsync(RawHost.Command("@00RD0000" + count.ToString("D4", CultureInfo.InvariantCulture)));
-
-        int at = 0;
-        for (int i = 0; i < wordsPerFrame.Length; i++)
-        {
-            if (i > 0)
-            {
-                await raw.SendAsync("\r");
-            }
-
-            string text = (i == 0 ? "@00RD00" : string.Empty) + Hex(values.AsSpan(at, wordsPerFrame[i]));
-            at += wordsPerFrame[i];
-            bool last = i == wordsPerFrame.Length - 1;
-            (await raw.ReadFrameAsync()).Should().Be(last ? RawHost.Command(text) : RawHost.Delimited(text), $"frame {i + 1} carries {wordsPerFrame[i]} words");
-        }
+        await ExpectFramesAsync(raw, "RD", count, Hex(values), [.. wordsPerFrame.Select(w => w * 4)]);
     }
 
     [Theory]
@@ -59,21 +45,7 @@ public sealed class CompatibleModeTests
         string flags = string.Concat(Enumerable.Range(0, count).Select(t => t % 3 == 0 ? '1' : '0'));
         await using RawHost raw = RawHost.Start(plc);
 
-        await raw.SendAsync(RawHost.Command("@00RG0000" + count.ToString("D4", CultureInfo.InvariantCulture)));
-
-        int at = 0;
-        for (int i = 0; i < flagsPerFrame.Length; i++)
-        {
-            if (i > 0)
-            {
-                await raw.SendAsync("\r");
-            }
-
-            string text = (i == 0 ? "@00RG00" : string.Empty) + flags.Substring(at, flagsPerFrame[i]);
-            at += flagsPerFrame[i];
-            bool last = i == flagsPerFrame.Length - 1;
-            (await raw.ReadFrameAsync()).Should().Be(last ? RawHost.Command(text) : RawHost.Delimited(text));
-        }
+        await ExpectFramesAsync(raw, "RG", count, flags, flagsPerFrame);
     }
 
     [Theory]
@@ -199,6 +171,27 @@ public sealed class CompatibleModeTests
             .Which.Message.Should().Contain("'E' is not one of ModeA, ModeB, ModeC, ModeD, A, B, C, D");
         FluentActions.Invoking(new HostLinkClientOptions { HostLinkCompatibleMode = (HostLinkCompatibleMode)7 }.Validate)
             .Should().Throw<ArgumentOutOfRangeException>().WithMessage("HostLinkCompatibleMode 7 is not ModeA, ModeB, ModeC or ModeD.*");
+    }
+
+    // Sends a read of count entries from 0 and checks each answer frame: the data characters it carries, the first frame
+    // after "@00", the header and end code 00, a bare CR between frames, "*" CR after the last.
+    private static async Task ExpectFramesAsync(RawHost raw, string header, int count, string data, int[] charactersPerFrame)
+    {
+        await raw.SendAsync(RawHost.Command("@00" + header + "0000" + count.ToString("D4", CultureInfo.InvariantCulture)));
+
+        int at = 0;
+        for (int i = 0; i < charactersPerFrame.Length; i++)
+        {
+            if (i > 0)
+            {
+                await raw.SendAsync("\r");
+            }
+
+            string text = (i == 0 ? "@00" + header + "00" : string.Empty) + data.Substring(at, charactersPerFrame[i]);
+            at += charactersPerFrame[i];
+            bool last = i == charactersPerFrame.Length - 1;
+            (await raw.ReadFrameAsync()).Should().Be(last ? RawHost.Command(text) : RawHost.Delimited(text), $"frame {i + 1} carries {charactersPerFrame[i]} data characters");
+        }
     }
 
     private static string Hex(ReadOnlySpan<ushort> words)
