@@ -25,6 +25,7 @@ internal sealed class ConnectionOptions
         ["TurnaroundAllowance"] = "--timeout",
         ["ReadRetries"] = "--retries",
         ["Model"] = "--model",
+        ["HostLinkCompatibleMode"] = "--compatible-mode",
     };
 
     public ConnectionOptions(bool includeUnit = true, TimeSpan? defaultTimeout = null, int? defaultRetries = null)
@@ -45,6 +46,7 @@ internal sealed class ConnectionOptions
         Timeout = Durations.Option("--timeout", "Time the PLC may take to start answering a frame (the wire time is added); default " + Durations.Format(timeout) + ".", null, TimeSpan.MinValue, TimeSpan.MaxValue);
         Retries = OptionValues.OptionalInteger("--retries", "Times a read is repeated after a timeout or damaged frame, 0-10 (writes are never repeated).", int.MinValue, int.MaxValue, "n");
         Fins = new Option<bool>("--fins") { Description = "Use FINS over Host Link (FA) where C-mode would otherwise be used: reads, writes, bit writes, status and mode." };
+        CompatibleMode = OptionValues.OptionalChoice("--compatible-mode", "The Host Link-compatible device mode the PLC's Serial Communications Unit is set to (A: CS/CJ/C, B: CVM1/CV, C: C200H, D: C500/C120): each answer frame is checked to be framed as that mode frames it. Default: any framing.", "a|b|c|d", "a", "b", "c", "d");
         Model = new Option<string?>("--model") { Description = "The PLC model addresses and commands are checked against before anything is sent (CPM1A, CP1E-E, C200HS, CS1, ...: see 'hostlink model --list'), or auto to ask the PLC (MM).", HelpName = "name" };
     }
 
@@ -76,6 +78,8 @@ internal sealed class ConnectionOptions
 
     public Option<string?> Model { get; }
 
+    public Option<string?> CompatibleMode { get; }
+
     /// <summary>How 32- and 64-bit values lie in two or four words: Omron's own layout, low word first.</summary>
     public WordOrder WordOrder => WordOrder.LowWordFirst;
 
@@ -96,6 +100,7 @@ internal sealed class ConnectionOptions
         command.Add(Retries);
         command.Add(Fins);
         command.Add(Model);
+        command.Add(CompatibleMode);
         command.Validators.Add(Validate);
     }
 
@@ -117,6 +122,14 @@ internal sealed class ConnectionOptions
             WordOrder = WordOrder,
             CommandSet = options.GetValue(Fins) ? HostLinkCommandSet.Fins : HostLinkCommandSet.CMode,
             Model = options.GetValue(Model),
+            HostLinkCompatibleMode = options.GetValue(CompatibleMode) switch
+            {
+                "a" => HostLinkCompatibleMode.ModeA,
+                "b" => HostLinkCompatibleMode.ModeB,
+                "c" => HostLinkCompatibleMode.ModeC,
+                "d" => HostLinkCompatibleMode.ModeD,
+                _ => null,
+            },
         };
         settings.Serial.BaudRate = options.GetValue(Baud);
         settings.Serial.DataBits = options.GetValue(DataBits);

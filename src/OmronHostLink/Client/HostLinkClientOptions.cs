@@ -1,6 +1,7 @@
 using System.Diagnostics.Metrics;
 using Microsoft.Extensions.Logging;
 using OmronHostLink.Link;
+using OmronHostLink.Protocol.CMode;
 using OmronHostLink.Transports;
 
 namespace OmronHostLink;
@@ -111,6 +112,15 @@ public sealed class HostLinkClientOptions
     /// </summary>
     public string? Model { get; set; }
 
+    /// <summary>
+    /// The Host Link-compatible device mode the PLC's Serial Communications Unit (unit version 1.2 or later) is set to,
+    /// when the client talks to one: each answer frame of an area read is then checked to carry the words (or RG
+    /// flags) that mode sends, so that a unit set otherwise is reported instead of read (W336 4-6-2; docs/models.md).
+    /// Null (the default) accepts any framing: answers are read correctly in every mode either way, and the MS message
+    /// is read the same whether the unit leaves it out or sends spaces. Applies to every unit of the client.
+    /// </summary>
+    public HostLinkCompatibleMode? HostLinkCompatibleMode { get; set; }
+
     /// <summary>Checks the options and says what is wrong.</summary>
     /// <exception cref="ArgumentException">An option is out of range.</exception>
     public void Validate()
@@ -154,6 +164,11 @@ public sealed class HostLinkClientOptions
         if (TimeProvider is null)
         {
             throw new ArgumentException("TimeProvider is required.", nameof(TimeProvider));
+        }
+
+        if (HostLinkCompatibleMode is { } compatibleMode)
+        {
+            Check(nameof(HostLinkCompatibleMode), compatibleMode, SettingRules.CompatibleMode(compatibleMode));
         }
 
         if (Model is not null && SettingRules.Model(Model) is { } modelProblem)
@@ -200,5 +215,6 @@ public sealed class HostLinkClientOptions
         SendInterval = SendInterval,
         UnitSendIntervals = UnitSendIntervals.Count == 0 ? null : new Dictionary<int, TimeSpan>(UnitSendIntervals),
         TimeProvider = TimeProvider,
+        AnswerFraming = HostLinkCompatibleMode is { } mode ? CompatibleModeFraming.Of(mode) : null,
     };
 }

@@ -50,7 +50,7 @@ public partial class HostLinkUnit
         int words = WordsCovered(address, values.Length);
         if (Options.AllowReadModifyWriteBits && Options.CommandSet == HostLinkCommandSet.CMode)
         {
-            first.EnsureRange(words, HostLinkCommandSet.CMode, forWrite: true);
+            first.EnsureRange(words, HostLinkCommandSet.CMode, forWrite: Models.Off);
             ushort[] current = await ReadWordsAsync(first, words, cancellationToken).ConfigureAwait(false);
             for (int i = 0; i < values.Length; i++)
             {

@@ -53,6 +53,7 @@ public partial class HostLinkUnit
     public async Task<PlcTagValue[]> ReadTagsAsync(ReadPlan plan, CancellationToken cancellationToken = default)
     {
         Guard.NotNull(plan);
+        await EnsurePlanAsync(plan, cancellationToken).ConfigureAwait(false);
         var results = new ushort[plan.Reads.Count][];
         for (int r = 0; r < results.Length; r++)
         {

@@ -132,7 +132,7 @@ public partial class HostLinkUnit
         if (Options.AllowReadModifyWriteBits && Options.CommandSet == HostLinkCommandSet.CMode)
         {
             PlcAddress word = address.AsWord();
-            word.EnsureRange(1, HostLinkCommandSet.CMode, forWrite: true);
+            word.EnsureRange(1, HostLinkCommandSet.CMode, forWrite: Models.Off);
             ushort current = (await ReadWordsAsync(word, 1, cancellationToken).ConfigureAwait(false))[0];
             await WriteWordsAsync(word, new[] { PlcWords.SetBit(current, address.Bit, value) }, cancellationToken).ConfigureAwait(false);
             return;

@@ -114,7 +114,7 @@ public partial class HostLinkUnit
     public Task WriteWordsAsync(PlcAddress address, ReadOnlyMemory<ushort> words, CancellationToken cancellationToken = default)
     {
         address = address.AsWord();
-        address.EnsureRange(words.Length, Options.CommandSet, forWrite: true);
+        address.EnsureRange(words.Length, Options.CommandSet, forWrite: Models.Off);
         if (!Models.TryGet(UnitNumber, out PlcModelProfile? model))
         {
             return WriteWordsOfDetectedModelAsync(address, words, cancellationToken);
@@ -220,7 +220,10 @@ public partial class HostLinkUnit
     // ---- C-mode plumbing ----
 
     private protected HostLinkRequest Request(CModeCommand command)
-        => new(UnitNumber, command.Header, command.ToMessage(UnitNumber), command.Exchange);
+    {
+        EnsureModelAccepts(command);
+        return new(UnitNumber, command.Header, command.ToMessage(UnitNumber), command.Exchange);
+    }
 
     /// <summary>How often a command is repeated after a timeout or damage: by what repeating it would do.</summary>
     private protected int RetriesFor(CommandEffect effect) => effect switch

@@ -43,7 +43,7 @@ internal sealed class HostLinkConnection : IAsyncDisposable, IDisposable
         _spacing = new SendSpacing(options);
         Timing = transport.LineTiming ?? options.LineTiming;
         _logger = options.LoggerFactory?.CreateLogger("OmronHostLink") ?? NullLogger.Instance;
-        _attempt = new TransactionAttempt(Timing, options.TurnaroundAllowance, options.LocalEcho);
+        _attempt = new TransactionAttempt(Timing, options.TurnaroundAllowance, options.LocalEcho) { AnswerFraming = options.AnswerFraming };
         _resynchroniser = new Resynchroniser(Timing, options.TurnaroundAllowance, _time, options.LocalEcho);
         _instruments = HostLinkInstruments.For(options.MeterFactory);
         LinkName = options.LinkName ?? (transport as SerialTransport)?.PortName ?? transport.Description;

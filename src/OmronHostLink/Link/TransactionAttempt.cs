@@ -34,6 +34,9 @@ internal sealed class TransactionAttempt
         _localEcho = localEcho;
     }
 
+    /// <summary>The framing of a Serial Communications Unit's Host Link-compatible mode, each answer frame checked against it; null for any.</summary>
+    public CompatibleModeFraming? AnswerFraming { get; init; }
+
     /// <summary>Command frames sent by the last attempt (not the bare CRs between frames).</summary>
     public int FramesSent { get; private set; }
 
@@ -175,6 +178,7 @@ internal sealed class TransactionAttempt
         FrameInfo info = FrameParser.ParseFirst(frame);
         _ifStopped = info.IsFinal ? LinkState.Ready : LinkState.NeedsInitialize;
         CModeResponse.CheckAnswerHeader(frame, info, request.Unit, request.Header);
+        AnswerFraming?.CheckFrame(request.Header, first: true, info.IsFinal, info.TextLength);
         AppendText(info.Text(frame), request);
         return info;
     }
@@ -183,6 +187,7 @@ internal sealed class TransactionAttempt
     {
         ReadOnlySpan<byte> frame = channel.Frame(length);
         FrameInfo info = FrameParser.ParseContinuation(frame);
+        AnswerFraming?.CheckFrame(request.Header, first: false, info.IsFinal, info.TextLength);
         AppendText(info.Text(frame), request);
         return info;
     }

@@ -40,6 +40,10 @@ internal static class SettingRules
             ? null
             : $"'{model}' is not a known PLC model; use one of {PlcModelProfile.KnownNames()}, or auto to ask the PLC (MM)";
 
+    /// <summary>A Serial Communications Unit's Host Link-compatible device mode.</summary>
+    public static string? CompatibleMode(HostLinkCompatibleMode value)
+        => value is >= HostLinkCompatibleMode.ModeA and <= HostLinkCompatibleMode.ModeD ? null : $"{(int)value} is not ModeA, ModeB, ModeC or ModeD";
+
     public static string? FinsResponseWait(int wait)
         => wait is < 0 or > MaxFinsResponseWait ? $"{wait} is not 0-{MaxFinsResponseWait} (units of 10 ms)" : null;
 

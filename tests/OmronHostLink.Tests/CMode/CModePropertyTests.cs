@@ -28,8 +28,7 @@ public sealed class CModePropertyTests
             case 3:
             {
                 CModeArea area = areas[r.Next(areas.Length)];
-                int first = CModeAreaInfo.FirstWritable(area);
-                int begin = r.Next(first, CModeAreaInfo.Size(area));
+                int begin = r.Next(CModeAreaInfo.Size(area));
                 int n = r.Next(1, Math.Min(200, CModeAreaInfo.Size(area) - begin) + 1);
                 ushort[] words = Enumerable.Range(0, n).Select(_ => (ushort)r.Next(65536)).ToArray();
                 return new AreaWriteCommand(area, begin, words, area == CModeArea.Em ? r.Next(13) : 0);

@@ -71,4 +71,39 @@ public sealed class CliModelTests
         auto.ExitCode.Should().Be(2, auto.ToString());
         auto.Err.Should().Contain("D6656 is beyond the DM area of a PLC answering MM 12");
     }
+
+    [Fact]
+    public async Task Write_with_a_model_refuses_what_it_lacks_or_may_not_write_and_names_it()
+    {
+        await using var sim = await InProcessSimulator.StartAsync("--model", "CPM1A");
+
+        CliResult beyond = await Cli.RunAsync("write", "D1024", "1", "--model", "CPM1A", "--tcp", sim.Endpoint);
+        CliResult readOnly = await Cli.RunAsync("write", "CIO253", "1", "--model", "CPM1A", "--tcp", sim.Endpoint);
+        CliResult fine = await Cli.RunAsync("write", "D1023", "7", "--model", "CPM1A", "--tcp", sim.Endpoint);
+
+        beyond.ExitCode.Should().Be(2, beyond.ToString());
+        beyond.Err.Should().Contain("D1024 is beyond the DM area of a CPM1/CPM1A (D0–D1023, D6144–D6655)");
+        readOnly.ExitCode.Should().Be(2, readOnly.ToString());
+        readOnly.Err.Should().Contain("CIO253 is read-only on a CPM1/CPM1A");
+        fine.ExitCode.Should().Be(0, fine.ToString());
+        (await Cli.RunAsync("read", "D1023", "--model", "CPM1A", "--json", "--tcp", sim.Endpoint)).Out.Should().Contain("\"values\":[7]");
+    }
+
+    [Fact]
+    public async Task The_compatible_mode_is_emulated_by_simulate_and_checked_by_read()
+    {
+        await using var modeC = await InProcessSimulator.StartAsync("--compatible-mode", "c");
+
+        CliResult asC = await Cli.RunAsync("read", "D0", "60", "--compatible-mode", "c", "--json", "--tcp", modeC.Endpoint);
+        CliResult unset = await Cli.RunAsync("read", "D0", "60", "--json", "--tcp", modeC.Endpoint);
+        CliResult asA = await Cli.RunAsync("read", "D0", "60", "--compatible-mode", "a", "--retries", "0", "--tcp", modeC.Endpoint);
+        CliResult modeD = await Cli.RunAsync("simulate", "--compatible-mode", "d", "--tcp", "127.0.0.1:0");
+
+        asC.ExitCode.Should().Be(0, asC.ToString());
+        unset.ExitCode.Should().Be(0, unset.ToString());
+        asA.ExitCode.Should().Be(4, asA.ToString());
+        asA.Err.Should().Contain("first frame carried 29 words; a Serial Communications Unit in Host Link-compatible mode A (CS/CJ/C) sends 30");
+        modeD.ExitCode.Should().Be(2, modeD.ToString());
+        modeD.Err.Should().Contain("--compatible-mode");
+    }
 }
