@@ -85,6 +85,13 @@ internal sealed class GatewayProcess : IAsyncDisposable
         return true;
     }
 
+    /// <summary>Kills the gateway at once (SIGKILL on Linux: none of its shutdown code runs) and waits until it is gone.</summary>
+    public async Task KillAsync()
+    {
+        _process.Kill();
+        await _process.WaitForExitAsync();
+    }
+
     public async ValueTask DisposeAsync()
     {
         if (!_process.HasExited)
