@@ -207,12 +207,18 @@ public sealed class MqttOptionsValidator : IValidateOptions<MqttOptions>
 
         if (!tls.Enabled)
         {
-            if (!string.IsNullOrEmpty(tls.CaFile) || tls.AllowUntrustedCertificates)
+            string? set = !string.IsNullOrEmpty(tls.CaFile) ? "CaFile" : tls.AllowUntrustedCertificates ? "AllowUntrustedCertificates" : !string.IsNullOrEmpty(tls.ServerName) ? "ServerName" : null;
+            if (set is not null)
             {
-                failures.Add($"{key}:Enabled is false but {(string.IsNullOrEmpty(tls.CaFile) ? "AllowUntrustedCertificates" : "CaFile")} is set; set {key}:Enabled to true to use TLS.");
+                failures.Add($"{key}:Enabled is false but {set} is set; set {key}:Enabled to true to use TLS.");
             }
 
             return;
+        }
+
+        if (!string.IsNullOrEmpty(tls.ServerName) && HostSyntax.Problem(tls.ServerName) is { } nameProblem)
+        {
+            failures.Add($"{key}:ServerName '{tls.ServerName}' is not a host name or address: {nameProblem}.");
         }
 
         if (!string.IsNullOrEmpty(tls.CaFile))
