@@ -31,7 +31,14 @@ public static class MqttGatewayConfig
         ["Mqtt:Timeout"] = "00:00:05",
         ["Mqtt:Reconnect:Initial"] = "00:00:00.100",
         ["Mqtt:Reconnect:Max"] = "00:00:00.500",
+        ["Mqtt:StateDirectory"] = NewStateDirectory(),
     };
+
+    /// <summary>
+    /// A state directory of its own for each gateway a test starts: the count of unsent messages one test leaves must not
+    /// be announced in the next one. All are deleted when the test process ends.
+    /// </summary>
+    public static string NewStateDirectory() => Directory.CreateDirectory(Path.Combine(StateRoot.Path, Guid.NewGuid().ToString("N"))).FullName;
 
     /// <summary>Adds a poll group (a tag) to the link "plc".</summary>
     public static void Group(Dictionary<string, string?> config, string name, string address, string type = "int16", int count = 1, int intervalMs = 20, bool writable = false, int unit = 0)
@@ -83,6 +90,27 @@ public static class MqttGatewayConfig
             }
 
             await Task.Delay(20);
+        }
+    }
+
+    private static class StateRoot
+    {
+        public static readonly string Path = Create();
+
+        private static string Create()
+        {
+            string path = Directory.CreateTempSubdirectory("ohl-gateway-state-").FullName;
+            AppDomain.CurrentDomain.ProcessExit += (_, _) =>
+            {
+                try
+                {
+                    Directory.Delete(path, recursive: true);
+                }
+                catch (IOException)
+                {
+                }
+            };
+            return path;
         }
     }
 }
