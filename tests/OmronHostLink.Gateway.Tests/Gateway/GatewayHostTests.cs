@@ -256,12 +256,13 @@ public sealed class GatewayHostTests(ITestOutputHelper output) : IDisposable
     public async Task Groups_on_one_link_share_it_fairly()
     {
         // Every answer frame waits for a PLC turnaround, as on a real line: the link, not the worker's handling of what
-        // it read, is what the groups share.
-        var plc = new VirtualPlc(new VirtualPlcOptions { Turnaround = TimeSpan.FromMilliseconds(5) });
+        // it read, is what the groups share. The turnaround is long beside a loaded machine's scheduling delays, so a
+        // group that is slow to queue again after its read is still back before the other's exchange ends.
+        var plc = new VirtualPlc(new VirtualPlcOptions { Turnaround = TimeSpan.FromMilliseconds(25) });
         await using TcpSimulatorHost simulator = await StartSimulator(plc);
         Dictionary<string, string?> config = Link(simulator.EndPoint.Port);
         // Two groups that want the link all the time (1 ms) and one at 500 ms: the link is saturated.
-        Group(config, "big", "D0", type: "word", count: 400, intervalMs: 1);
+        Group(config, "big", "D0", type: "word", count: 200, intervalMs: 1);
         Group(config, "small", "D1000", type: "word", intervalMs: 1);
         Group(config, "slow", "D2000", type: "word", intervalMs: 500);
         var logs = new CapturingLoggerProvider();
