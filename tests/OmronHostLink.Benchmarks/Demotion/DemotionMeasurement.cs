@@ -11,10 +11,11 @@ using OmronHostLink.Simulator;
 namespace OmronHostLink.Benchmarks.Demotion;
 
 /// <summary>
-/// <c>demotion</c> mode: the gateway in process, polling 8 units on one emulated 9600 bps serial-device server (both
-/// directions paced), one group of 10 words per unit every second. First every unit answers, then one of them (the
-/// last) is silent; the poll rate of the others is counted in two windows after the start (the first minute, while
-/// a silent unit is being found out, and the next), and compared with their rate when all eight answer.
+/// <c>demotion</c> mode: the gateway in process, polling two lines side by side, each 8 units on its own emulated 9600
+/// bps serial-device server (both directions paced), one group of 10 words per unit every second. On the first line
+/// every unit answers; on the second one of them (the last) is silent. The poll rate of the other units is counted on
+/// both lines in two windows after the start (the first minute, while the silent unit is being found out, and the
+/// next) and compared: both lines run at the same time, so a loaded machine slows both alike.
 /// </summary>
 internal static class DemotionMeasurement
 {
@@ -65,12 +66,12 @@ internal static class DemotionMeasurement
         Console.WriteLine($"# link settings: defaults{string.Concat(extra.Select(e => $", {e.Key}={e.Value}"))}; two windows of {window.TotalSeconds:0} s from the first poll");
         Console.WriteLine();
 
-        var answering = Enumerable.Range(0, units).ToArray();
-        (double[] allFirst, double[] allSecond) = await MeasureAsync(units, answering, baud, words, interval, window, extra);
         int silent = units - 1;
-        (double[] oneFirst, double[] oneSecond) = await MeasureAsync(units, answering.Where(u => u != silent).ToArray(), baud, words, interval, window, extra);
+        PollCounter[] lines = await MeasureAsync(units, [Enumerable.Range(0, units).ToArray(), Enumerable.Range(0, units - 1).ToArray()], baud, words, interval, window, extra);
+        (double[] allFirst, double[] allSecond) = (lines[0].Rates(TimeSpan.Zero, window), lines[0].Rates(window, 2 * window));
+        (double[] oneFirst, double[] oneSecond) = (lines[1].Rates(TimeSpan.Zero, window), lines[1].Rates(window, 2 * window));
 
-        Console.WriteLine($"| Window | Polls/s of units 0–{silent - 1}, all answer (each) | Polls/s of units 0–{silent - 1}, unit {silent} silent (each) | Silent ÷ all |");
+        Console.WriteLine($"| Window | Polls/s of units 0–{silent - 1}, all {units} answer (each) | Polls/s of units 0–{silent - 1}, unit {silent} silent (each) | Silent ÷ all |");
         Console.WriteLine("|---|---|---|---|");
         Row($"0–{window.TotalSeconds:0} s", allFirst, oneFirst, silent);
         Row($"{window.TotalSeconds:0}–{2 * window.TotalSeconds:0} s", allSecond, oneSecond, silent);
@@ -85,33 +86,38 @@ internal static class DemotionMeasurement
         Console.WriteLine($"| {name} | {a:0.000} ({each(all)}) | {o:0.000} ({each(one)}) | {o / a:P1} |");
     }
 
-    /// <summary>Runs the gateway against a line where <paramref name="answering"/> answer; the poll rate of every unit in both windows.</summary>
-    private static async Task<(double[] First, double[] Second)> MeasureAsync(int units, int[] answering, int baud, int words, TimeSpan interval, TimeSpan window, Dictionary<string, string?> extra)
+    /// <summary>Runs the gateway with one line per entry of <paramref name="answering"/> (the units that answer on it); the polls counted on each.</summary>
+    private static async Task<PollCounter[]> MeasureAsync(int units, int[][] answering, int baud, int words, TimeSpan interval, TimeSpan window, Dictionary<string, string?> extra)
     {
         using var clock = new LineClock();
-        var plc = new VirtualPlc(new VirtualPlcOptions { Units = answering });
-        await using SerialDeviceServer server = SerialDeviceServer.Start(plc, baud, Bits, clock);
-        var config = new Dictionary<string, string?>
+        var servers = new List<SerialDeviceServer>();
+        var config = new Dictionary<string, string?>();
+        for (int line = 0; line < answering.Length; line++)
         {
-            ["HostLink:Links:line:Tcp"] = $"127.0.0.1:{server.Port}",
-            ["HostLink:Links:line:Serial:BaudRate"] = baud.ToString(CultureInfo.InvariantCulture),
-        };
-        foreach ((string key, string? value) in extra)
-        {
-            config["HostLink:Links:line:" + key] = value;
+            var plc = new VirtualPlc(new VirtualPlcOptions { Units = answering[line] });
+            SerialDeviceServer server = SerialDeviceServer.Start(plc, baud, Bits, clock);
+            servers.Add(server);
+            string link = $"HostLink:Links:line{line}:";
+            config[link + "Tcp"] = $"127.0.0.1:{server.Port}";
+            config[link + "Serial:BaudRate"] = baud.ToString(CultureInfo.InvariantCulture);
+            foreach ((string key, string? value) in extra)
+            {
+                config[link + key] = value;
+            }
+
+            for (int u = 0; u < units; u++)
+            {
+                string g = $"{link}Groups:u{u}:";
+                config[g + "Unit"] = u.ToString(CultureInfo.InvariantCulture);
+                config[g + "Address"] = "D0";
+                config[g + "Count"] = words.ToString(CultureInfo.InvariantCulture);
+                config[g + "Interval"] = interval.ToString("c", CultureInfo.InvariantCulture);
+                config[g + "Log"] = "OnChange";
+            }
         }
 
-        for (int u = 0; u < units; u++)
-        {
-            string g = $"HostLink:Links:line:Groups:u{u}:";
-            config[g + "Unit"] = u.ToString(CultureInfo.InvariantCulture);
-            config[g + "Address"] = "D0";
-            config[g + "Count"] = words.ToString(CultureInfo.InvariantCulture);
-            config[g + "Interval"] = interval.ToString("c", CultureInfo.InvariantCulture);
-            config[g + "Log"] = "OnChange";
-        }
-
-        var counter = new PollCounter(units);
+        PollCounter[] counters = answering.Select(_ => new PollCounter(units)).ToArray();
+        var counter = new LineCounters(counters);
         var configuration = new ConfigurationManager();
         configuration.AddInMemoryCollection(config);
         HostApplicationBuilder builder = GatewayHost.CreateBuilder(new HostApplicationBuilderSettings
@@ -126,15 +132,17 @@ internal static class DemotionMeasurement
         await host.StartAsync();
         await Task.Delay(2 * window + TimeSpan.FromSeconds(5));
         await host.StopAsync();
-        return (counter.Rates(TimeSpan.Zero, window), counter.Rates(window, 2 * window));
+        foreach (SerialDeviceServer server in servers)
+        {
+            await server.DisposeAsync();
+        }
+
+        return counters;
     }
 
-    /// <summary>Timestamps of every good poll, by unit, from the first poll of any unit.</summary>
-    private sealed class PollCounter(int units) : ITagOutput
+    /// <summary>Passes each line's polls to its counter (the links are named line0, line1…).</summary>
+    private sealed class LineCounters(PollCounter[] counters) : ITagOutput
     {
-        private readonly List<long>[] _polls = Enumerable.Range(0, units).Select(_ => new List<long>()).ToArray();
-        private long _origin;
-
         public void LinkOpened(string link, HostLinkUnit client)
         {
         }
@@ -142,6 +150,16 @@ internal static class DemotionMeasurement
         public void LinkChanged(string link, LinkState state, string? detail = null)
         {
         }
+
+        public void TagChanged(TagChange change)
+            => counters[int.Parse(change.Link.AsSpan(4), CultureInfo.InvariantCulture)].TagChanged(change);
+    }
+
+    /// <summary>Timestamps of every good poll of one line, by unit, from the line's first poll.</summary>
+    private sealed class PollCounter(int units)
+    {
+        private readonly List<long>[] _polls = Enumerable.Range(0, units).Select(_ => new List<long>()).ToArray();
+        private long _origin;
 
         public void TagChanged(TagChange change)
         {
