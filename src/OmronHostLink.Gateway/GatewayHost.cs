@@ -8,6 +8,7 @@ using OmronHostLink.Gateway.Configuration;
 using OmronHostLink.Gateway.Mqtt;
 using OmronHostLink.Gateway.Polling;
 using OmronHostLink.Gateway.Simulation;
+using OmronHostLink.Gateway.Sparkplug;
 using OmronHostLink.Gateway.Statistics;
 using OmronHostLink.Gateway.Telemetry;
 
@@ -66,6 +67,7 @@ public static class GatewayHost
         // The outputs (each an ITagOutput; the polling reports to all of them in registration order).
         services.AddLinkStatistics();
         services.AddMqttOutput(builder.Configuration);
+        services.AddSparkplugOutput(builder.Configuration);
         services.AddSingleton<PollingHostedService>();
         services.AddHostedService(sp => sp.GetRequiredService<PollingHostedService>());
         services.AddTelemetryExport(builder.Configuration);

@@ -254,7 +254,7 @@ public sealed class MqttOptionsValidator : IValidateOptions<MqttOptions>
         }
     }
 
-    private static void ValidateWritable(string path, PollGroupOptions group, HostLinkCommandSet protocol, List<string> failures)
+    internal static void ValidateWritable(string path, PollGroupOptions group, HostLinkCommandSet protocol, List<string> failures)
     {
         // The HostLink validator reports bad addresses and types; only what writing adds is checked here.
         if (!PlcAddress.TryParse(group.Address, out PlcAddress address) || !PlcValueTypes.TryParse(group.Type, out PlcValueType type) || group.Count < 1)

@@ -85,6 +85,13 @@ internal sealed class GatewayProcess : IAsyncDisposable
         return true;
     }
 
+    /// <summary>Kills the worker outright (SIGKILL on Linux): no clean stop, no last message of its own.</summary>
+    public async Task KillAsync()
+    {
+        _process.Kill();
+        await _process.WaitForExitAsync();
+    }
+
     public async ValueTask DisposeAsync()
     {
         if (!_process.HasExited)
