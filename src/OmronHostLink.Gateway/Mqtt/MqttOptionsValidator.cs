@@ -162,9 +162,9 @@ public sealed class MqttOptionsValidator : IValidateOptions<MqttOptions>
         }
     }
 
-    private static void ValidateTls(MqttTlsOptions? tls, List<string> failures)
+    /// <summary>Checks a <c>Tls</c> section (<paramref name="key"/>: its path, <c>Mqtt:Tls</c> by default).</summary>
+    internal static void ValidateTls(MqttTlsOptions? tls, List<string> failures, string key = MqttOptions.SectionName + ":Tls")
     {
-        const string key = MqttOptions.SectionName + ":Tls";
         if (tls is null)
         {
             return;

@@ -189,7 +189,7 @@ public sealed class SparkplugEdgeNode : IHostedService, IAsyncDisposable
             catch (Exception e) when (e is not OutOfMemoryException)
             {
                 IsOnline = false;
-                await DropConnectionAsync(client).ConfigureAwait(false);
+                await MqttGateway.DropConnectionAsync(client).ConfigureAwait(false);
                 _node.TakeMessages(connected: false);
                 string reason = _certificateProblem is { } why ? "TLS: " + why : e.Message;
                 _certificateProblem = null;
@@ -280,23 +280,5 @@ public sealed class SparkplugEdgeNode : IHostedService, IAsyncDisposable
         }
 
         return builder.Build();
-    }
-
-    private static async Task DropConnectionAsync(IMqttClient client)
-    {
-        if (!client.IsConnected)
-        {
-            return;
-        }
-
-        try
-        {
-            using var timeout = new CancellationTokenSource(TimeSpan.FromSeconds(2));
-            await client.DisconnectAsync(new MqttClientDisconnectOptions(), timeout.Token).ConfigureAwait(false);
-        }
-        catch (Exception e) when (e is not OutOfMemoryException)
-        {
-            // Already gone.
-        }
     }
 }

@@ -65,7 +65,7 @@ public sealed class SparkplugOptionsValidator(IConfiguration configuration) : IV
             failures.Add($"{Root}:Reconnect: Initial must be more than 0 and Max at least Initial; they are {options.Reconnect?.Initial} and {options.Reconnect?.Max}.");
         }
 
-        ValidateTls(options.Tls, failures);
+        MqttOptionsValidator.ValidateTls(options.Tls, failures, Root + ":Tls");
         ValidateTags(failures);
         return failures.Count == 0 ? ValidateOptionsResult.Success : ValidateOptionsResult.Fail(failures);
     }
@@ -75,53 +75,6 @@ public sealed class SparkplugOptionsValidator(IConfiguration configuration) : IV
         if (SparkplugTopic.Check(id) is { } problem)
         {
             failures.Add($"{Root}:{key} '{id}' cannot be a Sparkplug id: {problem}; set {example}.");
-        }
-    }
-
-    private static void ValidateTls(MqttTlsOptions? tls, List<string> failures)
-    {
-        const string key = Root + ":Tls";
-        if (tls is null)
-        {
-            return;
-        }
-
-        if (!tls.Enabled)
-        {
-            if (!string.IsNullOrEmpty(tls.CaFile) || tls.AllowUntrustedCertificates)
-            {
-                failures.Add($"{key}:Enabled is false but {(string.IsNullOrEmpty(tls.CaFile) ? "AllowUntrustedCertificates" : "CaFile")} is set; set {key}:Enabled to true to use TLS.");
-            }
-
-            return;
-        }
-
-        if (string.IsNullOrEmpty(tls.CaFile))
-        {
-            return;
-        }
-
-        if (tls.AllowUntrustedCertificates)
-        {
-            failures.Add($"{key}: set either CaFile or AllowUntrustedCertificates, not both (AllowUntrustedCertificates turns every check off).");
-        }
-
-        if (!File.Exists(tls.CaFile))
-        {
-            failures.Add($"{key}:CaFile '{tls.CaFile}' does not exist (relative paths start at the working directory, {Environment.CurrentDirectory}).");
-            return;
-        }
-
-        try
-        {
-            foreach (System.Security.Cryptography.X509Certificates.X509Certificate2 certificate in MqttClientOptionsFactory.LoadAuthorities(tls.CaFile))
-            {
-                certificate.Dispose();
-            }
-        }
-        catch (Exception e) when (e is InvalidOperationException or System.Security.Cryptography.CryptographicException or IOException or UnauthorizedAccessException)
-        {
-            failures.Add($"{key}:CaFile '{tls.CaFile}' cannot be read as PEM certificates: {e.Message}");
         }
     }
 
