@@ -2,19 +2,14 @@ using OmronHostLink.Gateway.Outputs;
 
 namespace OmronHostLink.Gateway.Sparkplug;
 
-/// <summary>A message the edge node publishes: its topic and payload.</summary>
-/// <param name="Topic">The Sparkplug topic.</param>
-/// <param name="Payload">The encoded payload.</param>
-public sealed record SparkplugMessage(SparkplugTopic Topic, byte[] Payload);
-
 /// <summary>
 /// The edge node's view of the tags, fed by the polling (it is an <see cref="ITagOutput"/>): every metric's current
-/// value, read time and quality, and which device is alive. A device is born (DBIRTH) when its unit first answers and
-/// again when it answers after an outage; it dies (DDEATH) when its unit stops answering or is demoted, or its link
-/// stops. Between, the metrics whose value or quality changed go out by alias in DDATA, each with the time the PLC was
-/// read. A device is born once each of its tags has been read (or failed with an answer) since it was last dead, so its
-/// birth carries every value. The outputs' calls return at once: they only mark what changed, and <see cref="Changed"/> wakes the publisher,
-/// which takes the messages (<see cref="TakeMessages"/>) and numbers them in the order it publishes them.
+/// value, read time and quality, and which device is alive. A device is born (DBIRTH) once each of its tags has been
+/// read (or answered with an error) since it was last dead, so that its birth carries every value; it dies (DDEATH) when
+/// its unit stops answering or is demoted, or its link stops. Between, the metrics whose value or quality changed go out
+/// by alias in DDATA, each with the time the PLC was read. The outputs' calls return at once: they only mark what
+/// changed, and <see cref="Changed"/> wakes the publisher, which takes the messages (<see cref="TakeMessages"/>) and
+/// numbers them in the order it publishes them.
 /// </summary>
 public sealed class SparkplugNode : ITagOutput
 {
@@ -191,7 +186,7 @@ public sealed class SparkplugNode : ITagOutput
                 return;
             }
 
-            // Back online: born again with the next answer's values (which follow at once). Out: dead now.
+            // Back online: born again once every tag has been read again. Out: dead now.
             if (state == UnitState.Online || !device.Alive)
             {
                 return;
