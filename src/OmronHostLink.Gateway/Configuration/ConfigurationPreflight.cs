@@ -4,6 +4,7 @@ using Microsoft.Extensions.Configuration.Json;
 using Microsoft.Extensions.Logging;
 using OmronHostLink.Gateway.Mqtt;
 using OmronHostLink.Gateway.Simulation;
+using OmronHostLink.Gateway.Sparkplug;
 using OmronHostLink.Gateway.Telemetry;
 
 namespace OmronHostLink.Gateway.Configuration;
@@ -18,7 +19,7 @@ public static class ConfigurationPreflight
     /// <summary>The sections the gateway reads, besides the generic host's own.</summary>
     public static readonly string[] Sections =
     [
-        GatewayOptions.SectionName, SimulatorOptions.SectionName, MqttOptions.SectionName, TelemetryExport.SectionName, "Logging",
+        GatewayOptions.SectionName, SimulatorOptions.SectionName, MqttOptions.SectionName, SparkplugOptions.SectionName, TelemetryExport.SectionName, "Logging",
     ];
 
     /// <summary>Keys the generic host reads at the top level of the configuration files.</summary>

@@ -346,7 +346,8 @@ public sealed class MqttGateway : IHostedService, IAsyncDisposable
         return builder.Build();
     }
 
-    private static async Task DropConnectionAsync(IMqttClient client)
+    /// <summary>Closes a connection that is still open, waiting 2 s at most; a connection already gone is left alone.</summary>
+    internal static async Task DropConnectionAsync(IMqttClient client)
     {
         if (!client.IsConnected)
         {

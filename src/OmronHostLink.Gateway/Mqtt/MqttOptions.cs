@@ -63,6 +63,9 @@ public sealed class MqttOptions
     /// <summary>Delay between connection attempts: Initial, doubling up to Max. Default 1 s to 30 s.</summary>
     public BackoffOptions Reconnect { get; set; } = new();
 
+    /// <summary>How often the statistics of every link and unit are published (and at once when a unit's state changes). Default 10 s; 1 s to 1 h.</summary>
+    public TimeSpan StatisticsInterval { get; set; } = TimeSpan.FromSeconds(10);
+
     /// <summary>Writes from MQTT (off by default).</summary>
     public MqttWriteOptions Writes { get; set; } = new();
 

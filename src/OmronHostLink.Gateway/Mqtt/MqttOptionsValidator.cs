@@ -197,9 +197,9 @@ public sealed class MqttOptionsValidator : IValidateOptions<MqttOptions>
         }
     }
 
-    private static void ValidateTls(MqttTlsOptions? tls, List<string> failures)
+    /// <summary>Checks a <c>Tls</c> section (<paramref name="key"/>: its path, <c>Mqtt:Tls</c> by default).</summary>
+    internal static void ValidateTls(MqttTlsOptions? tls, List<string> failures, string key = MqttOptions.SectionName + ":Tls")
     {
-        const string key = MqttOptions.SectionName + ":Tls";
         if (tls is null)
         {
             return;
@@ -295,7 +295,7 @@ public sealed class MqttOptionsValidator : IValidateOptions<MqttOptions>
         }
     }
 
-    private static void ValidateWritable(string path, PollGroupOptions group, HostLinkCommandSet protocol, List<string> failures)
+    internal static void ValidateWritable(string path, PollGroupOptions group, HostLinkCommandSet protocol, List<string> failures)
     {
         // The HostLink validator reports bad addresses and types; only what writing adds is checked here.
         if (!PlcAddress.TryParse(group.Address, out PlcAddress address) || !PlcValueTypes.TryParse(group.Type, out PlcValueType type) || group.Count < 1)

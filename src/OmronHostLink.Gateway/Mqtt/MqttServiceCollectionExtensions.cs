@@ -56,8 +56,10 @@ public static class MqttServiceCollectionExtensions
             sp.GetRequiredService<MqttMetrics>(),
             sp.GetRequiredService<ILogger<WriteCommandProcessor>>(),
             sp.GetRequiredService<TimeProvider>()));
+        services.AddSingleton<IValidateOptions<MqttOptions>, StatisticsIntervalValidator>();
         services.AddSingleton<MqttGateway>();
         services.AddHostedService(sp => sp.GetRequiredService<MqttGateway>());
+        services.AddHostedService<StatisticsPublisher>();
         return services;
     }
 }

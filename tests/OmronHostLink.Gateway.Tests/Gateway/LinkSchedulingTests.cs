@@ -77,6 +77,7 @@ public sealed class LinkSchedulingTests(ITestOutputHelper output) : IAsyncLifeti
         // Each attempt on a silent unit costs the link its timeouts and the fence after them (about 0.7 s here).
         config["HostLink:Links:plc:Backoff:Initial"] = "00:00:00.500";
         config["HostLink:Links:plc:Backoff:Max"] = "00:00:00.500";
+        config["HostLink:Links:plc:Demotion:After"] = "0"; // retried with the backoff for ever (DemotionTests: demoted)
         Group(config, "present", "D0", intervalMs: 50);
         Group(config, "x", "D100", intervalMs: 50, unit: 5); // nobody answers unit 5
         Group(config, "y", "D200", intervalMs: 50, unit: 5);

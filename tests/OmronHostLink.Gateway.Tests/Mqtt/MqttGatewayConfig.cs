@@ -59,8 +59,8 @@ public static class MqttGatewayConfig
     /// <summary>The value topic of a tag on the link "plc".</summary>
     public static string Topic(string tag, int unit = 0) => $"{Prefix}/plc/{unit}/{tag}";
 
-    /// <summary>Builds the worker's host as Program.cs does, from in-memory configuration, logging to <paramref name="logs"/>.</summary>
-    public static IHost Build(Dictionary<string, string?> config, CapturingLoggerProvider logs)
+    /// <summary>Builds the worker's host as Program.cs does, from in-memory configuration, logging to <paramref name="logs"/>; <paramref name="services"/> may add to it.</summary>
+    public static IHost Build(Dictionary<string, string?> config, CapturingLoggerProvider logs, Action<IServiceCollection>? services = null)
     {
         var configuration = new ConfigurationManager();
         configuration.AddInMemoryCollection(config);
@@ -74,6 +74,7 @@ public static class MqttGatewayConfig
         builder.Logging.SetMinimumLevel(LogLevel.Debug);
         builder.Logging.AddProvider(logs);
         builder.Services.Configure<HostOptions>(o => o.ShutdownTimeout = TimeSpan.FromSeconds(10));
+        services?.Invoke(builder.Services);
         return builder.Build();
     }
 
