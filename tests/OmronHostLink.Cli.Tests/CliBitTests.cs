@@ -1,6 +1,6 @@
 using System.Text.Json;
 
-namespace OmronHostLink.Tests.Cli;
+namespace OmronHostLink.Cli.Tests;
 
 /// <summary>Bits: no silent protocol switch, and several bits are one command.</summary>
 public sealed class CliBitTests

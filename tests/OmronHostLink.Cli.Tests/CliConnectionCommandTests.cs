@@ -1,6 +1,6 @@
 using System.Text.Json;
 
-namespace OmronHostLink.Tests.Cli;
+namespace OmronHostLink.Cli.Tests;
 
 /// <summary>status, errors, model, test, mode, scan, raw against the simulator: output and exit codes.</summary>
 public sealed class CliConnectionCommandTests

@@ -1,6 +1,6 @@
 using System.Globalization;
 
-namespace OmronHostLink.Tests.Cli;
+namespace OmronHostLink.Cli.Tests;
 
 /// <summary><c>--as double</c>: an LREAL in four words, lowest word first, read and written through the console.</summary>
 public sealed class CliDoubleTests

@@ -1,6 +1,6 @@
 using System.Diagnostics;
 
-namespace OmronHostLink.Tests.Cli;
+namespace OmronHostLink.Cli.Tests;
 
 /// <summary>Every time option reads the library's one duration grammar: 500ms, 1s, 2m, 00:00:02; a bare number is refused.</summary>
 public sealed class CliDurationTests

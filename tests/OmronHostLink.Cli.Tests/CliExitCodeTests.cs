@@ -1,6 +1,6 @@
 using OmronHostLink.Cli;
 
-namespace OmronHostLink.Tests.Cli;
+namespace OmronHostLink.Cli.Tests;
 
 /// <summary>Every exit code: 0 success, 2 invalid input (nothing sent), 3 end code, 4 communication, 1 anything else.</summary>
 public sealed class CliExitCodeTests

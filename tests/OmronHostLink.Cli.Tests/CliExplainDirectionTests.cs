@@ -1,8 +1,6 @@
 using System.Text.Json;
-using OmronHostLink.Tests.Infrastructure;
-using OmronHostLink.Tests.Vectors;
 
-namespace OmronHostLink.Tests.Cli;
+namespace OmronHostLink.Cli.Tests;
 
 /// <summary><c>explain</c> without <c>--response</c>: an answer is recognised from its shape; an ambiguous frame says so.</summary>
 public sealed class CliExplainDirectionTests

@@ -1,7 +1,6 @@
 using System.Text.Json;
-using OmronHostLink.Tests.Infrastructure;
 
-namespace OmronHostLink.Tests.Cli;
+namespace OmronHostLink.Cli.Tests;
 
 /// <summary><c>explain</c> decodes FINS command parameters (and self-describing answer data), as the vectors' meanings state them.</summary>
 public sealed class CliExplainFinsTests

@@ -1,8 +1,6 @@
 using System.Text.Json;
-using OmronHostLink.Tests.Infrastructure;
-using OmronHostLink.Tests.Vectors;
 
-namespace OmronHostLink.Tests.Cli;
+namespace OmronHostLink.Cli.Tests;
 
 /// <summary><c>explain</c> against the golden vectors: every published and constructed frame.</summary>
 public sealed class CliExplainTests

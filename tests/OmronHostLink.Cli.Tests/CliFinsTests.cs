@@ -1,6 +1,6 @@
 using System.Text.Json;
 
-namespace OmronHostLink.Tests.Cli;
+namespace OmronHostLink.Cli.Tests;
 
 /// <summary>The same commands with <c>--fins</c>: FINS over Host Link (FA) against the simulator.</summary>
 public sealed class CliFinsTests

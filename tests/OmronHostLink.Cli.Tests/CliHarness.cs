@@ -5,7 +5,7 @@ using OmronHostLink.Cli;
 using OmronHostLink.Simulator;
 using OmronHostLink.Simulator.Hosting;
 
-namespace OmronHostLink.Tests.Cli;
+namespace OmronHostLink.Cli.Tests;
 
 /// <summary>What one run of the command line produced.</summary>
 internal sealed record CliResult(int ExitCode, string Out, string Err)

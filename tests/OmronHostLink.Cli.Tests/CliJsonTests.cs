@@ -1,6 +1,6 @@
 using System.Text.Json;
 
-namespace OmronHostLink.Tests.Cli;
+namespace OmronHostLink.Cli.Tests;
 
 /// <summary>With --json, every outcome is one JSON document on stdout: results and failures alike.</summary>
 public sealed class CliJsonTests

@@ -1,7 +1,7 @@
 using System.Globalization;
 using System.Text.RegularExpressions;
 
-namespace OmronHostLink.Tests.Cli;
+namespace OmronHostLink.Cli.Tests;
 
 /// <summary>Messages in the user's words: the command that went unanswered, the option that is wrong, help that helps.</summary>
 public sealed class CliMessageTests

@@ -1,6 +1,6 @@
 using System.Text.Json;
 
-namespace OmronHostLink.Tests.Cli;
+namespace OmronHostLink.Cli.Tests;
 
 /// <summary><c>model</c> describes a model; <c>--model</c> checks reads against it; <c>simulate --model</c> emulates one.</summary>
 public sealed class CliModelTests

@@ -6,9 +6,8 @@ using System.Text;
 using System.Text.Json;
 using OmronHostLink.Simulator;
 using OmronHostLink.Simulator.Hosting;
-using OmronHostLink.Tests.Vectors;
 
-namespace OmronHostLink.Tests.Cli;
+namespace OmronHostLink.Cli.Tests;
 
 /// <summary><c>monitor</c> is a watch: it outlives outages, prints every poll on request, and Ctrl+C is a clean exit.</summary>
 public sealed class CliMonitorTests

@@ -1,6 +1,6 @@
 using System.Text.Json;
 
-namespace OmronHostLink.Tests.Cli;
+namespace OmronHostLink.Cli.Tests;
 
 /// <summary>read, write and monitor against the simulator.</summary>
 public sealed class CliReadWriteTests

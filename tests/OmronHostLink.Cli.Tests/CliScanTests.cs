@@ -1,6 +1,6 @@
 using System.Text.RegularExpressions;
 
-namespace OmronHostLink.Tests.Cli;
+namespace OmronHostLink.Cli.Tests;
 
 /// <summary><c>scan</c>: one short probe per unit number, progress, and plain counts.</summary>
 public sealed class CliScanTests

@@ -1,6 +1,5 @@
-using OmronHostLink.Tests.Infrastructure;
 
-namespace OmronHostLink.Tests.Cli;
+namespace OmronHostLink.Cli.Tests;
 
 /// <summary>
 /// <c>hostlink</c> on a socat pty pair as a new user tries it: the simulator on one end and reads on the other, each a

@@ -1,7 +1,7 @@
 using System.Diagnostics;
 using System.Text.Json;
 
-namespace OmronHostLink.Tests.Cli;
+namespace OmronHostLink.Cli.Tests;
 
 /// <summary><c>simulate</c>: one PLC per unit number unless shared, a valid MS status, and a readiness signal.</summary>
 public sealed class CliSimulateTests

@@ -1,6 +1,6 @@
 using System.Text.RegularExpressions;
 
-namespace OmronHostLink.Tests.Cli;
+namespace OmronHostLink.Cli.Tests;
 
 /// <summary><c>demo</c>, <c>simulate</c> and <c>ports</c>.</summary>
 public sealed class CliSimulatorCommandTests

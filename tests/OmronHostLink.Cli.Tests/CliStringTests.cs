@@ -1,4 +1,4 @@
-namespace OmronHostLink.Tests.Cli;
+namespace OmronHostLink.Cli.Tests;
 
 /// <summary>String writes leave no old text behind, and say what they wrote.</summary>
 public sealed class CliStringTests

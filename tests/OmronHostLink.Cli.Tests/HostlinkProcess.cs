@@ -1,7 +1,7 @@
 using System.Diagnostics;
 using System.Text;
 
-namespace OmronHostLink.Tests.Cli;
+namespace OmronHostLink.Cli.Tests;
 
 /// <summary>
 /// The real <c>hostlink</c> entry point as a separate operating-system process (<c>dotnet hostlink.dll …</c> from the

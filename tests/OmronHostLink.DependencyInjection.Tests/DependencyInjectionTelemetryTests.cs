@@ -4,7 +4,7 @@ using Microsoft.Extensions.Diagnostics.Metrics.Testing;
 using OmronHostLink.Simulator;
 using OmronHostLink.Simulator.Hosting;
 
-namespace OmronHostLink.Tests.Telemetry;
+namespace OmronHostLink.DependencyInjection.Tests;
 
 /// <summary>A client registered with <c>AddHostLinkClient</c> measures through the container's meter factory, under its registered name.</summary>
 public sealed class DependencyInjectionTelemetryTests

@@ -4,10 +4,9 @@ using Microsoft.Extensions.DependencyInjection;
 using Microsoft.Extensions.Logging;
 using OmronHostLink.Simulator;
 using OmronHostLink.Simulator.Hosting;
-using OmronHostLink.Tests.Infrastructure;
 using OmronHostLink.Transports;
 
-namespace OmronHostLink.Tests.DependencyInjection;
+namespace OmronHostLink.DependencyInjection.Tests;
 
 /// <summary>Clients registered from JSON configuration and from code, resolved from the container, reading from simulators.</summary>
 public sealed class HostLinkClientRegistrationTests

@@ -6,7 +6,7 @@ using OmronHostLink.Simulator;
 using OmronHostLink.Simulator.Hosting;
 using OmronHostLink.Transports;
 
-namespace OmronHostLink.Tests.DependencyInjection;
+namespace OmronHostLink.DependencyInjection.Tests;
 
 /// <summary>Bad configuration stops the host at start, with every problem named by its configuration key.</summary>
 public sealed class HostLinkConfigurationValidationTests

@@ -5,7 +5,7 @@ using Microsoft.Extensions.Hosting;
 using Microsoft.Extensions.Logging;
 using Microsoft.Extensions.Options;
 
-namespace OmronHostLink.Tests.DependencyInjection;
+namespace OmronHostLink.DependencyInjection.Tests;
 
 /// <summary>A generic host whose only configuration is the JSON text given, as an application's appsettings.json.</summary>
 internal sealed class JsonHost : IAsyncDisposable

@@ -4,7 +4,7 @@ using OmronHostLink.Protocol;
 using OmronHostLink.Simulator;
 using OmronHostLink.Simulator.Faults;
 
-namespace OmronHostLink.Tests.Simulator;
+namespace OmronHostLink.Simulator.Tests;
 
 /// <summary>Each fault option produces the fault it names, deterministically for a seed.</summary>
 public class FaultInjectionTests

@@ -3,7 +3,7 @@ using System.Text;
 using OmronHostLink.Protocol.Fins;
 using OmronHostLink.Simulator;
 
-namespace OmronHostLink.Tests.Simulator;
+namespace OmronHostLink.Simulator.Tests;
 
 /// <summary>FINS over Host Link (header FA) answered by the simulator.</summary>
 public class FinsSimulatorTests

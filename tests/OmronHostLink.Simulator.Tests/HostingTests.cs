@@ -4,7 +4,7 @@ using System.Text;
 using OmronHostLink.Simulator;
 using OmronHostLink.Simulator.Hosting;
 
-namespace OmronHostLink.Tests.Simulator;
+namespace OmronHostLink.Simulator.Tests;
 
 /// <summary>TCP and serial hosting of a simulated PLC.</summary>
 public class HostingTests

@@ -1,10 +1,9 @@
 using OmronHostLink.Link;
 using OmronHostLink.Simulator;
 using OmronHostLink.Simulator.Hosting;
-using OmronHostLink.Tests.Infrastructure;
 using OmronHostLink.Transports;
 
-namespace OmronHostLink.Tests.Simulator;
+namespace OmronHostLink.Simulator.Tests;
 
 /// <summary>The simulator's serial host by port name, over real socat ptys: restarted on the same pty, and outliving its line.</summary>
 [Trait("Category", "Slow")]

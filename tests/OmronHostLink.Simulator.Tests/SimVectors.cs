@@ -1,6 +1,5 @@
-using OmronHostLink.Tests.Vectors;
 
-namespace OmronHostLink.Tests.Simulator;
+namespace OmronHostLink.Simulator.Tests;
 
 /// <summary>One golden vector, as the simulator tests use it.</summary>
 internal sealed record SimVector(string Name, string Direction, IReadOnlyList<string> Frames, bool FcsOk, string Notes)

@@ -1,6 +1,6 @@
 using OmronHostLink.Simulator;
 
-namespace OmronHostLink.Tests.Simulator;
+namespace OmronHostLink.Simulator.Tests;
 
 /// <summary>C-mode command behaviour of the simulator, driven with raw frames.</summary>
 public class SimulatorCommandTests

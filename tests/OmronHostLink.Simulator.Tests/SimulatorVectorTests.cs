@@ -2,7 +2,7 @@ using System.Globalization;
 using OmronHostLink.Protocol;
 using OmronHostLink.Simulator;
 
-namespace OmronHostLink.Tests.Simulator;
+namespace OmronHostLink.Simulator.Tests;
 
 /// <summary>The simulator answers the golden command vectors as a CS/CJ PLC does.</summary>
 public class SimulatorVectorTests

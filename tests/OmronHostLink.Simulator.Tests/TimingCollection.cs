@@ -1,4 +1,4 @@
-namespace OmronHostLink.Tests.Simulator;
+namespace OmronHostLink.Simulator.Tests;
 
 /// <summary>
 /// Tests that measure time on the wire run alone, after the parallel tests, so that a loaded thread pool does not

@@ -1,7 +1,7 @@
 using OmronHostLink.Simulator;
 using OmronHostLink.Simulator.Hosting;
 
-namespace OmronHostLink.Tests.Simulator;
+namespace OmronHostLink.Simulator.Tests;
 
 /// <summary>Several virtual PLCs on one line, each with its own unit numbers and state.</summary>
 public sealed class VirtualPlcLineTests

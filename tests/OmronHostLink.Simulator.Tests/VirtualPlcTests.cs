@@ -1,7 +1,7 @@
 using OmronHostLink.Simulator;
 using OmronHostLink.Simulator.Faults;
 
-namespace OmronHostLink.Tests.Simulator;
+namespace OmronHostLink.Simulator.Tests;
 
 /// <summary>The test-facing memory API and initial memory from JSON.</summary>
 public class VirtualPlcTests

@@ -1,6 +1,6 @@
 using OmronHostLink.Simulator.Hosting;
 
-namespace OmronHostLink.Tests.Simulator;
+namespace OmronHostLink.Simulator.Tests;
 
 /// <summary>The simulator's wire-time schedule, without a clock: which byte is handed over when.</summary>
 public sealed class WirePacerScheduleTests

@@ -2,7 +2,7 @@ using System.Diagnostics;
 using OmronHostLink.Simulator;
 using Xunit.Abstractions;
 
-namespace OmronHostLink.Tests.Simulator;
+namespace OmronHostLink.Simulator.Tests;
 
 /// <summary>Wire-time emulation and PLC turnaround, measured on the real clock (the pacer's schedule itself: <see cref="WirePacerScheduleTests"/>).</summary>
 [Collection(TimingCollection.Name)]

@@ -1,10 +1,9 @@
 using System.Globalization;
-using OmronHostLink.Tests.Vectors;
 
-namespace OmronHostLink.Tests.Infrastructure;
+namespace OmronHostLink.Testing;
 
 /// <summary>Frames taken from the golden vectors (Vectors/vectors.json) by name, for scripted-PLC tests.</summary>
-internal static class GoldenFrames
+public static class GoldenFrames
 {
     public static string[] Frames(string name) => GoldenVectors.Get(name).Frames;
 

@@ -3,13 +3,13 @@ using OmronHostLink.Simulator.Hosting;
 using OmronHostLink.Simulator;
 using OmronHostLink.Transports;
 
-namespace OmronHostLink.Tests.Infrastructure;
+namespace OmronHostLink.Testing;
 
 /// <summary>
 /// A simulated PLC and a client joined by an in-memory line. Counts the command frames the client sends, so a test
 /// can show that nothing was sent or how many transactions a call took.
 /// </summary>
-internal sealed class InProcessLine : IAsyncDisposable
+public sealed class InProcessLine : IAsyncDisposable
 {
     private readonly CancellationTokenSource _stop = new();
     private readonly Task _session;

@@ -1,17 +1,18 @@
 using System.Diagnostics;
 using System.Text;
 using System.Threading.Channels;
+using FluentAssertions;
 using OmronHostLink.Protocol;
 using OmronHostLink.Simulator;
 using OmronHostLink.Simulator.Hosting;
 
-namespace OmronHostLink.Tests.Simulator;
+namespace OmronHostLink.Testing;
 
 /// <summary>
 /// A raw test host on the far end of an in-memory link to a simulated PLC: writes raw frames, reads raw bytes with
 /// their arrival times. No client classes involved.
 /// </summary>
-internal sealed class RawHost : IAsyncDisposable
+public sealed class RawHost : IAsyncDisposable
 {
     public static readonly TimeSpan DefaultTimeout = TimeSpan.FromSeconds(5);
 

@@ -1,10 +1,11 @@
 using System.Text;
+using FluentAssertions;
 using OmronHostLink.Protocol;
 
-namespace OmronHostLink.Tests.Simulator;
+namespace OmronHostLink.Testing;
 
 /// <summary>A single response frame, checked for shape and FCS.</summary>
-internal sealed record Response(int Unit, string Header, string Text)
+public sealed record Response(int Unit, string Header, string Text)
 {
     /// <summary>The end code (first two characters of the text).</summary>
     public string EndCode => Text.Length >= 2 ? Text[..2] : string.Empty;

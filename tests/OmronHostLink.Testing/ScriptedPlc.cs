@@ -1,10 +1,10 @@
 using System.Collections.Concurrent;
 using System.Text;
 
-namespace OmronHostLink.Tests.Infrastructure;
+namespace OmronHostLink.Testing;
 
 /// <summary>What a scripted PLC sends back for one received frame.</summary>
-internal sealed record Reply(string Text, TimeSpan Delay = default, int ChunkSize = 0)
+public sealed record Reply(string Text, TimeSpan Delay = default, int ChunkSize = 0)
 {
     public static Reply None { get; } = new(string.Empty);
 }
@@ -13,7 +13,7 @@ internal sealed record Reply(string Text, TimeSpan Delay = default, int ChunkSiz
 /// A PLC played by a test: it reads CR-terminated frames from its end of the link and answers each with whatever the
 /// handler returns. TS frames are echoed (as a PLC does) unless the handler answers them; every received frame is logged.
 /// </summary>
-internal sealed class ScriptedPlc : IAsyncDisposable
+public sealed class ScriptedPlc : IAsyncDisposable
 {
     private readonly Stream _stream;
     private readonly Func<string, Reply?> _handler;

@@ -3,7 +3,7 @@ using System.Diagnostics;
 using System.Text;
 using OmronHostLink.Transports;
 
-namespace OmronHostLink.Tests.Infrastructure;
+namespace OmronHostLink.Testing;
 
 /// <summary>
 /// A connected pair of pseudo-terminals made by <c>socat</c>: bytes written to <see cref="PathA"/> come out of

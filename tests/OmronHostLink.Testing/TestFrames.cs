@@ -1,12 +1,12 @@
 using System.Text;
 
-namespace OmronHostLink.Tests.Infrastructure;
+namespace OmronHostLink.Testing;
 
 /// <summary>
 /// Builds frames for scripted PLCs with an FCS computed here, independently of the library's own FCS code, so that a
 /// test never checks the library against itself.
 /// </summary>
-internal static class TestFrames
+public static class TestFrames
 {
     public static string Fcs(string characters)
     {

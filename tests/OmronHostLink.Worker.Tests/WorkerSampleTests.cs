@@ -3,7 +3,7 @@ using System.Text;
 using OmronHostLink.Simulator;
 using OmronHostLink.Simulator.Hosting;
 
-namespace OmronHostLink.Tests.Samples;
+namespace OmronHostLink.Worker.Tests;
 
 /// <summary>The worker sample, run as a process with its own appsettings.json, polls the simulator and logs what it reads.</summary>
 public sealed class WorkerSampleTests

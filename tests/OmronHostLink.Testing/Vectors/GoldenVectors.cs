@@ -1,7 +1,7 @@
 using System.Text;
 using System.Text.Json;
 
-namespace OmronHostLink.Tests.Vectors;
+namespace OmronHostLink.Testing;
 
 /// <summary>The published/constructed FCS pair of one frame of a vector.</summary>
 public sealed record FcsDetail(string? Published, string? Computed);

@@ -1,6 +1,5 @@
 using OmronHostLink.Simulator;
 using OmronHostLink.Simulator.Hosting;
-using OmronHostLink.Tests.Simulator;
 using OmronHostLink.Transports;
 
 namespace OmronHostLink.Tests.Models;
