@@ -7,7 +7,7 @@ using OmronHostLink.Simulator;
 using OmronHostLink.Simulator.Protocol;
 using Xunit;
 
-namespace OmronHostLink.Tests.CMode;
+namespace OmronHostLink.Cli.Tests;
 
 /// <summary>
 /// A command added as one row of a table, and nothing else, is parsed, executed by the simulator and explained: the
