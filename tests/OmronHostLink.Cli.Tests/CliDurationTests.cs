@@ -40,11 +40,11 @@ public sealed class CliDurationTests
     }
 
     [Theory]
-    [InlineData("500ms")]
-    [InlineData("1s")]
-    [InlineData("0.5s")]
+    [InlineData("5000ms")]
+    [InlineData("5s")]
+    [InlineData("4.5s")]
     [InlineData("1m")]
-    [InlineData("00:00:00.400")]
+    [InlineData("00:00:05.400")]
     public async Task Timeout_takes_a_duration(string timeout)
     {
         await using var sim = await SimulatedPlc.StartAsync();

@@ -32,9 +32,21 @@ internal static class Cli
     {
         var stdout = new StringWriter();
         var stderr = new StringWriter();
-        int exit = await CliApp.RunAsync(args, TextWriter.Synchronized(stdout), TextWriter.Synchronized(stderr), cancellationToken);
+        int exit = await CliApp.RunAsync(WithAllowance(args), TextWriter.Synchronized(stdout), TextWriter.Synchronized(stderr), cancellationToken);
         return new CliResult(exit, stdout.ToString(), stderr.ToString());
     }
+
+    /// <summary>
+    /// The command line, with the lossless line's allowance (<see cref="Allowances.LosslessLine"/>) as <c>--timeout</c>
+    /// where a command talks to a PLC (<c>--tcp</c> or <c>--port</c>) and the test sets no <c>--timeout</c>: the PLCs
+    /// these tests talk to answer every frame, so a deadline must not fail a test because the machine is busy. A scan
+    /// keeps its own short default, since finding the units that do not answer is its job; <c>simulate</c> takes no
+    /// allowance.
+    /// </summary>
+    public static string[] WithAllowance(string[] args)
+        => (args.Contains("--tcp") || args.Contains("--port")) && !args.Contains("--timeout") && args.FirstOrDefault() is not ("scan" or "simulate")
+            ? [.. args, "--timeout", Allowances.LosslessLineText]
+            : args;
 
     /// <summary>A loopback port nobody listens on.</summary>
     public static int ClosedPort()

@@ -25,7 +25,7 @@ public sealed class CliMonitorTests
         TextWriter output = TextWriter.Synchronized(stdout);
         using var cts = new CancellationTokenSource();
         Task<int> run = OmronHostLink.Cli.CliApp.RunAsync(
-            ["monitor", "D0", "--interval", "30ms", "--timeout", "50ms", "--json", "--tcp", $"127.0.0.1:{port}"], output, TextWriter.Synchronized(stderr), cts.Token);
+            ["monitor", "D0", "--interval", "30ms", "--timeout", Allowances.LosslessLineText, "--json", "--tcp", $"127.0.0.1:{port}"], output, TextWriter.Synchronized(stderr), cts.Token);
         string Out() { lock (output) { return stdout.ToString(); } }
 
         await Until(() => Out().Contains("\"values\":[7]", StringComparison.Ordinal), Out);
@@ -254,7 +254,7 @@ public sealed class CliMonitorTests
         var stdout = new StringWriter();
         TextWriter output = TextWriter.Synchronized(stdout);
         var stop = new CancellationTokenSource();
-        Task<int> run = OmronHostLink.Cli.CliApp.RunAsync([.. args, "--tcp", sim.Endpoint], output, TextWriter.Null, stop.Token);
+        Task<int> run = OmronHostLink.Cli.CliApp.RunAsync(Cli.WithAllowance([.. args, "--tcp", sim.Endpoint]), output, TextWriter.Null, stop.Token);
         return (run, () => { lock (output) { return stdout.ToString(); } }, stop);
     }
 
@@ -289,7 +289,7 @@ internal static class RealCli
             UseShellExecute = false,
         };
         start.ArgumentList.Add(Path.Combine(AppContext.BaseDirectory, "hostlink.dll"));
-        foreach (string arg in args)
+        foreach (string arg in Cli.WithAllowance(args))
         {
             start.ArgumentList.Add(arg);
         }

@@ -191,19 +191,33 @@ public sealed class CliReadWriteTests
     {
         await using var sim = await SimulatedPlc.StartAsync();
         using var cts = new CancellationTokenSource();
-        Task<CliResult> run = Cli.RunAsync(cts.Token, "monitor", "D0", "2", "--interval", "30ms", "--json", "--tcp", sim.Endpoint);
-        await Task.Delay(300);
+        var stdout = new StringWriter();
+        TextWriter output = TextWriter.Synchronized(stdout);
+        Task<int> run = OmronHostLink.Cli.CliApp.RunAsync(Cli.WithAllowance(["monitor", "D0", "2", "--interval", "30ms", "--json", "--tcp", sim.Endpoint]), output, TextWriter.Null, cts.Token);
+        string[] Lines() { lock (output) { return stdout.ToString().Split('\n', StringSplitOptions.RemoveEmptyEntries); } }
+
+        // The change is made once the first poll is printed, and the monitor is stopped once it has printed the change.
+        await UntilAsync(() => Lines().Length >= 1 || run.IsCompleted);
         sim.Plc.WriteWord(PlcArea.Dm, 1, 99);
-        await Task.Delay(300);
+        await UntilAsync(() => Lines().Length >= 2 || run.IsCompleted);
         cts.Cancel();
 
-        CliResult r = await run.WaitAsync(TimeSpan.FromSeconds(10));
+        int exit = await run.WaitAsync(TimeSpan.FromSeconds(10));
 
-        r.ExitCode.Should().Be(0, r.ToString());
-        string[] lines = r.Lines();
+        exit.Should().Be(0, string.Join('\n', Lines()));
+        string[] lines = Lines();
         lines.Should().HaveCountGreaterThanOrEqualTo(2);
         JsonElement change = JsonDocument.Parse(lines[1]).RootElement;
         change.GetProperty("changed").EnumerateArray().Select(v => v.GetString()).Should().Equal("D1");
         change.GetProperty("values")[1].GetInt32().Should().Be(99);
+    }
+
+    private static async Task UntilAsync(Func<bool> condition)
+    {
+        using var patience = new CancellationTokenSource(TimeSpan.FromSeconds(30));
+        while (!condition())
+        {
+            await Task.Delay(20, patience.Token);
+        }
     }
 }

@@ -86,10 +86,11 @@ public sealed class CliScanTests
     {
         await using var sim = await SimulatedPlc.StartAsync(units: [0]);
         (string host, int port) = OmronHostLink.Transports.TcpTransport.ParseEndpoint(sim.Endpoint);
-        await using HostLinkClient client = HostLinkClient.ForTcp(host, port, new HostLinkClientOptions { TurnaroundAllowance = TimeSpan.FromMilliseconds(150) });
+        await using HostLinkClient client = HostLinkClient.ForTcp(host, port, new HostLinkClientOptions { TurnaroundAllowance = Allowances.LosslessLine });
         sim.Plc.WriteWord(PlcArea.Dm, 0, 42);
 
-        TimeSpan? absent = await client.Unit(9).ProbeAsync();
+        // Only the absent unit's probe waits a short time: its deadline is what tells it is absent.
+        TimeSpan? absent = await client.Unit(9).ProbeAsync(TimeSpan.FromMilliseconds(150));
         TimeSpan? present = await client.ProbeAsync();
         ushort value = await client.ReadWordAsync("D0");
 

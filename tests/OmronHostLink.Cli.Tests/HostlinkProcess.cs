@@ -54,7 +54,7 @@ internal sealed class HostlinkProcess : IAsyncDisposable
             UseShellExecute = false,
         };
         start.ArgumentList.Add(dll);
-        foreach (string a in args)
+        foreach (string a in Cli.WithAllowance(args))
         {
             start.ArgumentList.Add(a);
         }

@@ -22,6 +22,7 @@ public sealed class DependencyInjectionTelemetryTests
             {
                 o.Tcp.Host = "127.0.0.1";
                 o.Tcp.Port = port;
+                o.TurnaroundAllowance = Allowances.LosslessLine;
             });
         }
         await using ServiceProvider provider = services.BuildServiceProvider();
@@ -47,6 +48,7 @@ public sealed class DependencyInjectionTelemetryTests
         {
             o.Tcp.Host = "127.0.0.1";
             o.Tcp.Port = port;
+            o.TurnaroundAllowance = Allowances.LosslessLine;
         });
         await using ServiceProvider provider = services.BuildServiceProvider();
         using var durations = new MetricCollector<double>(provider.GetRequiredService<IMeterFactory>(), HostLinkTelemetry.MeterName, "hostlink.client.operation.duration");

@@ -36,14 +36,14 @@ public sealed class HostLinkClientRegistrationTests
                   "press": {
                     "Tcp": "127.0.0.1:{{pressSimulator.EndPoint.Port}}",
                     "Serial": { "BaudRate": 115200, "DataBits": 8, "Parity": "None", "StopBits": 1 },
-                    "TurnaroundAllowance": "500ms"
+                    "TurnaroundAllowance": "5s"
                   },
                   "oven": {
                     "Serial": { "PortName": "{{pty.PathA}}", "BaudRate": 115200 },
                     "UnitNumber": 3,
                     "CommandSet": "Fins",
                     "WordOrder": "HighWordFirst",
-                    "TurnaroundAllowance": "00:00:00.500"
+                    "TurnaroundAllowance": "00:00:05"
                   }
                 }
               }
@@ -89,7 +89,7 @@ public sealed class HostLinkClientRegistrationTests
     public async Task The_overload_without_a_name_registers_the_default_client()
     {
         await using Simulated sim = await Simulated.StartAsync();
-        string json = $$"""{ "HostLink": { "Client": { "Tcp": { "Host": "127.0.0.1", "Port": {{sim.Port}}, "ConnectTimeout": "2s" } } } }""";
+        string json = $$"""{ "HostLink": { "Client": { "Tcp": { "Host": "127.0.0.1", "Port": {{sim.Port}}, "ConnectTimeout": "2s" }, "TurnaroundAllowance": "{{Allowances.LosslessLineText}}" } } }""";
         await using JsonHost host = JsonHost.Build(json, (services, configuration) =>
             services.AddHostLinkClient(configuration.GetSection("HostLink:Client")));
         await host.Host.StartAsync();
@@ -104,7 +104,7 @@ public sealed class HostLinkClientRegistrationTests
         await using Simulated sim = await Simulated.StartAsync();
 
         // The file points at a closed port; the code that follows it points at the simulator.
-        string json = """{ "HostLink": { "Clients": { "line1": { "Tcp": "127.0.0.1:1", "ReadRetries": 0 } } } }""";
+        string json = $$"""{ "HostLink": { "Clients": { "line1": { "Tcp": "127.0.0.1:1", "ReadRetries": 0, "TurnaroundAllowance": "{{Allowances.LosslessLineText}}" } } } }""";
         await using JsonHost host = JsonHost.Build(json, (services, configuration) =>
         {
             services.AddHostLinkClient("line1", configuration.GetSection("HostLink:Clients:line1"), o => o.Tcp.Port = sim.Port);
@@ -112,6 +112,7 @@ public sealed class HostLinkClientRegistrationTests
             {
                 o.Tcp.Host = "127.0.0.1";
                 o.Tcp.Port = sim.Port;
+                o.TurnaroundAllowance = Allowances.LosslessLine;
                 o.CommandSet = HostLinkCommandSet.Fins;
             });
         });
@@ -204,7 +205,7 @@ public sealed class HostLinkClientRegistrationTests
             return new Simulated(host);
         }
 
-        public string Json(string name) => $$"""{ "HostLink": { "Clients": { "{{name}}": { "Tcp": "127.0.0.1:{{Port}}" } } } }""";
+        public string Json(string name) => $$"""{ "HostLink": { "Clients": { "{{name}}": { "Tcp": "127.0.0.1:{{Port}}", "TurnaroundAllowance": "{{Allowances.LosslessLineText}}" } } } }""";
 
         public ValueTask DisposeAsync() => Host.DisposeAsync();
     }

@@ -14,7 +14,7 @@ public sealed class SerialHostingTests
     private static HostLinkClientOptions Options => new()
     {
         LineTiming = new LineTiming(115200, 11),
-        TurnaroundAllowance = TimeSpan.FromMilliseconds(500),
+        TurnaroundAllowance = Allowances.LosslessLine,
     };
 
     private static VirtualPlc Plc(ushort value)

@@ -15,7 +15,7 @@ public sealed class VirtualPlcLineTests
         line[4].Mode = PlcMode.Run;
         await using var host = new TcpSimulatorHost(line);
         await host.StartAsync();
-        await using HostLinkClient client = HostLinkClient.ForTcp("127.0.0.1", host.EndPoint.Port);
+        await using HostLinkClient client = HostLinkClient.ForTcp("127.0.0.1", host.EndPoint.Port, new HostLinkClientOptions { TurnaroundAllowance = Allowances.LosslessLine });
 
         ushort zero = await client.ReadWordAsync("D0");
         ushort four = await client.Unit(4).ReadWordAsync("D0");

@@ -42,13 +42,11 @@ public sealed class InProcessLine : IAsyncDisposable
     }
 
     /// <summary>
-    /// The turnaround allowance given to a client that keeps the default. The simulator here answers at once and the
-    /// line loses nothing, so the deadline only has to catch a lost answer; what it must not catch is the process being
-    /// paused, and the test host holds two thread-pool workers for its own use (the test platform's socket loop and the
-    /// adapter's wait for the run), so the first exchanges of a run can wait ~0.5 s for the pool to add a worker.
-    /// Tests about deadlines set their own allowance or drive a fake clock.
+    /// The turnaround allowance given to a client that keeps the default: <see cref="Allowances.LosslessLine"/>, since
+    /// the simulator here answers at once and the line loses nothing. Tests about deadlines set their own allowance or
+    /// drive a fake clock.
     /// </summary>
-    public static readonly TimeSpan InMemoryAllowance = TimeSpan.FromSeconds(5);
+    public static readonly TimeSpan InMemoryAllowance = Allowances.LosslessLine;
 
     private static readonly TimeSpan DefaultAllowance = new HostLinkClientOptions().TurnaroundAllowance;
 

@@ -19,7 +19,10 @@ public sealed class WorkerSampleTests
         await using var simulator = new TcpSimulatorHost(plc);
         await simulator.StartAsync();
 
-        await using var sample = SampleProcess.Start($"--HostLink:Clients:line1:Tcp=127.0.0.1:{simulator.EndPoint.Port}", "--Watch:line1:Interval=00:00:00.200");
+        await using var sample = SampleProcess.Start(
+            $"--HostLink:Clients:line1:Tcp=127.0.0.1:{simulator.EndPoint.Port}",
+            $"--HostLink:Clients:line1:TurnaroundAllowance={Allowances.LosslessLineText}",
+            "--Watch:line1:Interval=00:00:00.200");
         await sample.WaitForAsync("line1 D100:int16 = 120", Patience);
         await sample.WaitForAsync("line1 D101:int16 = -340", Patience);
         await sample.WaitForAsync("line1 D200:float = 21.5", Patience);

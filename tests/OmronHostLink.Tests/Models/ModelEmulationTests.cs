@@ -292,7 +292,7 @@ public sealed class ModelEmulationTests
             (Stream host, Stream plcEnd) = InMemoryLink.CreatePair();
             _host = new CountingStream(host);
             _ = plc.RunAsync(plcEnd, _stop.Token);
-            Client = HostLinkClient.ForStream(_host, new HostLinkClientOptions { LineTiming = new LineTiming(115200, 11), Model = model });
+            Client = HostLinkClient.ForStream(_host, new HostLinkClientOptions { LineTiming = new LineTiming(115200, 11), TurnaroundAllowance = Allowances.LosslessLine, Model = model });
         }
 
         public HostLinkClient Client { get; }
