@@ -118,7 +118,7 @@ public sealed class CliConnectionCommandTests
     {
         await using var sim = await SimulatedPlc.StartAsync(PlcMode.Run, units: [0, 3]);
 
-        CliResult r = await sim.RunAsync("scan", "--units", "0-4", "--timeout", "50ms", "--json");
+        CliResult r = await sim.RunAsync("scan", "--units", "0-4", "--timeout", Cli.ScanTimeout, "--json");
 
         r.ExitCode.Should().Be(0, r.ToString());
         JsonElement[] units = r.Json().GetProperty("units").EnumerateArray().ToArray();

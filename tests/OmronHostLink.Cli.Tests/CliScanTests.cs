@@ -10,7 +10,7 @@ public sealed class CliScanTests
     {
         await using var sim = await SimulatedPlc.StartAsync(units: [3]);
 
-        CliResult r = await sim.RunAsync("scan", "--units", "0-7", "--timeout", "150ms", "--verbose");
+        CliResult r = await sim.RunAsync("scan", "--units", "0-7", "--timeout", Cli.ScanTimeout, "--verbose");
 
         r.ExitCode.Should().Be(0, r.ToString());
         Dictionary<int, int> sent = Enumerable.Range(0, 8).ToDictionary(u => u, u => Frames(r, u));
@@ -28,7 +28,7 @@ public sealed class CliScanTests
     {
         await using var sim = await SimulatedPlc.StartAsync(units: [1, 2]);
 
-        CliResult r = await sim.RunAsync("scan", "--units", "0-3", "--timeout", "150ms", "--json");
+        CliResult r = await sim.RunAsync("scan", "--units", "0-3", "--timeout", Cli.ScanTimeout, "--json");
 
         r.ExitCode.Should().Be(0, r.ToString());
         r.Json().GetProperty("units").EnumerateArray().Select(u => u.GetProperty("unit").GetInt32()).Should().Equal(1, 2);
@@ -39,7 +39,7 @@ public sealed class CliScanTests
     {
         await using var sim = await SimulatedPlc.StartAsync(units: [0, 2]);
 
-        CliResult r = await sim.RunAsync("scan", "--units", "0-3", "--timeout", "150ms");
+        CliResult r = await sim.RunAsync("scan", "--units", "0-3", "--timeout", Cli.ScanTimeout);
 
         r.ExitCode.Should().Be(0, r.ToString());
         r.Err.Should().Contain("Scanning 4 unit numbers");
@@ -76,7 +76,7 @@ public sealed class CliScanTests
     {
         await using var sim = await SimulatedPlc.StartAsync(units: [0]);
 
-        CliResult r = await sim.RunAsync("scan", "--units", "0-1", "--timeout", "150ms");
+        CliResult r = await sim.RunAsync("scan", "--units", "0-1", "--timeout", Cli.ScanTimeout);
 
         r.Err.Should().Contain("1 unit answers");
     }
