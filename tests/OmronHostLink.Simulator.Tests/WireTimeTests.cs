@@ -18,7 +18,7 @@ public class WireTimeTests(ITestOutputHelper output)
         double expectedMs = 131 * 11 * 1000.0 / 9600; // 150.1 ms
 
         var measured = new List<double>();
-        for (int i = 0; i < 5; i++)
+        for (int i = 0; i < 7; i++)
         {
             await host.SendAsync(command);
             (string frame, long first, long last) = await host.ReadFrameTimedAsync();
@@ -26,12 +26,13 @@ public class WireTimeTests(ITestOutputHelper output)
             measured.Add(Stopwatch.GetElapsedTime(first, last).TotalMilliseconds);
         }
 
-        // A busy machine can only make a frame late (the pacer's thread waits to be scheduled), never early: no frame
-        // may beat the wire, and the fastest of five is what the pacer achieves when it gets the processor.
+        // The median of seven: a busy machine can hold either end back now and then (the pacer before the last byte, the
+        // receiver before it takes the first), so a few frames measure long or short.
         measured.Sort();
+        double median = measured[measured.Count / 2];
         string all = string.Join(" / ", measured.Select(m => m.ToString("F2", System.Globalization.CultureInfo.InvariantCulture)));
-        output.WriteLine($"131 chars at 9600 bps x 11 bits: expected {expectedMs:F2} ms, measured {all} ms");
-        measured[0].Should().BeApproximately(expectedMs, expectedMs * 0.02, $"first-to-last byte of 131 characters at 9600 bps, 11 bits (all: {all} ms)");
+        output.WriteLine($"131 chars at 9600 bps x 11 bits: expected {expectedMs:F2} ms, measured {all} ms, median {median:F2} ms");
+        median.Should().BeApproximately(expectedMs, expectedMs * 0.02, $"first-to-last byte of 131 characters at 9600 bps, 11 bits (all: {all} ms)");
     }
 
     [Fact]
