@@ -22,6 +22,15 @@ internal static class SettingRules
     /// <summary>The longest turnaround allowance.</summary>
     public static readonly TimeSpan LongestTurnaround = TimeSpan.FromMinutes(1);
 
+    /// <summary>The longest send interval, of a link or of a unit.</summary>
+    public static readonly TimeSpan LongestSendInterval = TimeSpan.FromSeconds(10);
+
+    /// <summary>The most data bits a character may have; the fewest is 7 (Host Link's own 7E2).</summary>
+    public const int MaxDataBits = 8;
+
+    /// <summary>The fewest data bits a character may have.</summary>
+    public const int MinDataBits = 7;
+
     /// <summary>The longest TCP connection attempt.</summary>
     public static readonly TimeSpan LongestConnectTimeout = TimeSpan.FromMinutes(5);
 
@@ -46,7 +55,9 @@ internal static class SettingRules
     public static string? TurnaroundAllowance(TimeSpan value) => Positive(value, LongestTurnaround, "1 minute");
 
     public static string? SendInterval(TimeSpan value)
-        => value < TimeSpan.Zero || value > TimeSpan.FromSeconds(10) ? $"{value.TotalMilliseconds:0.###} ms is not 0 to 10 s" : null;
+        => value < TimeSpan.Zero || value > LongestSendInterval
+            ? $"{value.TotalMilliseconds.ToString("0.###", CultureInfo.InvariantCulture)} ms is not 0 to {LongestSendInterval.TotalSeconds.ToString(CultureInfo.InvariantCulture)} s"
+            : null;
 
     public static string? ConnectTimeout(TimeSpan value) => Positive(value, LongestConnectTimeout, "5 minutes");
 
@@ -64,7 +75,7 @@ internal static class SettingRules
     public static string? BaudRate(int baud)
         => Array.IndexOf(StandardBaudRates, baud) < 0 ? $"{baud} is not a standard rate ({string.Join(", ", StandardBaudRates)})" : null;
 
-    public static string? DataBits(int bits) => bits is 7 or 8 ? null : $"{bits} is not 7 or 8";
+    public static string? DataBits(int bits) => bits is >= MinDataBits and <= MaxDataBits ? null : $"{bits} is not {MinDataBits} or {MaxDataBits}";
 
     public static string? Parity(SerialParity value)
         => value is SerialParity.None or SerialParity.Even or SerialParity.Odd ? null : $"{(int)value} is not None, Even or Odd";
