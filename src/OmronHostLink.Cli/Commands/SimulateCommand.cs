@@ -207,9 +207,9 @@ internal static class SimulateCommand
     private static (string Host, int Port) ParseListen(string text)
     {
         int colon = text.LastIndexOf(':');
-        if (colon <= 0 || !int.TryParse(text.AsSpan(colon + 1), NumberStyles.None, CultureInfo.InvariantCulture, out int p) || p > 65535)
+        if (colon <= 0 || !int.TryParse(text.AsSpan(colon + 1), NumberStyles.None, CultureInfo.InvariantCulture, out int p) || p > SettingRules.MaxTcpPort)
         {
-            throw new UsageException($"--tcp '{text}' is not host:port with a port 0-65535.");
+            throw new UsageException($"--tcp '{text}' is not host:port with a port 0-{SettingRules.MaxTcpPort}.");
         }
 
         return (text[..colon].Trim('[', ']'), p);

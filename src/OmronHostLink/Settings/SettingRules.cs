@@ -31,6 +31,9 @@ internal static class SettingRules
     /// <summary>The fewest data bits a character may have.</summary>
     public const int MinDataBits = 7;
 
+    /// <summary>The highest TCP port number.</summary>
+    public const int MaxTcpPort = 65535;
+
     /// <summary>The longest TCP connection attempt.</summary>
     public static readonly TimeSpan LongestConnectTimeout = TimeSpan.FromMinutes(5);
 
@@ -93,7 +96,7 @@ internal static class SettingRules
     public static string? Host(string host)
         => host.Trim().Length == 0 ? "is empty; write the serial-device server's host name or address" : null;
 
-    public static string? TcpPort(int port) => port is < 1 or > 65535 ? $"{port} is not a TCP port (1-65535)" : null;
+    public static string? TcpPort(int port) => port is < 1 or > MaxTcpPort ? $"{port} is not a TCP port (1-{MaxTcpPort})" : null;
 
     /// <summary>Reads <c>host:port</c> (an IPv6 address in brackets: <c>[fd00::5]:4001</c>).</summary>
     public static bool TryParseEndpoint(string text, out string host, out int port, out string? error)
@@ -122,7 +125,7 @@ internal static class SettingRules
 
         if (!int.TryParse(p, NumberStyles.None, CultureInfo.InvariantCulture, out int number) || TcpPort(number) is not null)
         {
-            error = $"'{text}': the port '{p}' is not a number 1-65535";
+            error = $"'{text}': the port '{p}' is not a number 1-{MaxTcpPort}";
             return false;
         }
 
