@@ -24,7 +24,7 @@ internal static class SimulateCommand
         Option<string> mode = OptionValues.Choice("--mode", "Operating mode at start.", "program", "program", "monitor", "run");
         var memory = new Option<string?>("--memory") { Description = "JSON file with initial memory and state, e.g. {\"D100\":[1,2,3],\"mode\":\"run\"}.", HelpName = "file.json" };
         Option<int?> baud = OptionValues.OptionalInteger("--baud", "Line speed: on TCP, emulate the wire time of this speed (default none); on a serial port, the port's speed (default 9600).", 1, 10_000_000, "n");
-        Option<int> dataBits = OptionValues.Integer("--data-bits", "Serial data bits: 7 or 8.", new SerialLineSettings().DataBits, int.MinValue, int.MaxValue, "7|8");
+        Option<int> dataBits = OptionValues.Integer("--data-bits", $"Serial data bits: {SettingRules.MinDataBits} or {SettingRules.MaxDataBits}.", new SerialLineSettings().DataBits, int.MinValue, int.MaxValue, $"{SettingRules.MinDataBits}|{SettingRules.MaxDataBits}");
         Option<string> parity = OptionValues.Choice("--parity", "Serial parity.", "even", "none", "even", "odd");
         Option<int> stopBits = OptionValues.Integer("--stop-bits", "Serial stop bits: 1 or 2.", (int)new SerialLineSettings().StopBits, int.MinValue, int.MaxValue, "1|2");
         Option<TimeSpan?> turnaround = Durations.Option("--turnaround", "Time between a command and its answer.", TimeSpan.Zero, TimeSpan.Zero, TimeSpan.FromMinutes(1));
@@ -217,9 +217,9 @@ internal static class SimulateCommand
     private static (string Host, int Port) ParseListen(string text)
     {
         int colon = text.LastIndexOf(':');
-        if (colon <= 0 || !int.TryParse(text.AsSpan(colon + 1), NumberStyles.None, CultureInfo.InvariantCulture, out int p) || p > 65535)
+        if (colon <= 0 || !int.TryParse(text.AsSpan(colon + 1), NumberStyles.None, CultureInfo.InvariantCulture, out int p) || p > SettingRules.MaxTcpPort)
         {
-            throw new UsageException($"--tcp '{text}' is not host:port with a port 0-65535.");
+            throw new UsageException($"--tcp '{text}' is not host:port with a port 0-{SettingRules.MaxTcpPort}.");
         }
 
         return (text[..colon].Trim('[', ']'), p);

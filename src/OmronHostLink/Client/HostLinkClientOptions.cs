@@ -138,10 +138,7 @@ public sealed class HostLinkClientOptions
         Check(nameof(FinsResponseWait), FinsResponseWait, SettingRules.FinsResponseWait(FinsResponseWait));
         Check(nameof(CommandSet), CommandSet, SettingRules.CommandSet(CommandSet));
         Check(nameof(WordOrder), WordOrder, SettingRules.WordOrder(WordOrder));
-        if (SendInterval < TimeSpan.Zero || SendInterval > MaxSendInterval)
-        {
-            throw new ArgumentOutOfRangeException(nameof(SendInterval), SendInterval, "SendInterval must be between 0 and 10 s.");
-        }
+        Check(nameof(SendInterval), SendInterval, SettingRules.SendInterval(SendInterval));
 
         if (UnitSendIntervals is null)
         {
@@ -155,9 +152,9 @@ public sealed class HostLinkClientOptions
                 throw new ArgumentOutOfRangeException(nameof(UnitSendIntervals), unit.Key, $"UnitSendIntervals names unit {unit.Key}; Host Link unit numbers are 0-{HostLinkUnit.MaxUnitNumber}.");
             }
 
-            if (unit.Value < TimeSpan.Zero || unit.Value > MaxSendInterval)
+            if (SettingRules.SendInterval(unit.Value) is { } tooLong)
             {
-                throw new ArgumentOutOfRangeException(nameof(UnitSendIntervals), unit.Value, $"UnitSendIntervals[{unit.Key}] must be between 0 and 10 s.");
+                throw new ArgumentOutOfRangeException(nameof(UnitSendIntervals), unit.Value, $"UnitSendIntervals[{unit.Key}] {tooLong}.");
             }
         }
 
@@ -189,8 +186,6 @@ public sealed class HostLinkClientOptions
             throw new ArgumentOutOfRangeException(name, value, $"{name} {problem}.");
         }
     }
-
-    private static readonly TimeSpan MaxSendInterval = TimeSpan.FromSeconds(10);
 
     internal HostLinkClientOptions Clone()
     {

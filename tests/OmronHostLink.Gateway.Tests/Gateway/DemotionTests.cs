@@ -30,6 +30,8 @@ public sealed class DemotionTests(ITestOutputHelper output)
         Dictionary<string, string?> config = MqttGatewayConfig.Create(simulator.Port, broker: null)
             .Where(k => !k.Key.StartsWith("Mqtt:", StringComparison.Ordinal))
             .ToDictionary(k => k.Key, k => k.Value);
+        // The silent unit's polls must time out: a short allowance (the answering unit's exchanges take milliseconds).
+        config["HostLink:Links:plc:TurnaroundAllowance"] = "500ms";
         config["HostLink:Links:plc:Demotion:After"] = "2";
         config["HostLink:Links:plc:Demotion:Period"] = "1s";
         MqttGatewayConfig.Group(config, "present", "D100", intervalMs: 50, unit: 0);

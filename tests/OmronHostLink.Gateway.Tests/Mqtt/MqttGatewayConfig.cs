@@ -19,7 +19,7 @@ public static class MqttGatewayConfig
     {
         ["HostLink:Links:plc:Tcp"] = $"127.0.0.1:{plcPort}",
         ["HostLink:Links:plc:Serial:BaudRate"] = "115200",
-        ["HostLink:Links:plc:TurnaroundAllowance"] = "00:00:00.200",
+        ["HostLink:Links:plc:TurnaroundAllowance"] = Allowances.LosslessLineText,
         ["HostLink:Links:plc:ReadRetries"] = "1",
         ["HostLink:Links:plc:Tcp:ConnectTimeout"] = "00:00:00.500",
         ["HostLink:Links:plc:Backoff:Initial"] = "00:00:00.100",

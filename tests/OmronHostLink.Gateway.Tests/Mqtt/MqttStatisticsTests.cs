@@ -23,6 +23,8 @@ public sealed class MqttStatisticsTests(ITestOutputHelper output)
         await using RecordingSimulator simulator = await RecordingSimulator.StartAsync(new VirtualPlcLine([present, absent]));
         Dictionary<string, string?> config = MqttGatewayConfig.Create(simulator.Port, broker);
         config["Mqtt:StatisticsInterval"] = "1s";
+        // The silent unit's polls must time out: a short allowance (the answering unit's exchanges take milliseconds).
+        config["HostLink:Links:plc:TurnaroundAllowance"] = "500ms";
         config["HostLink:Links:plc:Demotion:After"] = "2";
         config["HostLink:Links:plc:Demotion:Period"] = "30s";
         MqttGatewayConfig.Group(config, "present", "D100", intervalMs: 50, unit: 0);
@@ -43,6 +45,7 @@ public sealed class MqttStatisticsTests(ITestOutputHelper output)
 
             // Unit 0 reads: its figures grow from one publication to the next.
             await live.WaitUntilAsync(ms => ms.Count(m => m.Topic == prefix + "/0") >= 3, "unit 0's figures are published every second");
+            await live.WaitUntilAsync(ms => ms.Any(m => m.Topic == prefix + "/0" && Json(m).GetProperty("transactions").GetInt64() > 5), "unit 0's published figures count its reads");
 
             await using TestSubscriber late = await TestSubscriber.ConnectAsync(broker, [prefix + "/#"]);
             await late.WaitUntilAsync(ms => new[] { "/0", "/5", "/statistics" }.All(t => ms.Any(m => m.Topic == prefix + t)), "the figures are retained");

@@ -27,7 +27,7 @@ public sealed class TagFileGatewayTests : IDisposable
     {
         ["HostLink:Links:plc:Tcp"] = $"127.0.0.1:{port}",
         ["HostLink:Links:plc:Serial:BaudRate"] = "115200",
-        ["HostLink:Links:plc:TurnaroundAllowance"] = "00:00:00.200",
+        ["HostLink:Links:plc:TurnaroundAllowance"] = Allowances.LosslessLineText,
         ["HostLink:Links:plc:Backoff:Initial"] = "00:00:00.100",
         ["HostLink:Links:plc:Backoff:Max"] = "00:00:00.200",
         ["HostLink:Links:plc:TagFiles:0:Path"] = Path.Combine(AppContext.BaseDirectory, "TagImport", "Samples", file),

@@ -3,7 +3,6 @@ using System.Text;
 using OmronHostLink.Protocol;
 using OmronHostLink.Protocol.CMode;
 using OmronHostLink.Tests.Infrastructure;
-using OmronHostLink.Tests.Vectors;
 
 namespace OmronHostLink.Tests.CMode;
 

@@ -136,7 +136,7 @@ public sealed class BlockingCallTests
     public async Task A_refusal_reaches_the_blocked_caller_as_the_library_exception()
     {
         await using InProcessLine line = InProcessLine.Start(
-            new HostLinkClientOptions { TurnaroundAllowance = TimeSpan.FromMilliseconds(300), ReadRetries = 0 },
+            new HostLinkClientOptions { TurnaroundAllowance = Allowances.LosslessLine, ReadRetries = 0 },
             new OmronHostLink.Simulator.VirtualPlcOptions { InitialMode = PlcMode.Run });
         using var ui = new SingleThreadContext();
         Exception? direct = null;

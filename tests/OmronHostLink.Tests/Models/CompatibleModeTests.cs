@@ -1,7 +1,6 @@
 using System.Globalization;
 using System.Text;
 using OmronHostLink.Simulator;
-using OmronHostLink.Tests.Simulator;
 
 namespace OmronHostLink.Tests.Models;
 

@@ -1,5 +1,4 @@
 using OmronHostLink.Simulator;
-using OmronHostLink.Tests.Simulator;
 
 namespace OmronHostLink.Tests.Models;
 

@@ -1,6 +1,5 @@
 using System.Globalization;
 using OmronHostLink.Simulator;
-using OmronHostLink.Tests.Simulator;
 
 namespace OmronHostLink.Tests.Models;
 

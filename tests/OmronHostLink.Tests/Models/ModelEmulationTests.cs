@@ -1,5 +1,6 @@
 using OmronHostLink.Simulator;
-using OmronHostLink.Tests.Simulator;
+using OmronHostLink.Simulator.Hosting;
+using OmronHostLink.Transports;
 
 namespace OmronHostLink.Tests.Models;
 
