@@ -44,10 +44,8 @@ internal static class Addresses
         }
     }
 
-    /// <summary>The library's advice in the console's terms: "use FINS" is the option <c>--fins</c> here.</summary>
-    public static string InCliWords(string message)
-        => message.Replace("; use FINS", "; add --fins", StringComparison.Ordinal)
-            .Replace(", use FINS", ", add --fins", StringComparison.Ordinal);
+    /// <summary>The library's advice in the console's terms: "use FINS" (set the command set) is the option <c>--fins</c> here.</summary>
+    public static string InCliWords(string message) => CommandSetAdvice.Replace(message, "add --fins");
 
     /// <summary>An ArgumentException message without the "(Parameter 'x')" suffix.</summary>
     public static string FirstSentence(string message)

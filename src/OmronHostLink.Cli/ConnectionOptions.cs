@@ -25,6 +25,7 @@ internal sealed class ConnectionOptions
         ["TurnaroundAllowance"] = "--timeout",
         ["ReadRetries"] = "--retries",
         ["Model"] = "--model",
+        ["HostLinkCompatibleMode"] = "--compatible-mode",
     };
 
     public ConnectionOptions(bool includeUnit = true, TimeSpan? defaultTimeout = null, int? defaultRetries = null)
@@ -36,15 +37,16 @@ internal sealed class ConnectionOptions
         TimeSpan timeout = defaultTimeout ?? new HostLinkClientOptions().TurnaroundAllowance;
         Port = new Option<string?>("--port") { Description = "Serial port: COM3, /dev/ttyUSB0, or any device path (a pty).", HelpName = "name" };
         Baud = OptionValues.OptionalInteger("--baud", $"Baud rate (default {line.BaudRate}).", int.MinValue, int.MaxValue, "n");
-        DataBits = OptionValues.OptionalInteger("--data-bits", $"Data bits: 7 or 8 (default {line.DataBits}).", int.MinValue, int.MaxValue, "7|8");
+        DataBits = OptionValues.OptionalInteger("--data-bits", $"Data bits: {SettingRules.MinDataBits} or {SettingRules.MaxDataBits} (default {line.DataBits}).", int.MinValue, int.MaxValue, $"{SettingRules.MinDataBits}|{SettingRules.MaxDataBits}");
         string[] parities = Enum.GetNames(typeof(SerialParity)).Select(n => n.ToLowerInvariant()).ToArray();
         Parity = OptionValues.OptionalChoice("--parity", $"Parity (default {line.Parity.ToString().ToLowerInvariant()}).", string.Join('|', parities), parities);
         StopBits = OptionValues.OptionalInteger("--stop-bits", $"Stop bits: 1 or 2 (default {(int)line.StopBits}).", int.MinValue, int.MaxValue, "1|2");
         Tcp = new Option<string?>("--tcp") { Description = "A serial device server or the simulator, as host:port.", HelpName = "host:port" };
-        Unit = OptionValues.Integer("--unit", "The PLC's unit number, 0-31.", 0, int.MinValue, int.MaxValue, "n");
+        Unit = OptionValues.Integer("--unit", $"The PLC's unit number, 0-{SettingRules.MaxUnitNumber}.", 0, int.MinValue, int.MaxValue, "n");
         Timeout = Durations.Option("--timeout", "Time the PLC may take to start answering a frame (the wire time is added); default " + Durations.Format(timeout) + ".", null, TimeSpan.MinValue, TimeSpan.MaxValue);
-        Retries = OptionValues.OptionalInteger("--retries", "Times a read is repeated after a timeout or damaged frame, 0-10 (writes are never repeated).", int.MinValue, int.MaxValue, "n");
+        Retries = OptionValues.OptionalInteger("--retries", $"Times a read is repeated after a timeout or damaged frame, 0-{SettingRules.MaxRetries} (writes are never repeated).", int.MinValue, int.MaxValue, "n");
         Fins = new Option<bool>("--fins") { Description = "Use FINS over Host Link (FA) where C-mode would otherwise be used: reads, writes, bit writes, status and mode." };
+        CompatibleMode = OptionValues.OptionalChoice("--compatible-mode", "The Host Link-compatible device mode the PLC's Serial Communications Unit is set to (A: CS/CJ/C, B: CVM1/CV, C: C200H, D: C500/C120): each answer frame is checked to be framed as that mode frames it. Default: any framing.", "a|b|c|d", "a", "b", "c", "d");
         Model = new Option<string?>("--model") { Description = "The PLC model addresses and commands are checked against before anything is sent (CPM1A, CP1E-E, C200HS, CS1, ...: see 'hostlink model --list'), or auto to ask the PLC (MM).", HelpName = "name" };
     }
 
@@ -76,6 +78,8 @@ internal sealed class ConnectionOptions
 
     public Option<string?> Model { get; }
 
+    public Option<string?> CompatibleMode { get; }
+
     /// <summary>How 32- and 64-bit values lie in two or four words: Omron's own layout, low word first.</summary>
     public WordOrder WordOrder => WordOrder.LowWordFirst;
 
@@ -96,6 +100,7 @@ internal sealed class ConnectionOptions
         command.Add(Retries);
         command.Add(Fins);
         command.Add(Model);
+        command.Add(CompatibleMode);
         command.Validators.Add(Validate);
     }
 
@@ -117,6 +122,14 @@ internal sealed class ConnectionOptions
             WordOrder = WordOrder,
             CommandSet = options.GetValue(Fins) ? HostLinkCommandSet.Fins : HostLinkCommandSet.CMode,
             Model = options.GetValue(Model),
+            HostLinkCompatibleMode = options.GetValue(CompatibleMode) switch
+            {
+                "a" => HostLinkCompatibleMode.ModeA,
+                "b" => HostLinkCompatibleMode.ModeB,
+                "c" => HostLinkCompatibleMode.ModeC,
+                "d" => HostLinkCompatibleMode.ModeD,
+                _ => null,
+            },
         };
         settings.Serial.BaudRate = options.GetValue(Baud);
         settings.Serial.DataBits = options.GetValue(DataBits);

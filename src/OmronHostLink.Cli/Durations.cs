@@ -20,7 +20,7 @@ internal static class Durations
     {
         var option = new Option<TimeSpan?>(name)
         {
-            Description = description + " A duration: 500ms, 2s, 1.5min or 00:00:02.",
+            Description = $"{description} A duration: {Duration.Forms}.",
             HelpName = "time",
             CustomParser = result => Parse(result, name, min, max),
         };

@@ -58,7 +58,7 @@ internal static class Numbers
 
         if (units.Count == 0)
         {
-            throw new UsageException($"{option} names no unit; write for example 0-31 or 0,1,5.");
+            throw new UsageException($"{option} names no unit; write for example 0-{SettingRules.MaxUnitNumber} or 0,1,5.");
         }
 
         return units.ToArray();

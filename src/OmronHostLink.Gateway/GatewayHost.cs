@@ -8,6 +8,8 @@ using OmronHostLink.Gateway.Configuration;
 using OmronHostLink.Gateway.Mqtt;
 using OmronHostLink.Gateway.Polling;
 using OmronHostLink.Gateway.Simulation;
+using OmronHostLink.Gateway.Sparkplug;
+using OmronHostLink.Gateway.Statistics;
 using OmronHostLink.Gateway.Telemetry;
 
 namespace OmronHostLink.Gateway;
@@ -63,7 +65,9 @@ public static class GatewayHost
         services.AddSingleton<SimulatorHostedService>();
         services.AddHostedService(sp => sp.GetRequiredService<SimulatorHostedService>());
         // The outputs (each an ITagOutput; the polling reports to all of them in registration order).
+        services.AddLinkStatistics();
         services.AddMqttOutput(builder.Configuration);
+        services.AddSparkplugOutput(builder.Configuration);
         services.AddSingleton<PollingHostedService>();
         services.AddHostedService(sp => sp.GetRequiredService<PollingHostedService>());
         services.AddTelemetryExport(builder.Configuration);

@@ -20,6 +20,12 @@ public static partial class GatewayLog
         /// <summary>Another failed attempt during an outage (Debug).</summary>
         public const int UnitStillDown = 1004;
 
+        /// <summary>A PLC stayed silent Demotion:After polls in a row and is demoted (once per demotion).</summary>
+        public const int UnitDemoted = 1013;
+
+        /// <summary>A demoted PLC answered its probe and is polled again.</summary>
+        public const int UnitRestored = 1014;
+
         /// <summary>A poll group's read failed while the PLC answered (once per distinct failure).</summary>
         public const int GroupFailed = 1005;
 
@@ -62,6 +68,12 @@ public static partial class GatewayLog
 
     [LoggerMessage(EventId = Events.UnitStillDown, Level = LogLevel.Debug, Message = "link {Link}: PLC unit {Unit} still not answering ({Reason}: {Detail}); next attempt in {RetryInSeconds:0.###} s")]
     internal static partial void UnitStillDown(ILogger logger, string link, int unit, string reason, string detail, double retryInSeconds);
+
+    [LoggerMessage(EventId = Events.UnitDemoted, Level = LogLevel.Warning, Message = "link {Link}: PLC unit {Unit} demoted after {Polls} silent polls in a row ({Detail}); its tags are comm-error, and it is left alone for {PeriodSeconds:0.###} s between presence probes")]
+    internal static partial void UnitDemoted(ILogger logger, string link, int unit, int polls, double periodSeconds, string detail);
+
+    [LoggerMessage(EventId = Events.UnitRestored, Level = LogLevel.Information, Message = "link {Link}: PLC unit {Unit} restored: it answered its presence probe after {OutageSeconds:0.#} s without an answer, and is polled again")]
+    internal static partial void UnitRestored(ILogger logger, string link, int unit, double outageSeconds);
 
     [LoggerMessage(EventId = Events.GroupFailed, Level = LogLevel.Warning, Message = "{Link}/{Group}: unit {Unit} {Address} cannot be read: {Detail}")]
     internal static partial void GroupFailed(ILogger logger, string link, string group, int unit, string address, string detail);

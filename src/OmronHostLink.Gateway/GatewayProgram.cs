@@ -59,7 +59,17 @@ public static class GatewayProgram
             return Invalid(error, problems);
         }
 
-        await host.RunAsync().ConfigureAwait(false);
+        CancellationToken stopping = host.Services.GetRequiredService<IHostApplicationLifetime>().ApplicationStopping;
+        try
+        {
+            await host.RunAsync().ConfigureAwait(false);
+        }
+        catch (OperationCanceledException) when (stopping.IsCancellationRequested)
+        {
+            // Stopped (SIGTERM, Ctrl+C, a service stop) before it had finished starting: a stop like any other, not a
+            // crash for the service manager to restart.
+        }
+
         return Environment.ExitCode;
     }
 

@@ -21,6 +21,14 @@ public sealed class VirtualPlcOptions
     public string? Model { get; set; }
 
     /// <summary>
+    /// The Host Link-compatible device mode of a Serial Communications Unit to answer as (W336 4-6-2): the words each
+    /// frame of an RR, RL, RH, RC, RD and RJ answer carries, the flags each RG frame carries, and whether MS sends the
+    /// message characters as spaces when no FAL/FALS message is set. Null (the default): a CPU Unit's own port.
+    /// <see cref="HostLinkCompatibleMode.ModeD"/> is not emulated: the manual pages found do not give all of it.
+    /// </summary>
+    public HostLinkCompatibleMode? HostLinkCompatibleMode { get; set; }
+
+    /// <summary>
     /// A JSON file with initial memory and state, applied after the other options (so its <c>mode</c> and
     /// <c>model</c> win). Format: see <see cref="Memory.InitialMemory"/>. Null for none.
     /// </summary>
@@ -71,6 +79,15 @@ public sealed class VirtualPlcOptions
         if (Model is not null && !PlcModelProfile.TryParse(Model, out _))
         {
             throw new ArgumentException($"Model '{Model}' is not a known PLC model; known models: {PlcModelProfile.KnownNames()}.", nameof(Model));
+        }
+
+        if (HostLinkCompatibleMode is { } compatible && compatible is not (OmronHostLink.HostLinkCompatibleMode.ModeA or OmronHostLink.HostLinkCompatibleMode.ModeB or OmronHostLink.HostLinkCompatibleMode.ModeC))
+        {
+            throw new ArgumentException(
+                compatible == OmronHostLink.HostLinkCompatibleMode.ModeD
+                    ? "HostLinkCompatibleMode ModeD is not emulated: the manual pages found do not say what its later RG frames carry or how it answers MS. Use ModeA, ModeB or ModeC."
+                    : $"HostLinkCompatibleMode {(int)compatible} is not ModeA, ModeB or ModeC.",
+                nameof(HostLinkCompatibleMode));
         }
 
         if (BaudRate < 0)

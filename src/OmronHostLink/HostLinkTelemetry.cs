@@ -11,6 +11,9 @@ namespace OmronHostLink;
 /// <list type="bullet">
 /// <item><c>hostlink.client.operation.duration</c> (histogram, seconds): each command from the call to its answer or
 /// final error, waiting for the line, resynchronisation and retries included; <c>error.type</c> on failures.</item>
+/// <item><c>hostlink.client.exchange.duration</c> (histogram, seconds): the answered attempt of each command that
+/// succeeded, from its first frame sent to the last frame of the answer: the PLC's response time on the line,
+/// without the wait for the line, resynchronisation or failed attempts.</item>
 /// <item><c>hostlink.client.retries</c> (counter): attempts repeated after a timeout or damaged frame, by the
 /// <c>error.type</c> of the attempt that failed.</item>
 /// <item><c>hostlink.client.connection.count</c> (observable up/down counter): links whose transport is open, as

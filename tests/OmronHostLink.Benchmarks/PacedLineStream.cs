@@ -7,7 +7,7 @@ namespace OmronHostLink.Benchmarks;
 /// would, N × bits / baud after it starts (the simulator paces the other direction itself). Counts the characters
 /// and the transmissions in both directions, so the theoretical minimum comes from what really crossed the line.
 /// </summary>
-internal sealed class PacedLineStream(Stream inner, int baudRate, int bitsPerCharacter) : Stream
+internal sealed class PacedLineStream(Stream inner, int baudRate, int bitsPerCharacter) : PassThroughStream(inner)
 {
     private static readonly TimeSpan SleepMargin = TimeSpan.FromMilliseconds(2);
     private readonly double _secondsPerCharacter = (double)bitsPerCharacter / baudRate;
@@ -21,20 +21,6 @@ internal sealed class PacedLineStream(Stream inner, int baudRate, int bitsPerCha
 
     /// <summary>Host transmissions (command frames and CR delimiters): each is one frame exchange.</summary>
     public int Writes => Volatile.Read(ref _writes);
-
-    public override bool CanRead => true;
-
-    public override bool CanSeek => false;
-
-    public override bool CanWrite => true;
-
-    public override long Length => throw new NotSupportedException();
-
-    public override long Position
-    {
-        get => throw new NotSupportedException();
-        set => throw new NotSupportedException();
-    }
 
     public void ResetCounters()
     {
@@ -64,43 +50,15 @@ internal sealed class PacedLineStream(Stream inner, int baudRate, int bitsPerCha
             Thread.SpinWait(20);
         }
 
-        await inner.WriteAsync(buffer, cancellationToken).ConfigureAwait(false);
+        await Inner.WriteAsync(buffer, cancellationToken).ConfigureAwait(false);
         Interlocked.Add(ref _sent, buffer.Length);
         Interlocked.Increment(ref _writes);
     }
 
-    public override Task WriteAsync(byte[] buffer, int offset, int count, CancellationToken cancellationToken)
-        => WriteAsync(buffer.AsMemory(offset, count), cancellationToken).AsTask();
-
-    public override void Write(byte[] buffer, int offset, int count) => WriteAsync(buffer, offset, count, CancellationToken.None).GetAwaiter().GetResult();
-
     public override async ValueTask<int> ReadAsync(Memory<byte> buffer, CancellationToken cancellationToken = default)
     {
-        int n = await inner.ReadAsync(buffer, cancellationToken).ConfigureAwait(false);
+        int n = await Inner.ReadAsync(buffer, cancellationToken).ConfigureAwait(false);
         Interlocked.Add(ref _received, n);
         return n;
-    }
-
-    public override Task<int> ReadAsync(byte[] buffer, int offset, int count, CancellationToken cancellationToken)
-        => ReadAsync(buffer.AsMemory(offset, count), cancellationToken).AsTask();
-
-    public override int Read(byte[] buffer, int offset, int count) => ReadAsync(buffer, offset, count, CancellationToken.None).GetAwaiter().GetResult();
-
-    public override void Flush() => inner.Flush();
-
-    public override Task FlushAsync(CancellationToken cancellationToken) => inner.FlushAsync(cancellationToken);
-
-    public override long Seek(long offset, SeekOrigin origin) => throw new NotSupportedException();
-
-    public override void SetLength(long value) => throw new NotSupportedException();
-
-    protected override void Dispose(bool disposing)
-    {
-        if (disposing)
-        {
-            inner.Dispose();
-        }
-
-        base.Dispose(disposing);
     }
 }

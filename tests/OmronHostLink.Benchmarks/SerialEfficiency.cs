@@ -55,7 +55,7 @@ internal static class SerialEfficiency
         Console.WriteLine("|---|---|---|---|---|---|---|");
         foreach (int baud in new[] { 9600, 115200 })
         {
-            await using PtyPair pty = await PtyPair.StartAsync();
+            await using SocatPtyPair pty = await SocatPtyPair.StartAsync();
             var plc = new VirtualPlc(new VirtualPlcOptions { BaudRate = baud, BitsPerCharacter = Bits });
             for (int i = 0; i < 100; i++)
             {

@@ -1,8 +1,19 @@
 namespace OmronHostLink.Testing;
 
-/// <summary>Duration texts and the time each is (in ticks), or null where the grammar refuses it: one list for every reader of durations.</summary>
+/// <summary>
+/// Duration texts and the time each is (in ticks), or null where the grammar refuses it: one list for every reader of
+/// durations. Each reader's tests read it: the grammar (OmronHostLink.Tests), the DI package's configuration and
+/// <c>AddHostLinkClient(..., Action)</c> (OmronHostLink.DependencyInjection.Tests), the console's options
+/// (OmronHostLink.Cli.Tests) and the gateway's configuration (OmronHostLink.Gateway.Tests).
+/// </summary>
 public static class DurationTexts
 {
+    /// <summary>The grammar's words for a text it refuses, which every reader passes on.</summary>
+    public static string Refusal(string text)
+        => Duration.TryParse(text, out _, out string? error)
+            ? throw new ArgumentException($"'{text}' is a duration; the grammar refuses none of it.", nameof(text))
+            : error!;
+
     /// <summary>Rows of (text, ticks or null), for <c>[MemberData]</c>.</summary>
     public static IEnumerable<object?[]> All =>
     [

@@ -19,12 +19,21 @@ public sealed class MosquittoSettings
 
     /// <summary>Serve TLS with these certificates; null for plain TCP.</summary>
     public TestCertificates? Tls { get; set; }
+
+    /// <summary>Keep retained messages and persistent sessions across a restart (<c>persistence</c>). Default true.</summary>
+    public bool Persistence { get; set; } = true;
+
+    /// <summary>
+    /// The most messages the broker queues for one client (<c>max_queued_messages</c>); beyond it, it drops. Default
+    /// 100,000; a benchmark whose subscriber takes everything raises it.
+    /// </summary>
+    public int MaxQueuedMessages { get; set; } = 100_000;
 }
 
 /// <summary>
 /// A real Mosquitto broker on a free loopback port, with a generated configuration (<c>listener PORT 127.0.0.1</c>,
-/// persistence in its own directory so a restart keeps retained messages and persistent sessions). Mosquitto must be
-/// installed: the tests fail, not skip, without it.
+/// persistence in its own directory so a restart keeps retained messages and persistent sessions), for the tests and the
+/// benchmarks. Mosquitto must be installed: the tests fail, not skip, without it.
 /// </summary>
 public sealed class MosquittoBroker : IAsyncDisposable
 {
@@ -52,6 +61,9 @@ public sealed class MosquittoBroker : IAsyncDisposable
 
     /// <summary>Whether the broker process runs.</summary>
     public bool IsRunning => _process is { HasExited: false };
+
+    /// <summary>The broker's process while it runs (to sample its CPU time, or end it when its starter ends).</summary>
+    public Process? Process => _process;
 
     /// <summary>What the broker has logged so far, across restarts (for failure messages).</summary>
     public string Log
@@ -261,9 +273,17 @@ public sealed class MosquittoBroker : IAsyncDisposable
             conf.AppendLine(CultureInfo.InvariantCulture, $"keyfile {Path.Combine(Directory, "server.key")}");
         }
 
-        conf.AppendLine("persistence true");
-        conf.AppendLine(CultureInfo.InvariantCulture, $"persistence_location {Directory}/");
-        conf.AppendLine("max_queued_messages 100000");
+        if (Settings.Persistence)
+        {
+            conf.AppendLine("persistence true");
+            conf.AppendLine(CultureInfo.InvariantCulture, $"persistence_location {Directory}/");
+        }
+        else
+        {
+            conf.AppendLine("persistence false");
+        }
+
+        conf.AppendLine(CultureInfo.InvariantCulture, $"max_queued_messages {Settings.MaxQueuedMessages}");
         conf.AppendLine("log_dest stderr");
         conf.AppendLine("log_type error");
         conf.AppendLine("log_type warning");

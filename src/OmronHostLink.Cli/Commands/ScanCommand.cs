@@ -10,7 +10,7 @@ internal static class ScanCommand
         var command = new Command("scan", "Probe each unit number with one short TS; print the unit, model and mode of each that answers. Exit 4 when none answers.");
         var connection = new ConnectionOptions(includeUnit: false, defaultTimeout: TimeSpan.FromMilliseconds(100), defaultRetries: 1);
         connection.AddTo(command);
-        var units = new Option<string>("--units") { Description = "Unit numbers to probe: 0-31, 0,1,5 or 0-3,7.", DefaultValueFactory = _ => "0-31", HelpName = "list" };
+        var units = new Option<string>("--units") { Description = $"Unit numbers to probe: 0-{SettingRules.MaxUnitNumber}, 0,1,5 or 0-3,7.", DefaultValueFactory = _ => $"0-{SettingRules.MaxUnitNumber}", HelpName = "list" };
         Option<bool> json = CliContext.JsonOption();
         command.Add(units);
         command.Add(json);

@@ -2,6 +2,7 @@ using System.CommandLine;
 using System.Globalization;
 using System.Net;
 using System.Net.Sockets;
+using OmronHostLink.Protocol.CMode;
 using OmronHostLink.Simulator;
 using OmronHostLink.Simulator.Faults;
 using OmronHostLink.Simulator.Hosting;
@@ -23,11 +24,12 @@ internal static class SimulateCommand
         Option<string> mode = OptionValues.Choice("--mode", "Operating mode at start.", "program", "program", "monitor", "run");
         var memory = new Option<string?>("--memory") { Description = "JSON file with initial memory and state, e.g. {\"D100\":[1,2,3],\"mode\":\"run\"}.", HelpName = "file.json" };
         Option<int?> baud = OptionValues.OptionalInteger("--baud", "Line speed: on TCP, emulate the wire time of this speed (default none); on a serial port, the port's speed (default 9600).", 1, 10_000_000, "n");
-        Option<int> dataBits = OptionValues.Integer("--data-bits", "Serial data bits: 7 or 8.", new SerialLineSettings().DataBits, int.MinValue, int.MaxValue, "7|8");
+        Option<int> dataBits = OptionValues.Integer("--data-bits", $"Serial data bits: {SettingRules.MinDataBits} or {SettingRules.MaxDataBits}.", new SerialLineSettings().DataBits, int.MinValue, int.MaxValue, $"{SettingRules.MinDataBits}|{SettingRules.MaxDataBits}");
         Option<string> parity = OptionValues.Choice("--parity", "Serial parity.", "even", "none", "even", "odd");
         Option<int> stopBits = OptionValues.Integer("--stop-bits", "Serial stop bits: 1 or 2.", (int)new SerialLineSettings().StopBits, int.MinValue, int.MaxValue, "1|2");
         Option<TimeSpan?> turnaround = Durations.Option("--turnaround", "Time between a command and its answer.", TimeSpan.Zero, TimeSpan.Zero, TimeSpan.FromMinutes(1));
         var model = new Option<string?>("--model") { Description = "The PLC model to emulate (CPM1A, C200HS, CP1E-E, ...: its areas, commands and MM code; see 'hostlink model --list'), or just the code MM reports, two hex digits (default 30 = CS/CJ).", HelpName = "name|hex" };
+        Option<string?> compatibleMode = OptionValues.OptionalChoice("--compatible-mode", "Answer as a Serial Communications Unit in this Host Link-compatible device mode (A: CS/CJ/C, B: CVM1/CV, C: C200H): its words per answer frame and its MS answer (default: a CPU Unit's own port).", "a|b|c", "a", "b", "c");
         var drop = OptionValues.Probability("--fault-drop", "Probability of not answering at all.");
         var corrupt = OptionValues.Probability("--fault-corrupt", "Probability of corrupting a character (the FCS no longer matches).");
         var noise = OptionValues.Probability("--fault-noise", "Probability of sending noise bytes before a frame.");
@@ -36,7 +38,7 @@ internal static class SimulateCommand
         var echo = OptionValues.Probability("--fault-echo", "Probability of echoing the command first, as a 2-wire RS-485 line does.");
         Option<TimeSpan?> lateBy = Durations.Option("--fault-late-by", "How late a late answer comes.", TimeSpan.FromSeconds(1), TimeSpan.Zero, TimeSpan.FromMinutes(10));
         Option<int> seed = OptionValues.Integer("--fault-seed", "Seed of the fault generator (same seed, same faults).", 1, int.MinValue, int.MaxValue, "n");
-        foreach (Option o in new Option[] { tcp, port, units, shared, readyFile, mode, memory, baud, dataBits, parity, stopBits, turnaround, model, drop, corrupt, noise, truncate, late, lateBy, echo, seed })
+        foreach (Option o in new Option[] { tcp, port, units, shared, readyFile, mode, memory, baud, dataBits, parity, stopBits, turnaround, model, compatibleMode, drop, corrupt, noise, truncate, late, lateBy, echo, seed })
         {
             command.Add(o);
         }
@@ -73,6 +75,13 @@ internal static class SimulateCommand
                     LateBy = parse.GetValue(lateBy) ?? TimeSpan.FromSeconds(1),
                     Echo = parse.GetValue(echo),
                 },
+            };
+            options.HostLinkCompatibleMode = parse.GetValue(compatibleMode) switch
+            {
+                "a" => HostLinkCompatibleMode.ModeA,
+                "b" => HostLinkCompatibleMode.ModeB,
+                "c" => HostLinkCompatibleMode.ModeC,
+                _ => null,
             };
             if (parse.GetValue(model) is { } modelText)
             {
@@ -143,6 +152,7 @@ internal static class SimulateCommand
             VirtualPlc first = line.Plcs[0];
             string state = $"{StatusCommand.ModeName(first.Mode)} mode, "
                 + (first.Model is { } emulated ? $"emulating {emulated.WithArticle()} (MM {(emulated.ModelCode is { } mm ? mm.ToString("X2", CultureInfo.InvariantCulture) : "answered IC")})" : $"model code {first.ModelCode:X2}")
+                + (options.HostLinkCompatibleMode is { } compatible ? $", framed as a Serial Communications Unit in Host Link-compatible {CompatibleModeFraming.Of(compatible).Name}" : string.Empty)
                 + (options.Units.Count == 1 ? string.Empty : oneCpu ? ", one PLC answering every unit" : ", each unit a PLC of its own");
             try
             {
@@ -207,9 +217,9 @@ internal static class SimulateCommand
     private static (string Host, int Port) ParseListen(string text)
     {
         int colon = text.LastIndexOf(':');
-        if (colon <= 0 || !int.TryParse(text.AsSpan(colon + 1), NumberStyles.None, CultureInfo.InvariantCulture, out int p) || p > 65535)
+        if (colon <= 0 || !int.TryParse(text.AsSpan(colon + 1), NumberStyles.None, CultureInfo.InvariantCulture, out int p) || p > SettingRules.MaxTcpPort)
         {
-            throw new UsageException($"--tcp '{text}' is not host:port with a port 0-65535.");
+            throw new UsageException($"--tcp '{text}' is not host:port with a port 0-{SettingRules.MaxTcpPort}.");
         }
 
         return (text[..colon].Trim('[', ']'), p);

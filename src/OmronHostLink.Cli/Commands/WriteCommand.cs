@@ -69,7 +69,7 @@ internal static class WriteCommand
                 Addresses.EnsureRange(target.AsWord(), wordsCovered, protocol, forWrite: true);
                 if (protocol == HostLinkCommandSet.CMode && !useRmw)
                 {
-                    // The library would fall back to FINS; the user chose C-mode, so say so rather than switch silently.
+                    // The library refuses it too (C-mode has no bit write); said here in the console's options, before connecting.
                     PlcAddress word = target.AsWord();
                     throw new UsageException(
                         $"C-mode has no bit write. Add --fins to write {Range(addresses)} with FINS (0102, one command), or --read-modify-write to read {Range(word, wordsCovered)}, change the bit{(bits.Length == 1 ? "" : "s")} and write the word{(wordsCovered == 1 ? "" : "s")} back (anything the PLC program writes there in between is lost).");

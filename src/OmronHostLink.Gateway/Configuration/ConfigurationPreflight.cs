@@ -4,6 +4,7 @@ using Microsoft.Extensions.Configuration.Json;
 using Microsoft.Extensions.Logging;
 using OmronHostLink.Gateway.Mqtt;
 using OmronHostLink.Gateway.Simulation;
+using OmronHostLink.Gateway.Sparkplug;
 using OmronHostLink.Gateway.Telemetry;
 
 namespace OmronHostLink.Gateway.Configuration;
@@ -18,7 +19,7 @@ public static class ConfigurationPreflight
     /// <summary>The sections the gateway reads, besides the generic host's own.</summary>
     public static readonly string[] Sections =
     [
-        GatewayOptions.SectionName, SimulatorOptions.SectionName, MqttOptions.SectionName, TelemetryExport.SectionName, "Logging",
+        GatewayOptions.SectionName, SimulatorOptions.SectionName, MqttOptions.SectionName, SparkplugOptions.SectionName, TelemetryExport.SectionName, "Logging",
     ];
 
     /// <summary>Keys the generic host reads at the top level of the configuration files.</summary>
@@ -33,7 +34,8 @@ public static class ConfigurationPreflight
             return null;
         }
 
-        string file = e.Message.Split('\'') is { Length: >= 3 } parts ? Path.GetFileName(parts[1]) : "a configuration file";
+        string? path = e.Message.Split('\'') is { Length: >= 3 } parts ? parts[1] : null;
+        string file = path is null ? "a configuration file" : Path.GetFileName(path);
         for (Exception? x = inner; x is not null; x = x.InnerException)
         {
             if (x is JsonException)
@@ -48,9 +50,25 @@ public static class ConfigurationPreflight
             JsonException { LineNumber: { } line, BytePositionInLine: { } column } json
                 => $"{file}, line {line + 1}, column {column + 1}: {StripPosition(json.Message)}",
             FormatException duplicate when duplicate.Message.Contains("duplicate key", StringComparison.OrdinalIgnoreCase)
-                => $"{file}: {duplicate.Message.TrimEnd('.')} (keys are compared ignoring case: write each key once).",
+                => Duplicate(path, file, duplicate.Message),
             _ => $"{file}: {inner.Message}",
         };
+    }
+
+    /// <summary>A key given twice: the key, and its lines when the file tells them.</summary>
+    private static string Duplicate(string? path, string file, string message)
+    {
+        // "A duplicate key 'HostLink:Links:plc:Groups:levels:Address' was found."
+        string[] quoted = message.Split('\'');
+        string? key = quoted.Length >= 3 ? quoted[1] : null;
+        if (key is null)
+        {
+            return $"{file}: {message.TrimEnd('.')} (keys are compared ignoring case: write each key once).";
+        }
+
+        return path is not null && DuplicateKeys.Lines(path, key) is var (first, second)
+            ? $"{file}, line {second}: duplicate key '{key}', given on line {first} already (keys are compared ignoring case: write each key once)."
+            : $"{file}: duplicate key '{key}' (keys are compared ignoring case: write each key once).";
     }
 
     /// <summary>Problems of the configuration as a whole, each naming its key.</summary>
@@ -61,6 +79,7 @@ public static class ConfigurationPreflight
         CheckSections(configuration, failures);
         CheckLogLevels(configuration, failures);
         failures.AddRange(ConfigurationSchema.Check(configuration.GetSection(TelemetryExport.SectionName), typeof(TelemetryExport.Settings)));
+        failures.AddRange(TelemetryExport.EndpointProblems(configuration));
         return failures;
     }
 

@@ -23,6 +23,9 @@ public sealed class LinkOptions
     /// <summary>How often a PLC that stopped answering is tried again.</summary>
     public BackoffOptions Backoff { get; set; } = new();
 
+    /// <summary>When a PLC unit that stays silent is demoted, and for how long.</summary>
+    public DemotionOptions Demotion { get; set; } = new();
+
     /// <summary>The poll groups, keyed by name.</summary>
     public Dictionary<string, PollGroupOptions> Groups { get; set; } = new(StringComparer.OrdinalIgnoreCase);
 

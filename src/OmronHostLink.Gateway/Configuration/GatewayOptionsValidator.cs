@@ -93,6 +93,7 @@ public sealed class GatewayOptionsValidator : IValidateOptions<GatewayOptions>
             }
         }
 
+        DemotionOptions.Validate(path, link.Demotion, failures);
         if (link.Groups.Count == 0)
         {
             failures.Add($"{path}:Groups: the link has no poll group.");

@@ -111,7 +111,8 @@ public sealed class MqttGateway : IHostedService, IAsyncDisposable
         }
 
         // The links stop first (they are registered after this service) and queue their offline states; send them
-        // if the broker is there. If it is not, there is nothing to wait for: the queue is lost with the process.
+        // if the broker is there. If it is not, there is nothing to wait for: the queue stays in the durable queue for the
+        // next run, or is lost with the process and the next run announces how many (OutboundQueueStore).
         _stopping = true;
         _queue.Wake();
         if (!IsConnected)
@@ -345,7 +346,8 @@ public sealed class MqttGateway : IHostedService, IAsyncDisposable
         return builder.Build();
     }
 
-    private static async Task DropConnectionAsync(IMqttClient client)
+    /// <summary>Closes a connection that is still open, waiting 2 s at most; a connection already gone is left alone.</summary>
+    internal static async Task DropConnectionAsync(IMqttClient client)
     {
         if (!client.IsConnected)
         {

@@ -13,6 +13,7 @@ namespace OmronHostLink.Gateway.Mqtt;
     NumberHandling = JsonNumberHandling.AllowNamedFloatingPointLiterals)]
 [JsonSerializable(typeof(TagPayload))]
 [JsonSerializable(typeof(WriteResultPayload))]
+[JsonSerializable(typeof(LostMessagesPayload))]
 [JsonSerializable(typeof(ushort))]
 [JsonSerializable(typeof(short))]
 [JsonSerializable(typeof(int))]

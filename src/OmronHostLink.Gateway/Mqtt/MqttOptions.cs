@@ -44,6 +44,16 @@ public sealed class MqttOptions
     /// <summary>How many messages wait for the broker at most; beyond it the oldest are dropped (and counted). Default 10 000.</summary>
     public int QueueCapacity { get; set; } = 10_000;
 
+    /// <summary>
+    /// Where the gateway keeps what must outlive it: the durable queue and the count of unsent messages. Default: the
+    /// directory systemd gives the service (<c>STATE_DIRECTORY</c>, from <c>StateDirectory=</c>); otherwise
+    /// <c>%ProgramData%\OmronHostLink.Gateway</c> on Windows and <c>state</c> below the content root elsewhere.
+    /// </summary>
+    public string? StateDirectory { get; set; }
+
+    /// <summary>The outage queue on disk (off by default).</summary>
+    public MqttDurableQueueOptions DurableQueue { get; set; } = new();
+
     /// <summary>MQTT keep-alive: how soon a silent connection is noticed. Default 15 s.</summary>
     public TimeSpan KeepAlive { get; set; } = TimeSpan.FromSeconds(15);
 
@@ -52,6 +62,9 @@ public sealed class MqttOptions
 
     /// <summary>Delay between connection attempts: Initial, doubling up to Max. Default 1 s to 30 s.</summary>
     public BackoffOptions Reconnect { get; set; } = new();
+
+    /// <summary>How often the statistics of every link and unit are published (and at once when a unit's state changes). Default 10 s; 1 s to 1 h.</summary>
+    public TimeSpan StatisticsInterval { get; set; } = TimeSpan.FromSeconds(10);
 
     /// <summary>Writes from MQTT (off by default).</summary>
     public MqttWriteOptions Writes { get; set; } = new();

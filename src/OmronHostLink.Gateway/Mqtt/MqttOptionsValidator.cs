@@ -12,11 +12,15 @@ namespace OmronHostLink.Gateway.Mqtt;
 public sealed class MqttOptionsValidator : IValidateOptions<MqttOptions>
 {
     private readonly IConfiguration _configuration;
+    private readonly string _contentRoot;
 
     /// <summary>Creates the validator; the <c>HostLink</c> section is read from <paramref name="configuration"/>.</summary>
-    public MqttOptionsValidator(IConfiguration configuration)
+    /// <param name="configuration">The whole configuration.</param>
+    /// <param name="contentRoot">The host's content root, where relative paths start.</param>
+    public MqttOptionsValidator(IConfiguration configuration, string contentRoot)
     {
         _configuration = configuration;
+        _contentRoot = contentRoot;
     }
 
     /// <inheritdoc/>
@@ -101,10 +105,41 @@ public sealed class MqttOptionsValidator : IValidateOptions<MqttOptions>
             }
         }
 
+        ValidateDurableQueue(options, failures);
         ValidateTls(options.Tls, failures);
         ValidateReplyPrefixes(options, failures);
         ValidateTags(failures);
         return failures.Count == 0 ? ValidateOptionsResult.Success : ValidateOptionsResult.Fail(failures);
+    }
+
+    private void ValidateDurableQueue(MqttOptions options, List<string> failures)
+    {
+        const string key = MqttOptions.SectionName + ":DurableQueue";
+        MqttDurableQueueOptions? durable = options.DurableQueue;
+        if (durable is null)
+        {
+            return;
+        }
+
+        if (durable.MaxMegabytes is < 1 or > 1_048_576)
+        {
+            failures.Add($"{key}:MaxMegabytes must be 1-1048576 (1 TiB); it is {durable.MaxMegabytes}.");
+        }
+
+        if (durable.MaxAge < TimeSpan.FromSeconds(1))
+        {
+            failures.Add($"{key}:MaxAge must be at least 1s; it is {durable.MaxAge}.");
+        }
+
+        if (durable.Enabled && failures.Count == 0)
+        {
+            // Opened now, so that a directory the service may not write is one line at start, not a crash later.
+            string path = OutboundQueueStore.JournalPath(options, _contentRoot);
+            if (SqliteOutboundJournal.Problem(path) is { } problem)
+            {
+                failures.Add($"{key}:Enabled: the queue's database {path} cannot be opened: {problem}. Set {MqttOptions.SectionName}:StateDirectory to a directory the gateway may write.");
+            }
+        }
     }
 
     private static void ValidateReplyPrefixes(MqttOptions options, List<string> failures)
@@ -162,9 +197,9 @@ public sealed class MqttOptionsValidator : IValidateOptions<MqttOptions>
         }
     }
 
-    private static void ValidateTls(MqttTlsOptions? tls, List<string> failures)
+    /// <summary>Checks a <c>Tls</c> section (<paramref name="key"/>: its path, <c>Mqtt:Tls</c> by default).</summary>
+    internal static void ValidateTls(MqttTlsOptions? tls, List<string> failures, string key = MqttOptions.SectionName + ":Tls")
     {
-        const string key = MqttOptions.SectionName + ":Tls";
         if (tls is null)
         {
             return;
@@ -172,12 +207,18 @@ public sealed class MqttOptionsValidator : IValidateOptions<MqttOptions>
 
         if (!tls.Enabled)
         {
-            if (!string.IsNullOrEmpty(tls.CaFile) || tls.AllowUntrustedCertificates)
+            string? set = !string.IsNullOrEmpty(tls.CaFile) ? "CaFile" : tls.AllowUntrustedCertificates ? "AllowUntrustedCertificates" : !string.IsNullOrEmpty(tls.ServerName) ? "ServerName" : null;
+            if (set is not null)
             {
-                failures.Add($"{key}:Enabled is false but {(string.IsNullOrEmpty(tls.CaFile) ? "AllowUntrustedCertificates" : "CaFile")} is set; set {key}:Enabled to true to use TLS.");
+                failures.Add($"{key}:Enabled is false but {set} is set; set {key}:Enabled to true to use TLS.");
             }
 
             return;
+        }
+
+        if (!string.IsNullOrEmpty(tls.ServerName) && HostSyntax.Problem(tls.ServerName) is { } nameProblem)
+        {
+            failures.Add($"{key}:ServerName '{tls.ServerName}' is not a host name or address: {nameProblem}.");
         }
 
         if (!string.IsNullOrEmpty(tls.CaFile))
@@ -254,7 +295,7 @@ public sealed class MqttOptionsValidator : IValidateOptions<MqttOptions>
         }
     }
 
-    private static void ValidateWritable(string path, PollGroupOptions group, HostLinkCommandSet protocol, List<string> failures)
+    internal static void ValidateWritable(string path, PollGroupOptions group, HostLinkCommandSet protocol, List<string> failures)
     {
         // The HostLink validator reports bad addresses and types; only what writing adds is checked here.
         if (!PlcAddress.TryParse(group.Address, out PlcAddress address) || !PlcValueTypes.TryParse(group.Type, out PlcValueType type) || group.Count < 1)

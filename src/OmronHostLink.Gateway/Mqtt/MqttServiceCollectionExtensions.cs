@@ -1,5 +1,6 @@
 using Microsoft.Extensions.Configuration;
 using Microsoft.Extensions.DependencyInjection;
+using Microsoft.Extensions.Hosting;
 using Microsoft.Extensions.Logging;
 using Microsoft.Extensions.Options;
 using MQTTnet;
@@ -27,14 +28,21 @@ public static class MqttServiceCollectionExtensions
         }
 
         services.AddOptions<MqttOptions>().Configure(o => ConfigurationSchema.Bind(section, o)).ValidateOnStart();
-        services.AddSingleton<IValidateOptions<MqttOptions>>(new MqttOptionsValidator(configuration));
+        services.AddSingleton<IValidateOptions<MqttOptions>>(sp => new MqttOptionsValidator(configuration, sp.GetRequiredService<IHostEnvironment>().ContentRootPath));
         services.AddOutputServices();
         services.AddSingleton(sp =>
         {
             MqttOptions o = sp.GetRequiredService<IOptions<MqttOptions>>().Value;
             return new MqttTopics(o.TopicPrefix, o.ClientIdOrDefault);
         });
-        services.AddSingleton(sp => new OutboundQueue(sp.GetRequiredService<IOptions<MqttOptions>>().Value.QueueCapacity));
+        services.AddSingleton(sp => new OutboundQueueStore(
+            sp.GetRequiredService<IOptions<MqttOptions>>().Value,
+            sp.GetRequiredService<IHostEnvironment>().ContentRootPath,
+            sp.GetRequiredService<ILogger<OutboundQueue>>()));
+        services.AddSingleton(sp => sp.GetRequiredService<OutboundQueueStore>().CreateQueue(
+            sp.GetRequiredService<IOptions<MqttOptions>>().Value,
+            sp.GetRequiredService<MqttTopics>(),
+            sp.GetRequiredService<TimeProvider>()));
         services.AddSingleton<MqttMetrics>();
         services.AddSingleton<MqttTagSink>();
         services.AddSingleton<ITagOutput>(sp => sp.GetRequiredService<MqttTagSink>());
@@ -48,8 +56,10 @@ public static class MqttServiceCollectionExtensions
             sp.GetRequiredService<MqttMetrics>(),
             sp.GetRequiredService<ILogger<WriteCommandProcessor>>(),
             sp.GetRequiredService<TimeProvider>()));
+        services.AddSingleton<IValidateOptions<MqttOptions>, StatisticsIntervalValidator>();
         services.AddSingleton<MqttGateway>();
         services.AddHostedService(sp => sp.GetRequiredService<MqttGateway>());
+        services.AddHostedService<StatisticsPublisher>();
         return services;
     }
 }

@@ -23,6 +23,7 @@ public sealed class MqttTopics
     {
         Prefix = prefix;
         WorkerStatus = $"{prefix}/{StatusLevel}/{clientId}";
+        WorkerLost = $"{WorkerStatus}/lost";
     }
 
     /// <summary>The first level(s) of every topic.</summary>
@@ -30,6 +31,9 @@ public sealed class MqttTopics
 
     /// <summary>The worker's own status topic: <c>online</c> (birth) or <c>offline</c> (last will, or a clean stop).</summary>
     public string WorkerStatus { get; }
+
+    /// <summary>Where the worker announces at start how many messages its previous run may have lost (<see cref="LostMessagesPayload"/>).</summary>
+    public string WorkerLost { get; }
 
     /// <summary>The value topic of a tag.</summary>
     public string Tag(string link, int unit, string tag) => $"{Prefix}/{link}/{unit.ToString(CultureInfo.InvariantCulture)}/{tag}";

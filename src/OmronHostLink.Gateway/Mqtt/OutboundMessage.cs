@@ -9,4 +9,10 @@ public sealed record OutboundMessage(string Topic, byte[] Payload, bool Retain, 
 {
     /// <summary>The order in which it was queued (set by the queue).</summary>
     public long Sequence { get; internal set; }
+
+    /// <summary>When it was queued (set by the queue; kept by a durable journal across restarts).</summary>
+    public DateTimeOffset QueuedAt { get; internal set; }
+
+    /// <summary>Roughly what it costs to keep: topic, payload and correlation data, plus a row's overhead.</summary>
+    internal long Size => 32L + Topic.Length + Payload.Length + (CorrelationData?.Length ?? 0);
 }

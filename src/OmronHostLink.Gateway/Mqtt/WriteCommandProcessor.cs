@@ -9,7 +9,8 @@ namespace OmronHostLink.Gateway.Mqtt;
 
 /// <summary>
 /// Carries out write commands one at a time: only for tags configured as writable, only with a value the tag's type
-/// takes, and only through the client the link polls with (one owner of the wire). Anything else is refused and
+/// takes, and only through the client the link polls with (one owner of the wire): the <see cref="TagWriter"/> that
+/// Sparkplug B DCMD writes go through as well. Anything else is refused and
 /// logged, and nothing reaches the PLC for it. Every command gets a reply: on the MQTT 5 response topic with the
 /// correlation data when the command carries them, otherwise on <c>{command topic}/result</c>.
 /// </summary>
@@ -21,7 +22,7 @@ public sealed class WriteCommandProcessor
     private readonly Channel<WriteCommand> _commands = Channel.CreateBounded<WriteCommand>(new BoundedChannelOptions(Backlog) { SingleReader = true });
     private readonly MqttTopics _topics;
     private readonly TagCatalog _catalog;
-    private readonly OpenLinks _links;
+    private readonly TagWriter _writer;
     private readonly OutboundQueue _queue;
     private readonly MqttMetrics _metrics;
     private readonly ILogger _logger;
@@ -40,7 +41,7 @@ public sealed class WriteCommandProcessor
         _replyPrefixes = options.Writes.ReplyPrefixes.ToArray();
         _topics = topics;
         _catalog = catalog;
-        _links = links;
+        _writer = new TagWriter(links);
         _queue = queue;
         _metrics = metrics;
         _logger = logger;
@@ -158,59 +159,20 @@ public sealed class WriteCommandProcessor
         }
 
         string valueText = Shorten(value.GetRawText());
-        if (!WriteValueParser.TryEncode(tag.Type, tag.Count, value, tag.WordOrder, out ushort[] words, out string why))
+        TagWriteOutcome outcome = await _writer.WriteAsync(tag, value, element: null, cancellationToken).ConfigureAwait(false);
+        if (outcome.Status == WriteResultPayload.Refused)
         {
-            return Refuse(command, tagTopic, $"{tag.Address} ({tag.Type.Name()}): {why}");
+            return Refuse(command, tagTopic, outcome.Error!);
         }
 
-        HostLinkUnit? client = _links.ClientOf(link);
-        if (client is null)
-        {
-            return Refuse(command, tagTopic, $"link {link} is not being polled (stopping, or it could not be set up).");
-        }
-
-        string? endCode = null;
-        string? error = null;
-        try
-        {
-            HostLinkUnit unitView = client.Unit(tag.Unit);
-            if (tag.Type == PlcValueType.Bit)
-            {
-                await unitView.WriteBitAsync(tag.Address, words[0] != 0, cancellationToken).ConfigureAwait(false);
-            }
-            else
-            {
-                await unitView.WriteWordsAsync(tag.Address.AsWord(), words, cancellationToken).ConfigureAwait(false);
-            }
-        }
-        catch (HostLinkEndCodeException e)
-        {
-            endCode = e.EndCode.ToCode();
-            error = e.Message;
-        }
-        catch (FinsEndCodeException e)
-        {
-            endCode = e.EndCode.ToString();
-            error = e.Message;
-        }
-        catch (ArgumentException e)
-        {
-            // The library refused it before the wire.
-            return Refuse(command, tagTopic, e.Message);
-        }
-        catch (Exception e) when (e is HostLinkException or ObjectDisposedException)
-        {
-            error = e.Message;
-        }
-
-        if (error is null)
+        if (outcome.IsDone)
         {
             MqttLog.WriteDone(_logger, tagTopic, tag.Address.ToString(), valueText);
             return Reply(command, new WriteResultPayload { Status = WriteResultPayload.Done, Tag = tagTopic, Time = _time.GetUtcNow() });
         }
 
-        MqttLog.WriteFailed(_logger, tagTopic, tag.Address.ToString(), valueText, error);
-        return Reply(command, new WriteResultPayload { Status = WriteResultPayload.Failed, Tag = tagTopic, Error = error, EndCode = endCode, Time = _time.GetUtcNow() });
+        MqttLog.WriteFailed(_logger, tagTopic, tag.Address.ToString(), valueText, outcome.Error!);
+        return Reply(command, new WriteResultPayload { Status = WriteResultPayload.Failed, Tag = tagTopic, Error = outcome.Error, EndCode = outcome.EndCode, Time = _time.GetUtcNow() });
     }
 
     private WriteResultPayload Refuse(WriteCommand command, string tagTopic, string reason)

@@ -21,4 +21,16 @@ public interface ITagOutput
     /// <summary>The outcome of reading a tag: a value (<see cref="TagQuality.Good"/>) or why it could not be read.</summary>
     /// <param name="change">The outcome. The sink decides whether it is a change worth passing on.</param>
     void TagChanged(TagChange change);
+
+    /// <summary>
+    /// A PLC unit's state changed: it stopped answering, was demoted, or answers again (<see cref="UnitState.Online"/>;
+    /// every unit starts online with its link). Its tags' outcomes come through <see cref="TagChanged"/> as well.
+    /// </summary>
+    /// <param name="link">The link's configured name.</param>
+    /// <param name="unit">The unit number, 0–31.</param>
+    /// <param name="state">The new state.</param>
+    /// <param name="detail">Why, for a state other than online; null otherwise.</param>
+    void UnitChanged(string link, int unit, UnitState state, string? detail = null)
+    {
+    }
 }

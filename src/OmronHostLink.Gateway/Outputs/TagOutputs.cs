@@ -38,4 +38,13 @@ public sealed class TagOutputs(IEnumerable<ITagOutput> outputs) : ITagOutput
             output.TagChanged(change);
         }
     }
+
+    /// <inheritdoc/>
+    public void UnitChanged(string link, int unit, UnitState state, string? detail = null)
+    {
+        foreach (ITagOutput output in _outputs)
+        {
+            output.UnitChanged(link, unit, state, detail);
+        }
+    }
 }

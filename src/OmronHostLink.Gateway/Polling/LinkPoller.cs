@@ -8,7 +8,9 @@ namespace OmronHostLink.Gateway.Polling;
 /// Polls one link: its <see cref="HostLinkClient"/> and one <c>WatchAsync</c> per poll group, whose events become the
 /// worker's logs and the tag sink's calls. The client's gate takes waiting reads in turn, so on a busy link the groups
 /// alternate and none starves. A PLC unit that stops answering is reported once; while it is down one of its groups
-/// probes it with the watch's capped backoff and the others wait, and it is reported again when it answers.
+/// tries it with the watch's capped backoff and the others wait, and it is reported again when it answers. After the
+/// link's <c>Demotion:After</c> silent polls in a row that group's watch demotes the unit: no read for
+/// <c>Demotion:Period</c>, then one presence probe, so a dead unit costs its neighbours on the line next to nothing.
 /// </summary>
 /// <param name="name">The link's name.</param>
 /// <param name="options">The link's validated options.</param>
@@ -69,6 +71,8 @@ internal sealed class LinkPoller(string name, LinkOptions options, Func<HostLink
             RetryInterval = options.Backoff.Initial,
             MaxRetryInterval = options.Backoff.Max,
             ReportEveryCycle = true,
+            DemoteAfter = options.Demotion.After,
+            DemotionPeriod = options.Demotion.Period,
             TimeProvider = time,
         };
         while (true)
@@ -162,6 +166,17 @@ internal sealed class LinkPoller(string name, LinkOptions options, Func<HostLink
                     _polls++;
                     _failures++;
                     return Failed(group, e.Exception!, e.RetryDelay);
+                case WatchEventKind.Demoted:
+                    if (!ReferenceEquals(e.Exception, _units[group.UnitNumber].LastFailure))
+                    {
+                        // The silent poll that demotes is a failed attempt like the others (unless its outage was just reported).
+                        _polls++;
+                        _failures++;
+                        _ = Failed(group, e.Exception!, e.RetryDelay);
+                    }
+
+                    Demoted(group, e);
+                    return null;
                 case WatchEventKind.Overrun:
                     long skipped = (e.Duration.Ticks / group.Interval.Ticks) - 1;
                     if (skipped > 0 && !_units[group.UnitNumber].Down)
@@ -223,6 +238,7 @@ internal sealed class LinkPoller(string name, LinkOptions options, Func<HostLink
         }
 
         UnitHealth unit = _units[group.UnitNumber];
+        unit.LastFailure = e;
         if (!unit.Down)
         {
             unit.Down = true;
@@ -240,6 +256,7 @@ internal sealed class LinkPoller(string name, LinkOptions options, Func<HostLink
                     sink.TagChanged(g.Change(name, TagQuality.CommError, time.GetUtcNow(), e.Message));
                 }
 
+                sink.UnitChanged(name, group.UnitNumber, UnitState.CommError, e.Message);
                 sink.LinkChanged(name, LinkState.CommError, e.Message);
             }
 
@@ -254,6 +271,25 @@ internal sealed class LinkPoller(string name, LinkOptions options, Func<HostLink
 
         GatewayLog.UnitStillDown(logger, name, group.UnitNumber, reason, e.Message, unit.RetryDelay.TotalSeconds);
         return unit.Prober == group ? null : unit.Answers.Task;
+    }
+
+    /// <summary>The group's watch demoted its unit: every tag of the unit is comm-error, and the unit is reported demoted.</summary>
+    private void Demoted(PollGroup group, WatchEvent e)
+    {
+        UnitHealth unit = _units[group.UnitNumber];
+        if (unit.Demoted)
+        {
+            return;
+        }
+
+        unit.Demoted = true;
+        GatewayLog.UnitDemoted(logger, name, group.UnitNumber, options.Demotion.After, e.RetryDelay.TotalSeconds, e.Exception!.Message);
+        foreach (PollGroup g in _groups.Where(g => g.UnitNumber == group.UnitNumber))
+        {
+            sink.TagChanged(g.Change(name, TagQuality.CommError, time.GetUtcNow(), e.Exception.Message));
+        }
+
+        sink.UnitChanged(name, group.UnitNumber, UnitState.Demoted, e.Exception.Message);
     }
 
     private void GroupFailed(PollGroup group, string message)
@@ -275,8 +311,18 @@ internal sealed class LinkPoller(string name, LinkOptions options, Func<HostLink
             return;
         }
 
-        GatewayLog.UnitResumed(logger, name, unitNumber, time.GetElapsedTime(unit.Since).TotalSeconds, unit.Attempts);
+        if (unit.Demoted)
+        {
+            GatewayLog.UnitRestored(logger, name, unitNumber, time.GetElapsedTime(unit.Since).TotalSeconds);
+        }
+        else
+        {
+            GatewayLog.UnitResumed(logger, name, unitNumber, time.GetElapsedTime(unit.Since).TotalSeconds, unit.Attempts);
+        }
+
         unit.Down = false;
+        unit.Demoted = false;
+        sink.UnitChanged(name, unitNumber, UnitState.Online);
         unit.Prober = null;
         unit.Answers.TrySetResult();
         if (!_units.Values.Any(u => u.Down))
@@ -289,6 +335,11 @@ internal sealed class LinkPoller(string name, LinkOptions options, Func<HostLink
     private sealed class UnitHealth
     {
         public bool Down { get; set; }
+
+        public bool Demoted { get; set; }
+
+        /// <summary>The failure last reported for the unit (an outage and the demotion it causes carry the same one).</summary>
+        public Exception? LastFailure { get; set; }
 
         public long Since { get; set; }
 

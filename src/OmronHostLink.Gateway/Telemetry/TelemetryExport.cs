@@ -53,6 +53,40 @@ public static class TelemetryExport
         return services;
     }
 
+    /// <summary>The OTLP exporter's endpoint variables (read from the environment, or the configuration by the same name).</summary>
+    public static readonly string[] OtlpEndpointKeys = ["OTEL_EXPORTER_OTLP_ENDPOINT", "OTEL_EXPORTER_OTLP_METRICS_ENDPOINT", "OTEL_EXPORTER_OTLP_TRACES_ENDPOINT"];
+
+    /// <summary>
+    /// The OTLP endpoints that are no URL the exporter can send to, each named by its variable. The exporter itself
+    /// ignores such a value without a word and sends to its default instead.
+    /// </summary>
+    public static IEnumerable<string> EndpointProblems(IConfiguration configuration)
+    {
+        ArgumentNullException.ThrowIfNull(configuration);
+        if (!string.Equals(configuration[SectionName + ":Exporter"]?.Trim(), "Otlp", StringComparison.OrdinalIgnoreCase))
+        {
+            yield break;
+        }
+
+        foreach (string key in OtlpEndpointKeys)
+        {
+            string? value = configuration[key];
+            if (string.IsNullOrWhiteSpace(value))
+            {
+                continue;
+            }
+
+            if (!Uri.TryCreate(value.Trim(), UriKind.Absolute, out Uri? uri) || (uri.Scheme != Uri.UriSchemeHttp && uri.Scheme != Uri.UriSchemeHttps))
+            {
+                yield return $"{key} '{value}' is not an http:// or https:// URL (such as http://collector.plant.local:4317).";
+            }
+            else if (Configuration.HostSyntax.Problem(uri.IdnHost.Trim('[', ']')) is { } problem)
+            {
+                yield return $"{key} '{value}': '{uri.Host}' is not a host name or address: {problem}.";
+            }
+        }
+    }
+
     /// <summary>The keys of the <c>OpenTelemetry</c> section, for the configuration check.</summary>
     public sealed class Settings
     {

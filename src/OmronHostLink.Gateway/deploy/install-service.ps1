@@ -14,7 +14,9 @@
       - is restarted by the service control manager after 5 s, 5 s and then 60 s when it fails, including when it stops
         with a non-zero exit code (an invalid configuration exits with 2: restarts cannot fix that, the event log says
         what is wrong);
-      - logs warnings and errors to the Application event log under the source <Name>.
+      - logs warnings and errors to the Application event log under the source <Name>;
+      - may write its state folder %ProgramData%\OmronHostLink.Gateway (created here; the durable MQTT queue and the
+        count of unsent messages live there).
     The gateway reports its state to the service control manager (Microsoft.Extensions.Hosting.WindowsServices), a
     service stop is a graceful shutdown, and appsettings.json is read from the installation folder.
 
@@ -96,6 +98,15 @@ Invoke-Sc failureflag $Name 1
 # The event log source must exist before the service's account (which may not create one) writes to it.
 if (-not [System.Diagnostics.EventLog]::SourceExists($Name)) {
     [System.Diagnostics.EventLog]::CreateEventSource($Name, 'Application')
+}
+
+# The gateway's state (the count of unsent MQTT messages, the durable queue) lives in %ProgramData%\OmronHostLink.Gateway
+# unless Mqtt:StateDirectory says otherwise; only the service's account (and administrators) may change it.
+$state = Join-Path $env:ProgramData 'OmronHostLink.Gateway'
+New-Item -ItemType Directory -Force -Path $state | Out-Null
+& icacls.exe $state /grant "NT SERVICE\${Name}:(OI)(CI)M" | Out-Host
+if ($LASTEXITCODE -ne 0) {
+    throw "icacls.exe could not give NT SERVICE\$Name write access to $state (exit code $LASTEXITCODE)."
 }
 
 Write-Host "Service $Name installed: $exe (delayed automatic start, account NT SERVICE\$Name)."

@@ -14,6 +14,7 @@ public sealed class TcpSimulatorHost : IAsyncDisposable
     private readonly IPEndPoint _requested;
     private readonly object _gate = new();
     private readonly HashSet<Task> _sessions = new();
+    private int _activeSessions;
     private TcpListener? _listener;
     private CancellationTokenSource? _stopping;
     private Task? _acceptLoop;
@@ -42,16 +43,11 @@ public sealed class TcpSimulatorHost : IAsyncDisposable
     public IPEndPoint EndPoint => _listener?.LocalEndpoint as IPEndPoint ?? _requested;
 
     /// <summary>The number of connections being served now.</summary>
-    public int ActiveSessions
-    {
-        get
-        {
-            lock (_gate)
-            {
-                return _sessions.Count;
-            }
-        }
-    }
+    /// <remarks>
+    /// Counted by the sessions themselves, so a session has left the count when its task completes (and so when
+    /// <see cref="StopAsync"/> returns); the set of session tasks is tidied up by a continuation that may run later.
+    /// </remarks>
+    public int ActiveSessions => Volatile.Read(ref _activeSessions);
 
     /// <summary>The number of connections accepted since start.</summary>
     public int AcceptedConnections { get; private set; }
@@ -122,6 +118,7 @@ public sealed class TcpSimulatorHost : IAsyncDisposable
 
             client.NoDelay = true;
             AcceptedConnections++;
+            Interlocked.Increment(ref _activeSessions);
             Task session = ServeAsync(client, stopping);
             lock (_gate)
             {
@@ -144,14 +141,21 @@ public sealed class TcpSimulatorHost : IAsyncDisposable
 
     private async Task ServeAsync(TcpClient client, CancellationToken stopping)
     {
-        await Task.Yield();
-        using (client)
+        try
         {
-            NetworkStream stream = client.GetStream();
-            await using (stream.ConfigureAwait(false))
+            await Task.Yield();
+            using (client)
             {
-                await _serve(stream, stopping).ConfigureAwait(false);
+                NetworkStream stream = client.GetStream();
+                await using (stream.ConfigureAwait(false))
+                {
+                    await _serve(stream, stopping).ConfigureAwait(false);
+                }
             }
+        }
+        finally
+        {
+            Interlocked.Decrement(ref _activeSessions);
         }
     }
 }

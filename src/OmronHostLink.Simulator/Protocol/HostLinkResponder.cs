@@ -19,6 +19,8 @@ public sealed class HostLinkResponder
     /// <summary>Completion flags an RG answer carries in each frame after the first.</summary>
     public const int MaxFlagsPerLaterFrame = AreaReadCommand.MaxFlagsPerLaterFrame;
 
+    private static readonly PlcModelProfile CsCj = PlcModelProfile.Parse("CS1");
+
     private readonly VirtualPlc _plc;
     private readonly FinsResponder _fins;
 
@@ -133,17 +135,23 @@ public sealed class HostLinkResponder
             return Reply(unit, row, CModeReply.EndCodeOnly(EndCode.FormatError, row.SubHeader));
         }
 
-        if (_plc.Model is { } emulated && Refusal(emulated, command) is { } refusal)
+        // Without a model the PLC is a CS/CJ CPU: its profile's limits (A0–A447 read-only) hold.
+        if (Refusal(_plc.Model ?? CsCj, command) is { } refusal)
         {
             return refusal == EndCode.UndefinedHeader
                 ? EndCodeOnly(unit, header, refusal)
                 : Reply(unit, row, CModeReply.EndCodeOnly(refusal, row.SubHeader));
         }
 
+        SimResponse? response;
         lock (_plc.SyncRoot)
         {
-            return Reply(unit, row, row.Execute!(command, _plc, unit));
+            response = Reply(unit, row, row.Execute!(command, _plc, unit));
         }
+
+        return _plc.Options.HostLinkCompatibleMode is { } compatible && response is not null
+            ? CompatibleModeAnswer.Frame(response, row.Header, CompatibleModeFraming.Of(compatible))
+            : response;
     }
 
     // FA only with FINS; the rest from the model's C-mode list (TS is answered by every model).

@@ -33,6 +33,13 @@ public sealed class SimResponse
     /// <summary>Extra time the PLC waits before answering (the FINS response wait time of the command).</summary>
     public TimeSpan Delay { get; init; }
 
+    /// <summary>
+    /// The most data characters (after <see cref="FixedLength"/>) the first frame carries, when the PLC stops short of the
+    /// 131-character frame limit (a Serial Communications Unit in Host Link-compatible mode C: 29 words); 0 for the
+    /// frame-length limit only. An answer with more data then continues in later frames even where one frame would hold it.
+    /// </summary>
+    public int MaxFirstText { get; init; }
+
     /// <summary>The most text characters a later frame carries; 0 for the frame-length limit only.</summary>
     public int MaxContinuationText { get; }
 
@@ -77,6 +84,12 @@ public sealed class SimResponse
         }
 
         int length = FrameWriter.NextSegmentLength(Message.Length - offset, offset == 0, FixedLength, AtomLength, out final);
+        if (offset == 0 && MaxFirstText > 0 && length - FixedLength > MaxFirstText)
+        {
+            length = FixedLength + MaxFirstText - (MaxFirstText % AtomLength);
+            final = false;
+        }
+
         if (offset > 0 && MaxContinuationText > 0 && length > MaxContinuationText)
         {
             length = MaxContinuationText - (MaxContinuationText % AtomLength);

@@ -44,7 +44,7 @@ internal static class AddressRangeCheck
         var area = start.Area;
         if (area == PlcArea.Work)
         {
-            throw new ArgumentException($"{start}: the work area (W) is not reachable with C-mode commands; use FINS.");
+            throw new ArgumentException($"{start}: the work area (W) is not reachable with C-mode commands; {CommandSetAdvice.UseFins()}.");
         }
 
         var limit = PlcAreaInfo.CModeLimit(area);
@@ -59,8 +59,8 @@ internal static class AddressRangeCheck
         var command = PlcAreaInfo.CModeCommand(area, forWrite);
         var count = end - start.Word;
         var message = start.Word >= limit
-            ? $"{start.AsWord()} is beyond the {what} reachable with C-mode {command}; use FINS."
-            : $"{count} words from {start.AsWord()} reach {PlcAreaInfo.Format(area, end - 1, -1, start.Bank)}, beyond the {what} reachable with C-mode {command}; use FINS or transfer fewer words.";
+            ? $"{start.AsWord()} is beyond the {what} reachable with C-mode {command}; {CommandSetAdvice.UseFins()}."
+            : $"{count} words from {start.AsWord()} reach {PlcAreaInfo.Format(area, end - 1, -1, start.Bank)}, beyond the {what} reachable with C-mode {command}; transfer fewer words, or {CommandSetAdvice.UseFins()}.";
         throw new ArgumentOutOfRangeException(nameof(count), count, message);
     }
 }

@@ -19,7 +19,7 @@ internal static class CModeAddressing
         PlcArea.Timer or PlcArea.Counter => CModeArea.TimerCounterPv,
         PlcArea.Em => CModeArea.Em,
         PlcArea.Link => CModeArea.Lr,
-        _ => throw new ArgumentException($"The {PlcAreaInfo.Name(area)} is not reachable with C-mode; use FINS.", nameof(area)),
+        _ => throw new ArgumentException($"The {PlcAreaInfo.Name(area)} is not reachable with C-mode; {CommandSetAdvice.UseFins()}.", nameof(area)),
     };
 
     /// <summary>The C-mode area and entry of a word address (counter <c>n</c> is entry 2048 + <c>n</c>).</summary>
@@ -39,7 +39,7 @@ internal static class CModeAddressing
 
         if (address.Area == PlcArea.Work)
         {
-            throw new ArgumentException($"{address} is in the work area, which C-mode cannot reach; use FINS.", nameof(address));
+            throw new ArgumentException($"{address} is in the work area, which C-mode cannot reach; {CommandSetAdvice.UseFins()}.", nameof(address));
         }
 
         return (AreaOf(address.Area), address.Area == PlcArea.Counter ? CModeAreaInfo.CounterOffset + address.Word : address.Word);

@@ -7,9 +7,9 @@ namespace OmronHostLink;
 
 /// <summary>
 /// The jobs both command sets can do, done with C-mode: RD and the other area reads (one command however long; the
-/// answer spans frames), WD and the other area writes, RG for completion flags, MS and SC. Bits are written by reading
-/// and writing back their words where <see cref="HostLinkClientOptions.AllowReadModifyWriteBits"/> allows it, else with
-/// FINS (C-mode has no bit write).
+/// answer spans frames), WD and the other area writes, RG for completion flags, MS and SC. C-mode has no bit write:
+/// bits are written by reading and writing back their words where <see cref="HostLinkClientOptions.AllowReadModifyWriteBits"/>
+/// allows it, and refused otherwise.
 /// </summary>
 internal sealed class CModeUnitCommands : UnitCommandSet
 {
@@ -78,18 +78,21 @@ internal sealed class CModeUnitCommands : UnitCommandSet
             cancellationToken).ConfigureAwait(false);
     }
 
-    /// <summary>One read of the words the bits cover and one write of them back: anything the PLC program writes to those words in between is lost.</summary>
+    /// <summary>
+    /// C-mode has no bit write: refused (nothing is sent) unless <see cref="HostLinkClientOptions.AllowReadModifyWriteBits"/>
+    /// is set; then one read of the words the bits cover and one write of them back, so anything the PLC program writes
+    /// to those words in between is lost.
+    /// </summary>
     public override async Task WriteBitsAsync(HostLinkUnit unit, PlcAddress address, ReadOnlyMemory<bool> values, CancellationToken cancellationToken)
     {
         if (!unit.Options.AllowReadModifyWriteBits)
         {
-            await FinsUnitCommands.Instance.WriteBitsAsync(unit, address, values, cancellationToken).ConfigureAwait(false);
-            return;
+            throw unit.BitWriteRefusal(address, values.Length);
         }
 
         PlcAddress first = address.AsWord();
         int count = WordsCovered(address, values.Length);
-        first.EnsureRange(count, Kind, forWrite: true);
+        first.EnsureRange(count, Kind, forWrite: unit.Models.Off);
         ushort[] words = await unit.ReadWordsAsync(first, count, cancellationToken).ConfigureAwait(false);
         for (int i = 0; i < values.Length; i++)
         {

@@ -1,6 +1,7 @@
 using System.Diagnostics.Metrics;
 using Microsoft.Extensions.Logging;
 using OmronHostLink.Link;
+using OmronHostLink.Protocol.CMode;
 using OmronHostLink.Transports;
 
 namespace OmronHostLink;
@@ -32,12 +33,18 @@ public sealed class HostLinkClientOptions
     /// </summary>
     public int WriteRetries { get; set; }
 
-    /// <summary>Which command set (C-mode or FINS) reads and writes use where both can do the job. Default C-mode.</summary>
+    /// <summary>
+    /// Which command set (C-mode or FINS) reads, writes, bits, status and mode use. Default C-mode, which every Host
+    /// Link PLC speaks; FINS (CS/CJ/CP) reaches what C-mode cannot: the work area (W), DM/EM beyond 9999, and bit writes.
+    /// A C-mode client refuses those before anything is sent and says how to switch: this option, or a FINS view of one
+    /// unit, <c>plc.Unit(0, HostLinkCommandSet.Fins)</c>. The FINS services (clock, CPU data, forcing …) use FINS on either.
+    /// </summary>
     public HostLinkCommandSet CommandSet { get; set; } = HostLinkCommandSet.CMode;
 
     /// <summary>
-    /// Allow bit writes by reading the word, changing the bit and writing the word back, where FINS bit write is not wanted.
-    /// Off by default: anything that changes the word between the read and the write (the PLC program) is overwritten.
+    /// Lets a C-mode client write bits (C-mode has no bit write) by reading the word, changing the bit and writing the
+    /// word back: for PLCs without FINS. Off by default, and a C-mode client refuses bit writes: anything that changes
+    /// the word between the read and the write (the PLC program) is overwritten. With FINS bits are written directly.
     /// </summary>
     public bool AllowReadModifyWriteBits { get; set; }
 
@@ -105,6 +112,15 @@ public sealed class HostLinkClientOptions
     /// </summary>
     public string? Model { get; set; }
 
+    /// <summary>
+    /// The Host Link-compatible device mode the PLC's Serial Communications Unit (unit version 1.2 or later) is set to,
+    /// when the client talks to one: each answer frame of an area read is then checked to carry the words (or RG
+    /// flags) that mode sends, so that a unit set otherwise is reported instead of read (W336 4-6-2; docs/models.md).
+    /// Null (the default) accepts any framing: answers are read correctly in every mode either way, and the MS message
+    /// is read the same whether the unit leaves it out or sends spaces. Applies to every unit of the client.
+    /// </summary>
+    public HostLinkCompatibleMode? HostLinkCompatibleMode { get; set; }
+
     /// <summary>Checks the options and says what is wrong.</summary>
     /// <exception cref="ArgumentException">An option is out of range.</exception>
     public void Validate()
@@ -122,10 +138,7 @@ public sealed class HostLinkClientOptions
         Check(nameof(FinsResponseWait), FinsResponseWait, SettingRules.FinsResponseWait(FinsResponseWait));
         Check(nameof(CommandSet), CommandSet, SettingRules.CommandSet(CommandSet));
         Check(nameof(WordOrder), WordOrder, SettingRules.WordOrder(WordOrder));
-        if (SendInterval < TimeSpan.Zero || SendInterval > MaxSendInterval)
-        {
-            throw new ArgumentOutOfRangeException(nameof(SendInterval), SendInterval, "SendInterval must be between 0 and 10 s.");
-        }
+        Check(nameof(SendInterval), SendInterval, SettingRules.SendInterval(SendInterval));
 
         if (UnitSendIntervals is null)
         {
@@ -139,15 +152,20 @@ public sealed class HostLinkClientOptions
                 throw new ArgumentOutOfRangeException(nameof(UnitSendIntervals), unit.Key, $"UnitSendIntervals names unit {unit.Key}; Host Link unit numbers are 0-{HostLinkUnit.MaxUnitNumber}.");
             }
 
-            if (unit.Value < TimeSpan.Zero || unit.Value > MaxSendInterval)
+            if (SettingRules.SendInterval(unit.Value) is { } tooLong)
             {
-                throw new ArgumentOutOfRangeException(nameof(UnitSendIntervals), unit.Value, $"UnitSendIntervals[{unit.Key}] must be between 0 and 10 s.");
+                throw new ArgumentOutOfRangeException(nameof(UnitSendIntervals), unit.Value, $"UnitSendIntervals[{unit.Key}] {tooLong}.");
             }
         }
 
         if (TimeProvider is null)
         {
             throw new ArgumentException("TimeProvider is required.", nameof(TimeProvider));
+        }
+
+        if (HostLinkCompatibleMode is { } compatibleMode)
+        {
+            Check(nameof(HostLinkCompatibleMode), compatibleMode, SettingRules.CompatibleMode(compatibleMode));
         }
 
         if (Model is not null && SettingRules.Model(Model) is { } modelProblem)
@@ -168,8 +186,6 @@ public sealed class HostLinkClientOptions
             throw new ArgumentOutOfRangeException(name, value, $"{name} {problem}.");
         }
     }
-
-    private static readonly TimeSpan MaxSendInterval = TimeSpan.FromSeconds(10);
 
     internal HostLinkClientOptions Clone()
     {
@@ -194,5 +210,6 @@ public sealed class HostLinkClientOptions
         SendInterval = SendInterval,
         UnitSendIntervals = UnitSendIntervals.Count == 0 ? null : new Dictionary<int, TimeSpan>(UnitSendIntervals),
         TimeProvider = TimeProvider,
+        AnswerFraming = HostLinkCompatibleMode is { } mode ? CompatibleModeFraming.Of(mode) : null,
     };
 }

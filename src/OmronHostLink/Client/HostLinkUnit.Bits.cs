@@ -36,11 +36,12 @@ public partial class HostLinkUnit
 
     /// <summary>
     /// Writes consecutive bits from <paramref name="address"/> (continuing across word boundaries) as one command: FINS
-    /// 0102 on the bits (split only beyond one frame's <see cref="MemoryAreaWriteCommand.MaxDataBytes"/> bits). With
-    /// <see cref="HostLinkClientOptions.AllowReadModifyWriteBits"/> and C-mode: one read of the words the bits cover and
+    /// 0102 on the bits (split only beyond one frame's <see cref="MemoryAreaWriteCommand.MaxDataBytes"/> bits). C-mode has
+    /// no bit write: a C-mode view refuses, as <see cref="WriteBitAsync(PlcAddress, bool, CancellationToken)"/> does, unless
+    /// <see cref="HostLinkClientOptions.AllowReadModifyWriteBits"/> is set: then one read of the words the bits cover and
     /// one write of them back, so anything the PLC program writes to those words in between is lost.
     /// </summary>
-    /// <exception cref="ArgumentException">The address names a word, or the range does not fit the area or the protocol (nothing is sent).</exception>
+    /// <exception cref="ArgumentException">The address names a word, the range does not fit the area or the protocol, or this view uses C-mode (nothing is sent).</exception>
     public async Task WriteBitsAsync(PlcAddress address, ReadOnlyMemory<bool> values, CancellationToken cancellationToken = default)
     {
         EnsureBitAddress(address);

@@ -49,6 +49,10 @@ public partial class HostLinkUnit
     /// <exception cref="NotSupportedException"><typeparamref name="T"/> is not one of the supported types (nothing is sent).</exception>
     /// <exception cref="FormatException">The address is not valid (nothing is sent), or the words read are not BCD for a BCD type.</exception>
     /// <exception cref="ArgumentException">The address does not suit the type (a bit address for a number, a word address for a bool) or the words run past the area (nothing is sent).</exception>
+    /// <exception cref="HostLinkEndCodeException">The PLC refused the read.</exception>
+    /// <exception cref="HostLinkTimeoutException">No answer in time, after the read retries.</exception>
+    /// <exception cref="HostLinkFrameException">The answer was damaged, from another unit, or not the answer to this command: never returned as data.</exception>
+    /// <exception cref="HostLinkConnectionException">The port or socket could not be opened, or was lost or closed during the exchange.</exception>
     public async Task<T> ReadAsync<T>(string address, CancellationToken cancellationToken = default)
         where T : struct
     {
@@ -69,6 +73,10 @@ public partial class HostLinkUnit
     /// <exception cref="NotSupportedException"><typeparamref name="T"/> is not one of the supported types (nothing is sent).</exception>
     /// <exception cref="FormatException">The address is not valid (nothing is sent), or the words read are not BCD for a BCD type.</exception>
     /// <exception cref="ArgumentException">The address does not suit the type, or the values run past the area or the command set's reach (nothing is sent).</exception>
+    /// <exception cref="HostLinkEndCodeException">The PLC refused the read.</exception>
+    /// <exception cref="HostLinkTimeoutException">No answer in time, after the read retries.</exception>
+    /// <exception cref="HostLinkFrameException">The answer was damaged, from another unit, or not the answer to this command: never returned as data.</exception>
+    /// <exception cref="HostLinkConnectionException">The port or socket could not be opened, or was lost or closed during the exchange.</exception>
     public async Task<T[]> ReadAsync<T>(string address, int count, CancellationToken cancellationToken = default)
         where T : struct
     {
@@ -91,6 +99,10 @@ public partial class HostLinkUnit
     /// <exception cref="NotSupportedException"><typeparamref name="T"/> is not one of the supported types (nothing is sent).</exception>
     /// <exception cref="ArgumentException">The address does not suit the type, or the words run past the area (nothing is sent).</exception>
     /// <exception cref="HostLinkEndCodeException">The PLC refused the write (for example: C-mode writes in RUN mode).</exception>
+    /// <exception cref="FinsEndCodeException">The PLC refused a FINS write.</exception>
+    /// <exception cref="HostLinkTimeoutException">No answer in time (a write is repeated only with <see cref="HostLinkClientOptions.WriteRetries"/>).</exception>
+    /// <exception cref="HostLinkFrameException">The answer was damaged, from another unit, or not the answer to this command: never returned as data.</exception>
+    /// <exception cref="HostLinkConnectionException">The port or socket could not be opened, or was lost or closed during the exchange.</exception>
     public Task WriteAsync<T>(string address, T value, CancellationToken cancellationToken = default)
         where T : struct
     {
@@ -105,8 +117,9 @@ public partial class HostLinkUnit
 
     /// <summary>
     /// Writes consecutive values of type <typeparamref name="T"/> from <paramref name="address"/> as one command where
-    /// the protocol allows (C-mode spans frames; FINS splits beyond one frame). Bits: FINS bit writes, or with
-    /// <see cref="HostLinkClientOptions.AllowReadModifyWriteBits"/> and C-mode one read and one write of the words they cover.
+    /// the protocol allows (C-mode spans frames; FINS splits beyond one frame). Bits: FINS bit writes; a C-mode view
+    /// refuses them unless <see cref="HostLinkClientOptions.AllowReadModifyWriteBits"/> is set, and then makes one read
+    /// and one write of the words they cover (see <see cref="WriteBitAsync(PlcAddress, bool, CancellationToken)"/>).
     /// </summary>
     /// <typeparam name="T">bool, short, ushort, int, uint, float, double, <see cref="Bcd16"/> or <see cref="Bcd32"/>.</typeparam>
     /// <param name="address">The address of the first value.</param>
@@ -115,6 +128,10 @@ public partial class HostLinkUnit
     /// <exception cref="NotSupportedException"><typeparamref name="T"/> is not one of the supported types (nothing is sent).</exception>
     /// <exception cref="ArgumentException">No values, the address does not suit the type, or the values run past the area (nothing is sent).</exception>
     /// <exception cref="HostLinkEndCodeException">The PLC refused the write.</exception>
+    /// <exception cref="FinsEndCodeException">The PLC refused a FINS write.</exception>
+    /// <exception cref="HostLinkTimeoutException">No answer in time (a write is repeated only with <see cref="HostLinkClientOptions.WriteRetries"/>).</exception>
+    /// <exception cref="HostLinkFrameException">The answer was damaged, from another unit, or not the answer to this command: never returned as data.</exception>
+    /// <exception cref="HostLinkConnectionException">The port or socket could not be opened, or was lost or closed during the exchange.</exception>
     public Task WriteAsync<T>(string address, ReadOnlyMemory<T> values, CancellationToken cancellationToken = default)
         where T : struct
     {

@@ -1,3 +1,6 @@
+using OmronHostLink.Planning;
+using OmronHostLink.Protocol.CMode;
+
 namespace OmronHostLink;
 
 /// <summary>The PLC model a unit is checked against (<see cref="HostLinkClientOptions.Model"/>).</summary>
@@ -16,6 +19,36 @@ public partial class HostLinkUnit
         => Models.TryGet(UnitNumber, out PlcModelProfile? known)
             ? Task.FromResult(known)
             : Models.GetAsync(UnitNumber, ct => new ValueTask<PlcModel>(ReadModelAsync(ct)), cancellationToken);
+
+    /// <summary>
+    /// Refuses, before anything is sent, a C-mode command the unit's model (configured, or already detected) does not
+    /// list: MM and XZ on a CP2E, for example. TS is answered by every model.
+    /// </summary>
+    private void EnsureModelAccepts(CModeCommand command)
+    {
+        if (command.Header != CModeHeaders.Test && Models.TryGet(UnitNumber, out PlcModelProfile? model) && model is not null)
+        {
+            model.EnsureCMode(command.Header, command.Row.Name);
+        }
+    }
+
+    /// <summary>
+    /// Refuses a whole plan before its first read is sent when one of its reads is something a unit's model lacks (the
+    /// unit's MM is asked first where the model is detected).
+    /// </summary>
+    private async ValueTask EnsurePlanAsync(ReadPlan plan, CancellationToken cancellationToken)
+    {
+        if (Models.Off)
+        {
+            return;
+        }
+
+        foreach (PlannedRead read in plan.Reads)
+        {
+            HostLinkUnit unit = read.Unit == UnitNumber ? this : Unit(read.Unit);
+            EnsureModel(await unit.GetModelProfileAsync(cancellationToken).ConfigureAwait(false), read);
+        }
+    }
 
     private async Task<ushort[]> ReadWordsOfDetectedModelAsync(PlcAddress address, int count, CancellationToken cancellationToken)
     {

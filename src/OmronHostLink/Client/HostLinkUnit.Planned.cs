@@ -53,6 +53,7 @@ public partial class HostLinkUnit
     public async Task<PlcTagValue[]> ReadTagsAsync(ReadPlan plan, CancellationToken cancellationToken = default)
     {
         Guard.NotNull(plan);
+        await EnsurePlanAsync(plan, cancellationToken).ConfigureAwait(false);
         var results = new ushort[plan.Reads.Count][];
         for (int r = 0; r < results.Length; r++)
         {
@@ -74,22 +75,13 @@ public partial class HostLinkUnit
             return ExecuteOnDetectedModelAsync(read, cancellationToken);
         }
 
-        // The plan was made without the model and names its command by kind, whatever this view's command set: the
-        // command set of the read is asked, and what the model lacks (FINS, memory) is refused before it is sent.
-        UnitCommandSet commands = UnitCommandSet.For(read.Kind is PlannedReadKind.FinsArea or PlannedReadKind.FinsCompletionFlags or PlannedReadKind.FinsMultiple ? HostLinkCommandSet.Fins : HostLinkCommandSet.CMode);
-        if (read.Kind is PlannedReadKind.FinsMultiple or PlannedReadKind.CModeCompound)
-        {
-            foreach (PlcAddress item in read.Items)
-            {
-                commands.EnsureModel(model, item, 1, forWrite: false);
-            }
-        }
-        else
+        UnitCommandSet commands = CommandsOf(read);
+        if (read.Kind is not (PlannedReadKind.FinsMultiple or PlannedReadKind.CModeCompound))
         {
             read.Start.EnsureRange(read.Count, commands.Kind, forWrite: false);
-            commands.EnsureModel(model, read.Start, read.Count, forWrite: false);
         }
 
+        EnsureModel(model, read);
         return read.Kind switch
         {
             PlannedReadKind.FinsMultiple => ReadScatteredWordsAsync(read.Items, cancellationToken),
@@ -97,6 +89,27 @@ public partial class HostLinkUnit
             PlannedReadKind.CModeCompletionFlags or PlannedReadKind.FinsCompletionFlags => FlagWordsAsync(commands.ReadCompletionFlagsAsync(this, read.Start, read.Count, model, cancellationToken)),
             _ => commands.ReadWordsAsync(this, read.Start, read.Count, model, cancellationToken),
         };
+    }
+
+    /// <summary>The command set of a planned read: the plan names its command by kind, whatever this view's command set.</summary>
+    private static UnitCommandSet CommandsOf(PlannedRead read)
+        => UnitCommandSet.For(read.Kind is PlannedReadKind.FinsArea or PlannedReadKind.FinsCompletionFlags or PlannedReadKind.FinsMultiple ? HostLinkCommandSet.Fins : HostLinkCommandSet.CMode);
+
+    // The plan was made without the model; what the model lacks (FINS, memory) is refused here, before the read is sent.
+    private static void EnsureModel(PlcModelProfile? model, PlannedRead read)
+    {
+        UnitCommandSet commands = CommandsOf(read);
+        if (read.Kind is PlannedReadKind.FinsMultiple or PlannedReadKind.CModeCompound)
+        {
+            foreach (PlcAddress item in read.Items)
+            {
+                commands.EnsureModel(model, item, 1, forWrite: false);
+            }
+
+            return;
+        }
+
+        commands.EnsureModel(model, read.Start, read.Count, forWrite: false);
     }
 
     private async ValueTask<ushort[]> ExecuteOnDetectedModelAsync(PlannedRead read, CancellationToken cancellationToken)

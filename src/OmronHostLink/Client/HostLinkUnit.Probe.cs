@@ -25,4 +25,7 @@ public partial class HostLinkUnit
 
         return Connection.ProbeAsync(UnitNumber, wait, cancellationToken).AsTask();
     }
+
+    /// <summary>How long this unit may take to start answering (the client's setting), for messages about its silence.</summary>
+    internal TimeSpan TurnaroundAllowance => Options.TurnaroundAllowance;
 }

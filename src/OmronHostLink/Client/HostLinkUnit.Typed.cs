@@ -29,6 +29,11 @@ public partial class HostLinkUnit
         => (await ReadAsync<Bcd16>(address, cancellationToken).ConfigureAwait(false)).Value;
 
     /// <summary>Reads ASCII text stored two characters a word, high byte first, up to <paramref name="length"/> characters or the first NUL.</summary>
+    /// <exception cref="HostLinkEndCodeException">The PLC refused the command (its end code, header and unit are in the exception).</exception>
+    /// <exception cref="HostLinkTimeoutException">No answer in time, after the read retries.</exception>
+    /// <exception cref="HostLinkFrameException">The answer was damaged, from another unit, or not the answer to this command: never returned as data.</exception>
+    /// <exception cref="HostLinkConnectionException">The port or socket could not be opened, or was lost or closed during the exchange.</exception>
+    /// <exception cref="ObjectDisposedException">The client was disposed.</exception>
     public async Task<string> ReadStringAsync(string address, int length, CancellationToken cancellationToken = default)
     {
         Guard.InRange(length, 1, 20000);
@@ -62,13 +67,24 @@ public partial class HostLinkUnit
 
     /// <summary>Writes ASCII text two characters a word, high byte first (an odd length is padded with NUL).</summary>
     /// <exception cref="ArgumentException">The text holds a character outside ASCII (nothing is sent).</exception>
+    /// <exception cref="HostLinkEndCodeException">The PLC refused the write (01: C-mode writes are refused in RUN mode).</exception>
+    /// <exception cref="HostLinkTimeoutException">No answer in time (a write is repeated only with <see cref="HostLinkClientOptions.WriteRetries"/>).</exception>
+    /// <exception cref="HostLinkFrameException">The answer was damaged, from another unit, or not the answer to this command: never returned as data.</exception>
+    /// <exception cref="HostLinkConnectionException">The port or socket could not be opened, or was lost or closed during the exchange.</exception>
+    /// <exception cref="ObjectDisposedException">The client was disposed.</exception>
     public Task WriteStringAsync(string address, string text, CancellationToken cancellationToken = default)
         => WriteWordsAsync(address, PlcWords.FromString(text), cancellationToken);
 
     /// <summary>
-    /// Reads one bit: <c>CIO100.05</c>, <c>W30.06</c>, <c>D100.15</c>, or a timer/counter completion flag (<c>T5</c>, <c>C7</c>).
+    /// Reads one bit: <c>CIO100.05</c>, <c>W30.06</c>, <c>D100.15</c>, or a timer/counter completion flag (<c>T5</c>, <c>C7</c>),
+    /// with this view's command set (the word that holds it, or the flag). C-mode cannot reach the work area (W): a
+    /// C-mode view refuses <c>W30.06</c> before anything is sent, naming how to use FINS.
     /// </summary>
-    /// <exception cref="ArgumentException">The address names a word, not a bit.</exception>
+    /// <exception cref="ArgumentException">The address names a word, not a bit, or the command set cannot reach it (nothing is sent).</exception>
+    /// <exception cref="HostLinkEndCodeException">The PLC refused the read.</exception>
+    /// <exception cref="HostLinkTimeoutException">No answer in time.</exception>
+    /// <exception cref="HostLinkFrameException">The answer was damaged or not the answer to this command.</exception>
+    /// <exception cref="HostLinkConnectionException">The port or socket could not be opened or was lost.</exception>
     public Task<bool> ReadBitAsync(string address, CancellationToken cancellationToken = default)
         => ReadBitAsync(PlcAddress.Parse(address), cancellationToken);
 
@@ -90,11 +106,18 @@ public partial class HostLinkUnit
     }
 
     /// <summary>
-    /// Writes one bit with FINS MEMORY AREA WRITE on the bit (C-mode has no bit write for data areas). With
-    /// <see cref="HostLinkClientOptions.AllowReadModifyWriteBits"/> and C-mode, the word is read, changed and written
-    /// back instead: anything the PLC program writes to that word in between is lost.
+    /// Writes one bit with FINS MEMORY AREA WRITE (0102) on the bit. C-mode has no bit write: a C-mode view refuses
+    /// (nothing is sent), naming the ways to write it — FINS (<see cref="HostLinkClientOptions.CommandSet"/> =
+    /// <see cref="HostLinkCommandSet.Fins"/>, or <c>plc.Unit(0, HostLinkCommandSet.Fins)</c>) or, with
+    /// <see cref="HostLinkClientOptions.AllowReadModifyWriteBits"/>, reading the word, changing the bit and writing the
+    /// word back (anything the PLC program writes to that word in between is lost).
     /// </summary>
-    /// <exception cref="ArgumentException">The address names a word, not a bit.</exception>
+    /// <exception cref="ArgumentException">The address names a word, not a bit; or this view uses C-mode (nothing is sent).</exception>
+    /// <exception cref="HostLinkEndCodeException">The PLC refused the write (C-mode read-modify-write in RUN mode: end code 01).</exception>
+    /// <exception cref="FinsEndCodeException">The PLC refused the FINS write (for example in RUN mode on some models).</exception>
+    /// <exception cref="HostLinkTimeoutException">No answer in time.</exception>
+    /// <exception cref="HostLinkFrameException">The answer was damaged or not the answer to this command.</exception>
+    /// <exception cref="HostLinkConnectionException">The port or socket could not be opened or was lost.</exception>
     public Task WriteBitAsync(string address, bool value, CancellationToken cancellationToken = default)
         => WriteBitAsync(PlcAddress.Parse(address), value, cancellationToken);
 

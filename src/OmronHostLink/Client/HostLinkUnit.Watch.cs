@@ -26,7 +26,9 @@ public partial class HostLinkUnit
     /// <see cref="WatchEventKind.Resumed"/>, followed by the changes since. A cycle longer than the interval is reported
     /// as <see cref="WatchEventKind.Overrun"/>, and the next starts at once. With <see cref="WatchOptions.ReportEveryCycle"/>
     /// every successful cycle also ends with <see cref="WatchEventKind.Polled"/>, and every further failed try of an
-    /// outage is <see cref="WatchEventKind.RetryFailed"/>.
+    /// outage is <see cref="WatchEventKind.RetryFailed"/>. With <see cref="WatchOptions.DemoteAfter"/> set, a unit that
+    /// stays silent that many cycles in a row is <see cref="WatchEventKind.Demoted"/>: no read for the demotion period,
+    /// then one presence probe of each unit the plan reads decides whether the watch reads again.
     /// </summary>
     /// <remarks>
     /// The watch runs while it is enumerated (<c>await foreach</c>): cycles are not read ahead, so a slow subscriber
@@ -61,6 +63,8 @@ public partial class HostLinkUnit
             RetryInterval = options.RetryInterval,
             MaxRetryInterval = options.MaxRetryInterval,
             ReportEveryCycle = options.ReportEveryCycle,
+            DemoteAfter = options.DemoteAfter,
+            DemotionPeriod = options.DemotionPeriod,
             TimeProvider = options.TimeProvider,
         };
         return TagWatch.RunAsync(this, plan, settings, cancellationToken);

@@ -18,7 +18,7 @@ public partial class HostLinkUnit
 
     internal readonly HostLinkConnection Connection;
     internal readonly HostLinkClientOptions Options;
-    private protected readonly UnitModels Models;
+    internal readonly UnitModels Models;
 
     private protected readonly CompoundReadRegistry CompoundReads;
 
@@ -72,6 +72,11 @@ public partial class HostLinkUnit
     /// </summary>
     /// <exception cref="FormatException">The address is not valid.</exception>
     /// <exception cref="ArgumentException">The range does not fit the area or the protocol (nothing is sent).</exception>
+    /// <exception cref="HostLinkEndCodeException">The PLC refused the command (its end code, header and unit are in the exception).</exception>
+    /// <exception cref="HostLinkTimeoutException">No answer in time, after the read retries.</exception>
+    /// <exception cref="HostLinkFrameException">The answer was damaged, from another unit, or not the answer to this command: never returned as data.</exception>
+    /// <exception cref="HostLinkConnectionException">The port or socket could not be opened, or was lost or closed during the exchange.</exception>
+    /// <exception cref="ObjectDisposedException">The client was disposed.</exception>
     public Task<ushort[]> ReadWordsAsync(string address, int count, CancellationToken cancellationToken = default)
         => ReadWordsAsync(PlcAddress.Parse(address), count, cancellationToken);
 
@@ -98,6 +103,11 @@ public partial class HostLinkUnit
     /// 267 words, what one FA command frame holds). Completes only when the PLC answered end code 00.
     /// </summary>
     /// <exception cref="HostLinkEndCodeException">The PLC refused the write (for example 01: C-mode writes are refused in RUN mode).</exception>
+    /// <exception cref="FinsEndCodeException">The PLC refused a FINS write.</exception>
+    /// <exception cref="HostLinkTimeoutException">No answer in time (a write is repeated only with <see cref="HostLinkClientOptions.WriteRetries"/>).</exception>
+    /// <exception cref="HostLinkFrameException">The answer was damaged, from another unit, or not the answer to this command: never returned as data.</exception>
+    /// <exception cref="HostLinkConnectionException">The port or socket could not be opened, or was lost or closed during the exchange.</exception>
+    /// <exception cref="ObjectDisposedException">The client was disposed.</exception>
     public Task WriteWordsAsync(string address, ReadOnlyMemory<ushort> words, CancellationToken cancellationToken = default)
         => WriteWordsAsync(PlcAddress.Parse(address), words, cancellationToken);
 
@@ -105,7 +115,7 @@ public partial class HostLinkUnit
     public Task WriteWordsAsync(PlcAddress address, ReadOnlyMemory<ushort> words, CancellationToken cancellationToken = default)
     {
         address = address.AsWord();
-        address.EnsureRange(words.Length, Commands.Kind, forWrite: true);
+        address.EnsureRange(words.Length, Commands.Kind, forWrite: Models.Off);
         if (!Models.TryGet(UnitNumber, out PlcModelProfile? model))
         {
             return WriteWordsOfDetectedModelAsync(address, words, cancellationToken);
@@ -122,6 +132,11 @@ public partial class HostLinkUnit
     // ---- Status, mode, errors, model, test ----
 
     /// <summary>Reads the operating mode, the status word and any FAL/FALS message (C-mode MS; FINS 0601 when the protocol is FINS).</summary>
+    /// <exception cref="HostLinkEndCodeException">The PLC refused the command (its end code, header and unit are in the exception).</exception>
+    /// <exception cref="HostLinkTimeoutException">No answer in time, after the read retries.</exception>
+    /// <exception cref="HostLinkFrameException">The answer was damaged, from another unit, or not the answer to this command: never returned as data.</exception>
+    /// <exception cref="HostLinkConnectionException">The port or socket could not be opened, or was lost or closed during the exchange.</exception>
+    /// <exception cref="ObjectDisposedException">The client was disposed.</exception>
     public Task<PlcStatus> ReadStatusAsync(CancellationToken cancellationToken = default)
         => Commands.ReadStatusAsync(this, cancellationToken);
 
@@ -129,14 +144,30 @@ public partial class HostLinkUnit
     /// Changes the operating mode (C-mode SC; FINS 0401/0402 when the protocol is FINS). Leaving RUN or MONITOR stops
     /// the machine's program: callers decide that, not the library.
     /// </summary>
+    /// <exception cref="HostLinkEndCodeException">The PLC refused the change.</exception>
+    /// <exception cref="FinsEndCodeException">The PLC refused a FINS change.</exception>
+    /// <exception cref="HostLinkTimeoutException">No answer in time (a write is repeated only with <see cref="HostLinkClientOptions.WriteRetries"/>).</exception>
+    /// <exception cref="HostLinkFrameException">The answer was damaged, from another unit, or not the answer to this command: never returned as data.</exception>
+    /// <exception cref="HostLinkConnectionException">The port or socket could not be opened, or was lost or closed during the exchange.</exception>
+    /// <exception cref="ObjectDisposedException">The client was disposed.</exception>
     public Task SetModeAsync(PlcMode mode, CancellationToken cancellationToken = default)
         => Commands.SetModeAsync(this, mode, cancellationToken);
 
     /// <summary>Reads the error information (MF), clearing the errors afterwards when <paramref name="clear"/> is true.</summary>
+    /// <exception cref="HostLinkEndCodeException">The PLC refused the command (its end code, header and unit are in the exception).</exception>
+    /// <exception cref="HostLinkTimeoutException">No answer in time, after the read retries.</exception>
+    /// <exception cref="HostLinkFrameException">The answer was damaged, from another unit, or not the answer to this command: never returned as data.</exception>
+    /// <exception cref="HostLinkConnectionException">The port or socket could not be opened, or was lost or closed during the exchange.</exception>
+    /// <exception cref="ObjectDisposedException">The client was disposed.</exception>
     public Task<PlcErrorInfo> ReadErrorsAsync(bool clear = false, CancellationToken cancellationToken = default)
         => CModeAsync(new ErrorReadCommand(clear), static (data, _) => CModeResponse.ReadErrors(data), 0, cancellationToken).AsTask();
 
     /// <summary>Reads the PLC model code (MM).</summary>
+    /// <exception cref="HostLinkEndCodeException">The PLC refused the command (its end code, header and unit are in the exception).</exception>
+    /// <exception cref="HostLinkTimeoutException">No answer in time, after the read retries.</exception>
+    /// <exception cref="HostLinkFrameException">The answer was damaged, from another unit, or not the answer to this command: never returned as data.</exception>
+    /// <exception cref="HostLinkConnectionException">The port or socket could not be opened, or was lost or closed during the exchange.</exception>
+    /// <exception cref="ObjectDisposedException">The client was disposed.</exception>
     public Task<PlcModel> ReadModelAsync(CancellationToken cancellationToken = default)
         => CModeAsync(CModeCommands.ModelReadCommand, static (data, _) => CModeResponse.ReadModel(data), 0, cancellationToken).AsTask();
 
@@ -144,6 +175,11 @@ public partial class HostLinkUnit
     /// Sends TS (TEST) with <paramref name="text"/> and checks that the PLC echoes it unchanged. Returns the round-trip time.
     /// </summary>
     /// <exception cref="ArgumentException">The text is over 122 characters or holds characters that cannot travel in a frame.</exception>
+    /// <exception cref="HostLinkEndCodeException">The PLC refused the command (its end code, header and unit are in the exception).</exception>
+    /// <exception cref="HostLinkTimeoutException">No answer in time, after the read retries.</exception>
+    /// <exception cref="HostLinkFrameException">The answer was damaged, from another unit, or not the answer to this command: never returned as data.</exception>
+    /// <exception cref="HostLinkConnectionException">The port or socket could not be opened, or was lost or closed during the exchange.</exception>
+    /// <exception cref="ObjectDisposedException">The client was disposed.</exception>
     public async Task<TimeSpan> TestAsync(string text = "OMRONHOSTLINK", CancellationToken cancellationToken = default)
     {
         var command = new TestCommand(text);
@@ -173,7 +209,10 @@ public partial class HostLinkUnit
     // ---- C-mode plumbing ----
 
     internal HostLinkRequest Request(CModeCommand command)
-        => new(UnitNumber, command.Header, command.ToMessage(UnitNumber), command.Exchange);
+    {
+        EnsureModelAccepts(command);
+        return new(UnitNumber, command.Header, command.ToMessage(UnitNumber), command.Exchange);
+    }
 
     /// <summary>How often a command is repeated after a timeout or damage: by what repeating it would do.</summary>
     internal int RetriesFor(CommandEffect effect) => effect switch

@@ -31,6 +31,8 @@ internal static class TagWatch
         TimeSpan due = TimeSpan.Zero;
         bool succeeded = false;
         TimeSpan? outageStart = null;
+        int silentCycles = 0;
+        bool demoted = false;
 
         while (true)
         {
@@ -43,6 +45,18 @@ internal static class TagWatch
             else if (succeeded && interval > TimeSpan.Zero && now > due)
             {
                 yield return WatchEvent.Overrun(now - cycleStart, time.GetUtcNow());
+            }
+
+            if (demoted && await ProbeAsync(unit, plan, cancellationToken).ConfigureAwait(false) is { } silent)
+            {
+                // Still silent: one more period without a read.
+                due = time.GetElapsedTime(origin) + options.DemotionPeriod;
+                if (everyCycle)
+                {
+                    yield return WatchEvent.RetryFailed(silent, time.GetUtcNow(), options.DemotionPeriod);
+                }
+
+                continue;
             }
 
             cycleStart = time.GetElapsedTime(origin);
@@ -62,27 +76,43 @@ internal static class TagWatch
             if (failure is not null)
             {
                 succeeded = false;
-                if (outageStart is null)
+                silentCycles = IsSilence(failure) ? silentCycles + 1 : failure is HostLinkConnectionException ? silentCycles : 0;
+                bool demote = options.DemoteAfter > 0 && silentCycles >= options.DemoteAfter;
+                bool first = outageStart is null;
+                if (first)
                 {
                     outageStart = end;
                     retryDelay = options.EffectiveRetryInterval;
-                    due = end + retryDelay;
-                    yield return WatchEvent.Outage(failure, readTime, retryDelay);
                 }
-                else
+                else if (!demote)
                 {
                     retryDelay = options.NextRetryDelay(retryDelay);
-                    due = end + retryDelay;
-                    if (everyCycle)
-                    {
-                        yield return WatchEvent.RetryFailed(failure, readTime, retryDelay);
-                    }
                 }
 
+                TimeSpan wait = demote ? options.DemotionPeriod : retryDelay;
+                due = end + wait;
+                if (first)
+                {
+                    yield return WatchEvent.Outage(failure, readTime, wait);
+                }
+
+                if (demote && !demoted)
+                {
+                    demoted = true;
+                    yield return WatchEvent.Demoted(failure, readTime, wait);
+                }
+                else if (!first && everyCycle)
+                {
+                    yield return WatchEvent.RetryFailed(failure, readTime, wait);
+                }
+
+                demoted = demote;
                 continue;
             }
 
             succeeded = true;
+            silentCycles = 0;
+            demoted = false;
             due = cycleStart + interval;
             if (outageStart is { } since)
             {
@@ -122,6 +152,37 @@ internal static class TagWatch
         HostLinkException or IOException or FormatException or TimeoutException => true,
         _ => false,
     };
+
+    /// <summary>A failure that says the unit did not answer at all (not a damaged answer, an end code or a lost port).</summary>
+    private static bool IsSilence(Exception e) => e is HostLinkTimeoutException or TimeoutException;
+
+    /// <summary>
+    /// Asks each unit the plan reads, with one presence probe, whether it answers; the first unit's silence as an
+    /// exception, or null when every unit answered. A port that cannot be opened counts as silence.
+    /// </summary>
+    private static async Task<Exception?> ProbeAsync(HostLinkUnit unit, ReadPlan plan, CancellationToken cancellationToken)
+    {
+        foreach (int number in plan.TagUnits.Distinct())
+        {
+            HostLinkUnit view = number == unit.UnitNumber ? unit : unit.Unit(number);
+            try
+            {
+                if (await view.ProbeAsync(null, cancellationToken).ConfigureAwait(false) is null)
+                {
+                    TimeSpan turnaround = view.TurnaroundAllowance;
+                    return new HostLinkTimeoutException(
+                        $"Unit {number:D2} did not answer a presence probe (TS) within its turnaround allowance ({turnaround.TotalMilliseconds:0} ms) after the frame's time on the wire; it stays demoted.",
+                        turnaround);
+                }
+            }
+            catch (HostLinkConnectionException e)
+            {
+                return e;
+            }
+        }
+
+        return null;
+    }
 
     // The value in the tag's type, decoded from the words read, compared bit for bit (a REAL NaN equals itself).
     private static PlcValue Decode(PlcTagValue value, WordOrder order)

@@ -15,10 +15,26 @@ internal abstract class UnitCommandSet
     /// <summary>Which command set this is.</summary>
     public abstract HostLinkCommandSet Kind { get; }
 
-    /// <summary>Refuses, before anything is sent, what <paramref name="model"/> does not have or accept with this command set.</summary>
+    /// <summary>
+    /// Refuses, before anything is sent, what <paramref name="model"/> does not have or accept with this command set.
+    /// Without a model, a write is held to the CS/CJ rules (A0–A447 read-only); with one, to the model's own read-only
+    /// ranges (the C-series AR words are writable).
+    /// </summary>
     /// <exception cref="ArgumentException">The model lacks the range, or the command set.</exception>
     public virtual void EnsureModel(PlcModelProfile? model, PlcAddress address, int count, bool forWrite)
-        => model?.EnsureRange(address.AsWord(), count, forWrite);
+    {
+        if (model is null)
+        {
+            if (forWrite)
+            {
+                address.AsWord().EnsureRange(count, Kind, forWrite: true);
+            }
+
+            return;
+        }
+
+        model.EnsureRange(address.AsWord(), count, forWrite);
+    }
 
     /// <summary>Reads <paramref name="count"/> words from <paramref name="address"/> (a word address in range).</summary>
     public abstract ValueTask<ushort[]> ReadWordsAsync(HostLinkUnit unit, PlcAddress address, int count, PlcModelProfile? model, CancellationToken cancellationToken);

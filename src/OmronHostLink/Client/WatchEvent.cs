@@ -55,7 +55,8 @@ public sealed class WatchEvent
     public IReadOnlyList<ushort> Words { get; }
 
     /// <summary>
-    /// For <see cref="WatchEventKind.Outage"/> and <see cref="WatchEventKind.RetryFailed"/>: why the cycle failed (see
+    /// For <see cref="WatchEventKind.Outage"/>, <see cref="WatchEventKind.RetryFailed"/> and
+    /// <see cref="WatchEventKind.Demoted"/>: why the cycle (or the probe) failed (see
     /// <see cref="HostLinkException.IsTransient"/>). Null otherwise.
     /// </summary>
     public Exception? Exception { get; }
@@ -68,7 +69,8 @@ public sealed class WatchEvent
 
     /// <summary>
     /// For <see cref="WatchEventKind.Outage"/> and <see cref="WatchEventKind.RetryFailed"/>: how long the watch waits
-    /// before its next try (see <see cref="WatchOptions.MaxRetryInterval"/>). Zero otherwise.
+    /// before its next try (see <see cref="WatchOptions.MaxRetryInterval"/>); for <see cref="WatchEventKind.Demoted"/>:
+    /// the demotion period before the next probe. Zero otherwise.
     /// </summary>
     public TimeSpan RetryDelay { get; }
 
@@ -113,6 +115,12 @@ public sealed class WatchEvent
     public static WatchEvent RetryFailed(Exception exception, DateTimeOffset timestamp, TimeSpan retryDelay)
         => new(WatchEventKind.RetryFailed, timestamp, exception: Guard.NotNull(exception), retryDelay: NotNegative(retryDelay, nameof(retryDelay)));
 
+    /// <summary>The unit is demoted after a cycle failed with <paramref name="exception"/>; the next probe is in <paramref name="period"/>.</summary>
+    /// <exception cref="ArgumentNullException"><paramref name="exception"/> is null.</exception>
+    /// <exception cref="ArgumentOutOfRangeException"><paramref name="period"/> is negative.</exception>
+    public static WatchEvent Demoted(Exception exception, DateTimeOffset timestamp, TimeSpan period)
+        => new(WatchEventKind.Demoted, timestamp, exception: Guard.NotNull(exception), retryDelay: NotNegative(period, nameof(period)));
+
     /// <summary>A successful cycle whose read took <paramref name="readTime"/>.</summary>
     public static WatchEvent Polled(TimeSpan readTime, DateTimeOffset timestamp)
         => new(WatchEventKind.Polled, timestamp, duration: readTime);
@@ -139,6 +147,7 @@ public sealed class WatchEvent
             WatchEventKind.Resumed => $"{at} resumed after {Seconds(Duration)} s",
             WatchEventKind.Polled => $"{at} polled in {Seconds(Duration)} s",
             WatchEventKind.RetryFailed => $"{at} still failing: {Exception!.Message}; next try in {Seconds(RetryDelay)} s",
+            WatchEventKind.Demoted => $"{at} demoted: {Exception!.Message}; next probe in {Seconds(RetryDelay)} s",
             _ => $"{at} overrun: cycle took {Seconds(Duration)} s",
         };
     }

@@ -35,4 +35,12 @@ public enum WatchEventKind
     /// the <see cref="Outage"/>), with the exception and the wait before the next try.
     /// </summary>
     RetryFailed,
+
+    /// <summary>
+    /// The watched unit did not answer <see cref="WatchOptions.DemoteAfter"/> cycles in a row and is demoted: no read
+    /// for <see cref="WatchOptions.DemotionPeriod"/> (<see cref="WatchEvent.RetryDelay"/>), then one presence probe
+    /// decides whether it is read again. Reported once per demotion, with the last failure; a probe that finds the unit
+    /// still silent is a <see cref="RetryFailed"/>, and the first successful cycle after it a <see cref="Resumed"/>.
+    /// </summary>
+    Demoted,
 }

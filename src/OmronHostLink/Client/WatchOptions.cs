@@ -5,6 +5,9 @@ public sealed class WatchOptions
 {
     private static readonly TimeSpan MaxInterval = TimeSpan.FromDays(1);
 
+    /// <summary>The most failed cycles <see cref="DemoteAfter"/> may wait for.</summary>
+    public const int MaxDemoteAfter = 1000;
+
     /// <summary>
     /// The time from the start of one cycle to the start of the next. <see cref="TimeSpan.Zero"/> polls back to back
     /// (and never reports an overrun). Default 1 s; at most 1 day.
@@ -32,6 +35,19 @@ public sealed class WatchOptions
     /// </summary>
     public bool ReportEveryCycle { get; set; }
 
+    /// <summary>
+    /// Demote the watched unit after this many cycles in a row found it silent (a timeout): the watch reports
+    /// <see cref="WatchEventKind.Demoted"/> and stops reading for <see cref="DemotionPeriod"/>, then asks the unit with
+    /// one presence probe (<see cref="HostLinkUnit.ProbeAsync"/>: one TS, never retried, one short deadline) whether it
+    /// is back before it reads again, so a dead unit on a multidrop line costs one probe a period instead of a read with
+    /// every retry. A cycle the unit answers, even with an error, starts the count again. 0 (the default) never demotes;
+    /// at most 1000.
+    /// </summary>
+    public int DemoteAfter { get; set; }
+
+    /// <summary>How long a demoted unit is not read before the next probe. Default 10 s; more than 0 and at most 1 day.</summary>
+    public TimeSpan DemotionPeriod { get; set; } = TimeSpan.FromSeconds(10);
+
     /// <summary>The clock for intervals and event timestamps. Default <see cref="TimeProvider.System"/>; tests pass a fake one.</summary>
     public TimeProvider TimeProvider { get; set; } = TimeProvider.System;
 
@@ -57,6 +73,16 @@ public sealed class WatchOptions
         if (MaxRetryInterval is { } max && (max > MaxInterval || max < EffectiveRetryInterval))
         {
             throw new ArgumentOutOfRangeException(nameof(MaxRetryInterval), max, $"MaxRetryInterval must be at least the retry interval ({EffectiveRetryInterval}) and at most 1 day; it was {max}.");
+        }
+
+        if (DemoteAfter is < 0 or > MaxDemoteAfter)
+        {
+            throw new ArgumentOutOfRangeException(nameof(DemoteAfter), DemoteAfter, $"DemoteAfter must be 0 (never) up to {MaxDemoteAfter}; it was {DemoteAfter}.");
+        }
+
+        if (DemotionPeriod <= TimeSpan.Zero || DemotionPeriod > MaxInterval)
+        {
+            throw new ArgumentOutOfRangeException(nameof(DemotionPeriod), DemotionPeriod, $"DemotionPeriod must be more than 0 and at most 1 day; it was {DemotionPeriod}.");
         }
 
         if (TimeProvider is null)

@@ -39,7 +39,7 @@ internal sealed class HostLinkConnection : IAsyncDisposable, IDisposable
         _spacing = new SendSpacing(options);
         Timing = transport.LineTiming ?? options.LineTiming;
         _logger = options.LoggerFactory?.CreateLogger("OmronHostLink") ?? NullLogger.Instance;
-        _attempt = new TransactionAttempt(Timing, options.TurnaroundAllowance, options.LocalEcho);
+        _attempt = new TransactionAttempt(Timing, options.TurnaroundAllowance, options.LocalEcho, _time) { AnswerFraming = options.AnswerFraming };
         _resynchroniser = new Resynchroniser(Timing, options.TurnaroundAllowance, _time, options.LocalEcho);
         _instruments = HostLinkInstruments.For(options.MeterFactory);
         LinkName = options.LinkName ?? (transport as SerialTransport)?.PortName ?? transport.Description;
@@ -127,7 +127,9 @@ internal sealed class HostLinkConnection : IAsyncDisposable, IDisposable
     /// frame's wire time both ways plus <paramref name="turnaround"/>. The probe is a resynchronisation in itself
     /// (<c>@**</c> first if a multi-frame exchange was cut, buffered bytes discarded, every frame before the echo thrown
     /// away), so no fence precedes it and a silent unit costs one deadline; the link then stays
-    /// <see cref="LinkState.NeedsResync"/> and the next request fences as after any failed exchange.
+    /// <see cref="LinkState.NeedsResync"/> and the next request fences at its own unit: a late echo of the probe carries
+    /// the probe's token, which no later fence takes for its own, so fencing the silent unit again would cost a second
+    /// deadline and prove nothing more (a demoted unit is probed once a period while its neighbours are polled).
     /// </summary>
     /// <returns>The round-trip time, or null when the unit did not echo the token in time.</returns>
     public ValueTask<TimeSpan?> ProbeAsync(int unit, TimeSpan turnaround, CancellationToken cancellationToken)
@@ -207,7 +209,14 @@ internal sealed class HostLinkConnection : IAsyncDisposable, IDisposable
             channel.Begin(cancellationToken);
             try
             {
-                return await exchange(this, channel, arg).ConfigureAwait(false);
+                TResult result = await exchange(this, channel, arg).ConfigureAwait(false);
+                if (_attempt.StartedAt != 0)
+                {
+                    // A request's answer (not a probe's or an INITIALIZE): the unit's response time, fence excluded.
+                    _instruments.Exchange(LinkName, unit, header, _time.GetElapsedTime(_attempt.StartedAt));
+                }
+
+                return result;
             }
             catch (Exception e)
             {
@@ -269,8 +278,9 @@ internal sealed class HostLinkConnection : IAsyncDisposable, IDisposable
             await InitializeLineAsync(channel).ConfigureAwait(false);
         }
 
-        ResyncOutcome outcome = await _resynchroniser.FenceAsync(channel, _status.Unit, requestUnit).ConfigureAwait(false);
-        HostLinkLog.Resync(_logger, _status.Unit, _resynchroniser.Discarded, outcome);
+        int failedUnit = _status.Unit == LinkStatus.AnyUnit ? requestUnit : _status.Unit;
+        ResyncOutcome outcome = await _resynchroniser.FenceAsync(channel, failedUnit, requestUnit).ConfigureAwait(false);
+        HostLinkLog.Resync(_logger, failedUnit, _resynchroniser.Discarded, outcome);
         if (outcome == ResyncOutcome.Answered)
         {
             _status = new LinkStatus(LinkState.Ready);
@@ -310,6 +320,7 @@ internal sealed class HostLinkConnection : IAsyncDisposable, IDisposable
         TimeSpan? roundTrip = await _resynchroniser.ProbeAsync(channel, unit, turnaround).ConfigureAwait(false);
         if (roundTrip is null)
         {
+            _status = new LinkStatus(LinkState.NeedsResync, LinkStatus.AnyUnit);
             HostLinkLog.Failed(_logger, unit, CModeHeaders.Test, $"No answer to a presence probe within {_resynchroniser.FenceTimeout.TotalMilliseconds:0} ms.");
         }
         else

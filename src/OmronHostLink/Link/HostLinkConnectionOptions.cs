@@ -1,5 +1,6 @@
 using System.Diagnostics.Metrics;
 using Microsoft.Extensions.Logging;
+using OmronHostLink.Protocol.CMode;
 using OmronHostLink.Transports;
 
 namespace OmronHostLink.Link;
@@ -30,6 +31,9 @@ internal sealed class HostLinkConnectionOptions
 
     /// <summary>Longer gaps before commands to particular units (unit number to gap); the longer of this and <see cref="SendInterval"/> applies.</summary>
     public IReadOnlyDictionary<int, TimeSpan>? UnitSendIntervals { get; init; }
+
+    /// <summary>How a Serial Communications Unit in a Host Link-compatible mode frames its answers, checked frame by frame; null for any framing.</summary>
+    public CompatibleModeFraming? AnswerFraming { get; init; }
 
     /// <summary>The clock deadlines run on.</summary>
     public TimeProvider TimeProvider { get; init; } = TimeProvider.System;

@@ -14,6 +14,7 @@ internal sealed class HostLinkInstruments
     public const string OperationDurationName = "hostlink.client.operation.duration";
     public const string RetriesName = "hostlink.client.retries";
     public const string ConnectionCountName = "hostlink.client.connection.count";
+    public const string ExchangeDurationName = "hostlink.client.exchange.duration";
 
     /// <summary>
     /// Bucket boundaries in seconds for serial timings: a one-word read crosses the line in ~3 ms at 115200 and ~35 ms
@@ -42,6 +43,12 @@ internal sealed class HostLinkInstruments
             "Duration of Host Link commands, from the call to the answer or the final error, waiting for the line, resynchronisation and retries included.",
             tags: null,
             advice: new InstrumentAdvice<double> { HistogramBucketBoundaries = DurationBuckets });
+        ExchangeDuration = meter.CreateHistogram(
+            ExchangeDurationName,
+            "s",
+            "Duration of the answered attempt of Host Link commands, from its first frame sent to its answer's last frame: the PLC's response time on the line, without waiting for the line, resynchronisation or failed attempts.",
+            tags: null,
+            advice: new InstrumentAdvice<double> { HistogramBucketBoundaries = DurationBuckets });
         Retries = meter.CreateCounter<long>(RetriesName, "{retry}", "Attempts repeated after a timeout or a damaged frame, by the error of the attempt that failed.");
         ConnectionCount = meter.CreateObservableUpDownCounter(ConnectionCountName, ObserveOpen, "{connection}", "Links whose transport (serial port, TCP connection, stream) is open.");
     }
@@ -66,6 +73,8 @@ internal sealed class HostLinkInstruments
     public static string? Version { get; } = ReadVersion();
 
     public Histogram<double> OperationDuration { get; }
+
+    public Histogram<double> ExchangeDuration { get; }
 
     public Counter<long> Retries { get; }
 
@@ -95,6 +104,15 @@ internal sealed class HostLinkInstruments
         }
 
         OperationDuration.Record(elapsed.TotalSeconds, tags);
+    }
+
+    /// <summary>Records the response time of a command's answered attempt.</summary>
+    public void Exchange(string link, int unit, string command, TimeSpan elapsed)
+    {
+        if (ExchangeDuration.Enabled)
+        {
+            ExchangeDuration.Record(elapsed.TotalSeconds, Tags(link, unit, command));
+        }
     }
 
     /// <summary>Counts one repeated attempt, by what ended the one before.</summary>

@@ -6,6 +6,9 @@ namespace OmronHostLink.Link;
 /// </summary>
 internal readonly struct LinkStatus
 {
+    /// <summary>No unit to fence first: the fence goes to the next request's unit (after a presence probe nobody echoed).</summary>
+    public const int AnyUnit = -1;
+
     public LinkStatus(LinkState state, int unit = 0)
     {
         State = state;

@@ -17,6 +17,7 @@ internal sealed class TransactionAttempt
     private static readonly ReadOnlyMemory<byte> Delimiter = new byte[] { (byte)'\r' };
 
     private readonly LineTiming _timing;
+    private readonly TimeProvider _time;
     private readonly TimeSpan _turnaround;
     private readonly bool _localEcho;
     private readonly byte[] _tx = new byte[FrameReader.MaxFrameLength + 8];
@@ -27,18 +28,25 @@ internal sealed class TransactionAttempt
     // holds the rest of a command or an answer), Ready once the whole answer is in, NeedsResync otherwise.
     private LinkState _ifStopped;
 
-    public TransactionAttempt(LineTiming timing, TimeSpan turnaround, bool localEcho)
+    public TransactionAttempt(LineTiming timing, TimeSpan turnaround, bool localEcho, TimeProvider time)
     {
         _timing = timing;
+        _time = time;
         _turnaround = turnaround;
         _localEcho = localEcho;
     }
+
+    /// <summary>The framing of a Serial Communications Unit's Host Link-compatible mode, each answer frame checked against it; null for any.</summary>
+    public CompatibleModeFraming? AnswerFraming { get; init; }
 
     /// <summary>Command frames sent by the last attempt (not the bare CRs between frames).</summary>
     public int FramesSent { get; private set; }
 
     /// <summary>Answer frames received by the last attempt, damaged ones included (not the bare CRs between frames).</summary>
     public int FramesReceived { get; private set; }
+
+    /// <summary>When the last attempt sent its first frame (the link's clock); 0 when no attempt ran since <see cref="Reset"/>.</summary>
+    public long StartedAt { get; private set; }
 
     /// <summary>Frames sent and received by the last attempt.</summary>
     public int Frames => FramesSent + FramesReceived;
@@ -48,6 +56,7 @@ internal sealed class TransactionAttempt
     {
         FramesSent = 0;
         FramesReceived = 0;
+        StartedAt = 0;
         _ifStopped = LinkState.NeedsResync;
     }
 
@@ -77,6 +86,7 @@ internal sealed class TransactionAttempt
     {
         ExchangeShape shape = request.Shape;
         Reset();
+        StartedAt = _time.GetTimestamp();
 
         // Send: frame by frame; between command frames the PLC answers a bare CR (or an error at once).
         int offset = 0;
@@ -175,6 +185,7 @@ internal sealed class TransactionAttempt
         FrameInfo info = FrameParser.ParseFirst(frame);
         _ifStopped = info.IsFinal ? LinkState.Ready : LinkState.NeedsInitialize;
         CModeResponse.CheckAnswerHeader(frame, info, request.Unit, request.Header);
+        AnswerFraming?.CheckFrame(request.Header, first: true, info.IsFinal, info.TextLength);
         AppendText(info.Text(frame), request);
         return info;
     }
@@ -183,6 +194,7 @@ internal sealed class TransactionAttempt
     {
         ReadOnlySpan<byte> frame = channel.Frame(length);
         FrameInfo info = FrameParser.ParseContinuation(frame);
+        AnswerFraming?.CheckFrame(request.Header, first: false, info.IsFinal, info.TextLength);
         AppendText(info.Text(frame), request);
         return info;
     }

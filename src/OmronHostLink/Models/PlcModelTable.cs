@@ -23,6 +23,9 @@ internal static class PlcModelTable
     private static readonly string[] CsCjCMode = [.. OlderCMode, "RE", "WE", "QQ"];
     private static readonly string[] Cp1CMode = [.. OlderCMode, "QQ"];
 
+    // The CQM1H's end code table (CQM1H p441, 6-2-2) lists WG and QQ beside the older list (RE/WE: the CPU61's EM).
+    private static readonly string[] Cqm1hCMode = [.. OlderCMode, "WG", "QQ"];
+
     // The CP2E's list (W614 p14-40): no LR, EM, forcing or QQ commands.
     private static readonly string[] Cp2eCMode = ["RR", "RH", "RC", "RG", "RD", "RJ", "WR", "WH", "WC", "WD", "WJ", "MS", "SC", "MF", "TS"];
 
@@ -65,8 +68,8 @@ internal static class PlcModelTable
                 Rw(PlcArea.Dm, 6656, 6999, C200HS + " p409 (RD note 2: reads 0000, no error)"),
                 Rw(PlcArea.Dm, 7000, 9999, "RD takes 0000–9999 (" + C200HS + " p409); what these answer is not stated", false),
             ],
-            OlderCMode, supportsFins: false, sharesTimerCounterNumbers: true, TimerCounterCoding.Bcd,
-            "MM code: W342 p141, " + C200HX + " p490; ranges: " + C200HS + " section 11-3 (p408–411)"),
+            [.. OlderCMode, "QQ"], supportsFins: false, sharesTimerCounterNumbers: true, TimerCounterCoding.Bcd,
+            "MM code: W342 p141, " + C200HX + " p490; ranges: " + C200HS + " section 11-3 (p408–411); QQ: " + C200HS + " p428 (11-3-33)"),
         new(
             "C200HX", "C200HX/HG/HE", ["C200HG", "C200HE", "C200HX/HG/HE", "C200HX-HG-HE"], 0x12,
             [
@@ -106,14 +109,14 @@ internal static class PlcModelTable
             "CQM1H", "CQM1H", [], 0x11,
             Cqm1hAreas(withEm: false),
             [],
-            Cp1CMode, supportsFins: false, sharesTimerCounterNumbers: true, TimerCounterCoding.Bcd,
-            "ranges: " + Cqm1h + " p470 (6-5 QQ); MM code 11 as the CQM1 (the CQM1H MM page was not found)"),
+            Cqm1hCMode, supportsFins: false, sharesTimerCounterNumbers: true, TimerCounterCoding.Bcd,
+            "ranges: " + Cqm1h + " p470 (6-5 QQ); commands: " + Cqm1h + " p441 (6-2-2); MM code 11 as the CQM1 (the CQM1H MM page was not found)"),
         new(
             "CQM1H-CPU61", "CQM1H-CPU61", [], 0x11,
             Cqm1hAreas(withEm: true),
             [],
-            [.. Cp1CMode, "RE", "WE"], supportsFins: false, sharesTimerCounterNumbers: true, TimerCounterCoding.Bcd,
-            "ranges: " + Cqm1h + " p470 (6-5 QQ; only the CPU61 has EM); MM code 11 as the CQM1 (not found for the CQM1H)"),
+            [.. Cqm1hCMode, "RE", "WE"], supportsFins: false, sharesTimerCounterNumbers: true, TimerCounterCoding.Bcd,
+            "ranges: " + Cqm1h + " p470 (6-5 QQ; only the CPU61 has EM); commands: " + Cqm1h + " p441 (6-2-2); MM code 11 as the CQM1 (not found for the CQM1H)"),
         new(
             "CPM1A", "CPM1/CPM1A", ["CPM1"], 0x11,
             [
@@ -169,8 +172,8 @@ internal static class PlcModelTable
             [
                 Rw(PlcArea.Dm, 2048, 6143, "as the SRM1 (" + CpmQ + " p369)", false),
             ],
-            OlderCMode, supportsFins: false, sharesTimerCounterNumbers: true, TimerCounterCoding.Bcd,
-            "MM code: " + W353 + " p300; ranges: " + W353 + " section 4-5 (IR/SR, LR); the rest not found"),
+            [.. OlderCMode, "QQ"], supportsFins: false, sharesTimerCounterNumbers: true, TimerCounterCoding.Bcd,
+            "MM code: " + W353 + " p300; ranges: " + W353 + " section 4-5 (IR/SR, LR); the rest not found; QQ: " + W353 + " p302 (4-5-30)"),
         Cp1e("CP1E-E", "CP1E E-type", ["CP1E E", "CP1EE", "CP1E E-type"], 2047),
         Cp1e("CP1E-N", "CP1E N/NA-type", ["CP1E N", "CP1EN", "CP1E-NA", "CP1E N-type", "CP1E NA-type"], 8191),
         new(

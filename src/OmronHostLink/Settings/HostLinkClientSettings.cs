@@ -32,6 +32,14 @@ public sealed class HostLinkClientSettings
         { nameof(FinsResponseWait), (v, s) => s.FinsResponseWait = v.Integer() ?? s.FinsResponseWait },
         { nameof(AllowReadModifyWriteBits), (v, s) => s.AllowReadModifyWriteBits = v.Boolean() ?? s.AllowReadModifyWriteBits },
         { nameof(Model), (v, s) => s.Model = v.Text() ?? s.Model },
+        {
+            nameof(HostLinkCompatibleMode),
+            (v, s) => s.HostLinkCompatibleMode = v.Choice(
+                ("A", OmronHostLink.HostLinkCompatibleMode.ModeA),
+                ("B", OmronHostLink.HostLinkCompatibleMode.ModeB),
+                ("C", OmronHostLink.HostLinkCompatibleMode.ModeC),
+                ("D", OmronHostLink.HostLinkCompatibleMode.ModeD)) ?? s.HostLinkCompatibleMode
+        },
         { nameof(SendInterval), (v, s) => s.SendInterval = v.Duration() ?? s.SendInterval },
     };
 
@@ -90,6 +98,13 @@ public sealed class HostLinkClientSettings
     public string? Model { get; set; }
 
     /// <summary>
+    /// The Host Link-compatible device mode of the Serial Communications Unit the client talks to, when it is set to one
+    /// and its answers should be checked against it (see <see cref="HostLinkClientOptions.HostLinkCompatibleMode"/>):
+    /// ModeA to ModeD, or A to D. Default none: any framing is accepted.
+    /// </summary>
+    public HostLinkCompatibleMode? HostLinkCompatibleMode { get; set; }
+
+    /// <summary>
     /// The least time between the end of one exchange and the next command on the line, for PLCs and converters that
     /// drop a command sent right after an answer; 0 to 10 s. Default 0 (none). See <see cref="HostLinkClientOptions.SendInterval"/>.
     /// </summary>
@@ -146,6 +161,7 @@ public sealed class HostLinkClientSettings
         Add(nameof(WordOrder), WordOrder is { } order ? SettingRules.WordOrder(order) : null);
         Add(nameof(FinsResponseWait), FinsResponseWait is { } wait ? SettingRules.FinsResponseWait(wait) : null);
         Add(nameof(Model), Model is { } model ? SettingRules.Model(model) : null);
+        Add(nameof(HostLinkCompatibleMode), HostLinkCompatibleMode is { } compatibleMode ? SettingRules.CompatibleMode(compatibleMode) : null);
         Add(nameof(SendInterval), SendInterval is { } gap ? SettingRules.SendInterval(gap) : null);
         return problems;
     }
@@ -168,6 +184,7 @@ public sealed class HostLinkClientSettings
         options.FinsResponseWait = FinsResponseWait ?? options.FinsResponseWait;
         options.AllowReadModifyWriteBits = AllowReadModifyWriteBits ?? options.AllowReadModifyWriteBits;
         options.Model = Model ?? options.Model;
+        options.HostLinkCompatibleMode = HostLinkCompatibleMode ?? options.HostLinkCompatibleMode;
         options.SendInterval = SendInterval ?? options.SendInterval;
 
         // Over TCP the transport cannot know the line's speed: the deadlines come from these settings. A local port

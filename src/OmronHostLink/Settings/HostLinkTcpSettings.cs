@@ -79,7 +79,7 @@ public sealed class HostLinkTcpSettings : HostLinkEndpointSettings
 
         if (Port is not { } port)
         {
-            problems.Add(new HostLinkSettingsProblem("Tcp:Port", "is missing; write the serial-device server's TCP port (1-65535)"));
+            problems.Add(new HostLinkSettingsProblem("Tcp:Port", $"is missing; write the serial-device server's TCP port (1-{SettingRules.MaxTcpPort})"));
         }
         else if (SettingRules.TcpPort(port) is { } bad)
         {

@@ -22,6 +22,18 @@ internal static class SettingRules
     /// <summary>The longest turnaround allowance.</summary>
     public static readonly TimeSpan LongestTurnaround = TimeSpan.FromMinutes(1);
 
+    /// <summary>The longest send interval, of a link or of a unit.</summary>
+    public static readonly TimeSpan LongestSendInterval = TimeSpan.FromSeconds(10);
+
+    /// <summary>The most data bits a character may have; the fewest is 7 (Host Link's own 7E2).</summary>
+    public const int MaxDataBits = 8;
+
+    /// <summary>The fewest data bits a character may have.</summary>
+    public const int MinDataBits = 7;
+
+    /// <summary>The highest TCP port number.</summary>
+    public const int MaxTcpPort = 65535;
+
     /// <summary>The longest TCP connection attempt.</summary>
     public static readonly TimeSpan LongestConnectTimeout = TimeSpan.FromMinutes(5);
 
@@ -40,13 +52,19 @@ internal static class SettingRules
             ? null
             : $"'{model}' is not a known PLC model; use one of {PlcModelProfile.KnownNames()}, or auto to ask the PLC (MM)";
 
+    /// <summary>A Serial Communications Unit's Host Link-compatible device mode.</summary>
+    public static string? CompatibleMode(HostLinkCompatibleMode value)
+        => value is >= HostLinkCompatibleMode.ModeA and <= HostLinkCompatibleMode.ModeD ? null : $"{(int)value} is not ModeA, ModeB, ModeC or ModeD";
+
     public static string? FinsResponseWait(int wait)
         => wait is < 0 or > MaxFinsResponseWait ? $"{wait} is not 0-{MaxFinsResponseWait} (units of 10 ms)" : null;
 
     public static string? TurnaroundAllowance(TimeSpan value) => Positive(value, LongestTurnaround, "1 minute");
 
     public static string? SendInterval(TimeSpan value)
-        => value < TimeSpan.Zero || value > TimeSpan.FromSeconds(10) ? $"{value.TotalMilliseconds:0.###} ms is not 0 to 10 s" : null;
+        => value < TimeSpan.Zero || value > LongestSendInterval
+            ? $"{value.TotalMilliseconds.ToString("0.###", CultureInfo.InvariantCulture)} ms is not 0 to {LongestSendInterval.TotalSeconds.ToString(CultureInfo.InvariantCulture)} s"
+            : null;
 
     public static string? ConnectTimeout(TimeSpan value) => Positive(value, LongestConnectTimeout, "5 minutes");
 
@@ -64,7 +82,7 @@ internal static class SettingRules
     public static string? BaudRate(int baud)
         => Array.IndexOf(StandardBaudRates, baud) < 0 ? $"{baud} is not a standard rate ({string.Join(", ", StandardBaudRates)})" : null;
 
-    public static string? DataBits(int bits) => bits is 7 or 8 ? null : $"{bits} is not 7 or 8";
+    public static string? DataBits(int bits) => bits is >= MinDataBits and <= MaxDataBits ? null : $"{bits} is not {MinDataBits} or {MaxDataBits}";
 
     public static string? Parity(SerialParity value)
         => value is SerialParity.None or SerialParity.Even or SerialParity.Odd ? null : $"{(int)value} is not None, Even or Odd";
@@ -82,7 +100,7 @@ internal static class SettingRules
     public static string? Host(string host)
         => host.Trim().Length == 0 ? "is empty; write the serial-device server's host name or address" : null;
 
-    public static string? TcpPort(int port) => port is < 1 or > 65535 ? $"{port} is not a TCP port (1-65535)" : null;
+    public static string? TcpPort(int port) => port is < 1 or > MaxTcpPort ? $"{port} is not a TCP port (1-{MaxTcpPort})" : null;
 
     /// <summary>Reads <c>host:port</c> (an IPv6 address in brackets: <c>[fd00::5]:4001</c>).</summary>
     public static bool TryParseEndpoint(string text, out string host, out int port, out string? error)
@@ -111,7 +129,7 @@ internal static class SettingRules
 
         if (!int.TryParse(p, NumberStyles.None, CultureInfo.InvariantCulture, out int number) || TcpPort(number) is not null)
         {
-            error = $"'{text}': the port '{p}' is not a number 1-65535";
+            error = $"'{text}': the port '{p}' is not a number 1-{MaxTcpPort}";
             return false;
         }
 

@@ -16,7 +16,7 @@ namespace OmronHostLink.Benchmarks.Scale;
 /// frames a second that spinning alone would take most of a core from the processes being measured. A late wake-up
 /// only lengthens a transaction, so the figures err on the slow side.
 /// </remarks>
-internal sealed class PacedSerialStream(Stream inner, int baudRate, int bitsPerCharacter, LineClock clock) : Stream
+internal sealed class PacedSerialStream(Stream inner, int baudRate, int bitsPerCharacter, LineClock clock) : PassThroughStream(inner)
 {
     private readonly double _ticksPerCharacter = (double)bitsPerCharacter / baudRate * Stopwatch.Frequency;
     private long _inboundFreeAt;
@@ -45,23 +45,9 @@ internal sealed class PacedSerialStream(Stream inner, int baudRate, int bitsPerC
         }
     }
 
-    public override bool CanRead => true;
-
-    public override bool CanSeek => false;
-
-    public override bool CanWrite => true;
-
-    public override long Length => throw new NotSupportedException();
-
-    public override long Position
-    {
-        get => throw new NotSupportedException();
-        set => throw new NotSupportedException();
-    }
-
     public override async ValueTask<int> ReadAsync(Memory<byte> buffer, CancellationToken cancellationToken = default)
     {
-        int n = await inner.ReadAsync(buffer, cancellationToken).ConfigureAwait(false);
+        int n = await Inner.ReadAsync(buffer, cancellationToken).ConfigureAwait(false);
         if (n > 0)
         {
             // The host's bytes left it just now; on the line they follow whatever is still arriving.
@@ -87,36 +73,8 @@ internal sealed class PacedSerialStream(Stream inner, int baudRate, int bitsPerC
         // Stamped before the send: the send wakes the host, which on a busy machine may run (and answer) before this
         // thread runs again.
         _answerSentAt = Stopwatch.GetTimestamp();
-        await inner.WriteAsync(buffer, cancellationToken).ConfigureAwait(false);
+        await Inner.WriteAsync(buffer, cancellationToken).ConfigureAwait(false);
         Interlocked.Add(ref _charactersOut, buffer.Length);
-    }
-
-    public override Task<int> ReadAsync(byte[] buffer, int offset, int count, CancellationToken cancellationToken)
-        => ReadAsync(buffer.AsMemory(offset, count), cancellationToken).AsTask();
-
-    public override Task WriteAsync(byte[] buffer, int offset, int count, CancellationToken cancellationToken)
-        => WriteAsync(buffer.AsMemory(offset, count), cancellationToken).AsTask();
-
-    public override int Read(byte[] buffer, int offset, int count) => ReadAsync(buffer, offset, count, CancellationToken.None).GetAwaiter().GetResult();
-
-    public override void Write(byte[] buffer, int offset, int count) => WriteAsync(buffer, offset, count, CancellationToken.None).GetAwaiter().GetResult();
-
-    public override void Flush() => inner.Flush();
-
-    public override Task FlushAsync(CancellationToken cancellationToken) => inner.FlushAsync(cancellationToken);
-
-    public override long Seek(long offset, SeekOrigin origin) => throw new NotSupportedException();
-
-    public override void SetLength(long value) => throw new NotSupportedException();
-
-    protected override void Dispose(bool disposing)
-    {
-        if (disposing)
-        {
-            inner.Dispose();
-        }
-
-        base.Dispose(disposing);
     }
 
     private async Task WaitUntilAsync(long timestamp, CancellationToken cancellationToken)

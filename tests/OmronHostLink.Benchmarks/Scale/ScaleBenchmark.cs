@@ -117,12 +117,14 @@ internal static class ScaleBenchmark
         var ledger = new ChangeLedger(tagsTotal, maxChanges);
         var servers = new List<SerialDeviceServer>();
         using var lineClock = new LineClock();
-        MosquittoProcess? broker = null;
+        MosquittoBroker? broker = null;
         ChangeSubscriber? subscriber = null;
         WorkerProcess? worker = null;
         try
         {
-            broker = await MosquittoProcess.StartAsync(cancellationToken);
+            // Persistence off, and a queue deep enough that the subscriber, which takes everything, loses nothing.
+            broker = await MosquittoBroker.StartAsync(new MosquittoSettings { Persistence = false, MaxQueuedMessages = 1_000_000 });
+            ChildProcesses.Add(broker.Process!);
             for (int i = 0; i < links; i++)
             {
                 servers.Add(SerialDeviceServer.Start(new VirtualPlc(new VirtualPlcOptions { Units = [0] }), s.Baud, BitsPerCharacter, lineClock));
@@ -164,7 +166,7 @@ internal static class ScaleBenchmark
             // The measured window: the writer's run.
             var plcs = servers.Select(x => x.Plc).ToArray();
             ProcessSample w0 = ProcessSample.Read(worker.ProcessId) ?? throw new InvalidOperationException($"The worker has exited:\n{worker.Log}");
-            ProcessSample b0 = ProcessSample.Read(broker.ProcessId) ?? default;
+            ProcessSample b0 = ProcessSample.Read(broker.Process!.Id) ?? default;
             ProcessSample self0 = ProcessSample.Read(Environment.ProcessId) ?? default;
             long frames0 = servers.Sum(x => x.AnswerFrames);
             long chars0 = servers.Sum(x => x.LineCharacters);
@@ -182,7 +184,7 @@ internal static class ScaleBenchmark
             long t1 = Stopwatch.GetTimestamp();
             double elapsed = (t1 - t0) / (double)Stopwatch.Frequency;
             ProcessSample w1 = ProcessSample.Read(worker.ProcessId) ?? throw new InvalidOperationException($"The worker has exited:\n{worker.Log}");
-            ProcessSample b1 = ProcessSample.Read(broker.ProcessId) ?? default;
+            ProcessSample b1 = ProcessSample.Read(broker.Process!.Id) ?? default;
             ProcessSample self1 = ProcessSample.Read(Environment.ProcessId) ?? default;
             long frames = servers.Sum(x => x.AnswerFrames) - frames0;
             long chars = servers.Sum(x => x.LineCharacters) - chars0;
@@ -242,6 +244,11 @@ internal static class ScaleBenchmark
 
             if (broker is not null)
             {
+                if (broker.Process is { } brokerProcess)
+                {
+                    ChildProcesses.Remove(brokerProcess);
+                }
+
                 await broker.DisposeAsync();
             }
 

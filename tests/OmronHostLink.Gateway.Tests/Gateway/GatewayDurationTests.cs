@@ -37,13 +37,7 @@ public sealed class GatewayDurationTests
         {
             Exception? failure = await Record.ExceptionAsync(() => host.StartAsync());
             failure.Should().BeOfType<OptionsValidationException>()
-                .Which.Failures.Should().Contain($"HostLink:Links:plc:Groups:g:Interval {Refusal(text)}.");
+                .Which.Failures.Should().Contain($"HostLink:Links:plc:Groups:g:Interval {DurationTexts.Refusal(text)}.");
         }
-    }
-
-    private static string Refusal(string text)
-    {
-        Duration.TryParse(text, out _, out string? error).Should().BeFalse();
-        return error!;
     }
 }

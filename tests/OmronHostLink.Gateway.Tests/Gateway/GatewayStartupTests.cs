@@ -36,8 +36,8 @@ public sealed class GatewayStartupTests
         {
             // case, change (JSON text replacement "old=>new", or command-line "--key=value"), what the message says
             { "JSON syntax error", "\"Type\": \"int16\" }=>\"Type\" \"int16\" }", "appsettings.json, line 8, column 49: '\"' is invalid after a property name" },
-            { "JSON duplicate key", "\"Type\": \"int16\" }=>\"Type\": \"int16\" }, \"levels\": { \"Address\": \"D5\" }", "duplicate key 'HostLink:Links:plc:Groups:levels:Address'" },
-            { "JSON duplicate key in another case", "\"Type\": \"int16\" }=>\"Type\": \"int16\" }, \"Levels\": { \"Address\": \"D5\" }", "duplicate key 'HostLink:Links:plc:Groups:Levels:Address'" },
+            { "JSON duplicate key", "\"Type\": \"int16\" }=>\"Type\": \"int16\" },\n \"levels\": { \"Address\": \"D5\" }", "appsettings.json, line 9: duplicate key 'HostLink:Links:plc:Groups:levels:Address', given on line 8 already" },
+            { "JSON duplicate key in another case", "\"Type\": \"int16\" }=>\"Type\": \"int16\" },\n \"Levels\": { \"Address\": \"D5\" }", "appsettings.json, line 9: duplicate key 'HostLink:Links:plc:Groups:Levels:Address', given on line 8 already" },
             { "misspelt section", "\"Mqtt\":=>\"Mqt\":", "Mqt is not a section the gateway reads; did you mean Mqtt?" },
             { "misspelt section on the command line", "--Mqt:Host=127.0.0.1", "Mqt is not a section the gateway reads; did you mean Mqtt?" },
             { "unknown section", "\"Mqtt\":=>\"Extra\": {}, \"Mqtt\":", "Extra is not a section the gateway reads" },
@@ -49,6 +49,14 @@ public sealed class GatewayStartupTests
             { "out of range", "--Mqtt:Port=70000", "Mqtt:Port must be 1-65535; it is 70000" },
             { "out of range", "--Mqtt:QueueCapacity=0", "Mqtt:QueueCapacity must be 1-10000000" },
             { "keep-alive 0", "--Mqtt:KeepAlive=0s", "Mqtt:KeepAlive must be 1s to 18:12:15" },
+            { "keep-alive 0 as a time span", "--Mqtt:KeepAlive=00:00:00", "Mqtt:KeepAlive must be 1s to 18:12:15" },
+            { "TLS server name not a host", "--Mqtt:Tls:Enabled=true --Mqtt:Tls:ServerName=broker.plant.local:8883", "Mqtt:Tls:ServerName 'broker.plant.local:8883' is not a host name or address" },
+            { "OTLP endpoint not a URL", "--OpenTelemetry:Exporter=Otlp --OTEL_EXPORTER_OTLP_ENDPOINT=collector:4317", "OTEL_EXPORTER_OTLP_ENDPOINT 'collector:4317' is not an http:// or https:// URL" },
+            { "OTLP endpoint host not an IPv4 address", "--OpenTelemetry:Exporter=Otlp --OTEL_EXPORTER_OTLP_ENDPOINT=http://127.0.0.1.5:4317", "OTEL_EXPORTER_OTLP_ENDPOINT 'http://127.0.0.1.5:4317': '127.0.0.1.5' is not a host name or address: it looks like an IPv4 address" },
+            { "durable queue size out of range", "--Mqtt:DurableQueue:MaxMegabytes=0", "Mqtt:DurableQueue:MaxMegabytes must be 1-1048576" },
+            { "durable queue age 0", "--Mqtt:DurableQueue:MaxAge=0s", "Mqtt:DurableQueue:MaxAge must be at least 1s" },
+            { "durable queue age without a unit", "--Mqtt:DurableQueue:MaxAge=7", "Mqtt:DurableQueue:MaxAge '7' has no unit" },
+            { "durable queue where nothing can be written", "--Mqtt:DurableQueue:Enabled=true --Mqtt:StateDirectory=appsettings.json/state", "Mqtt:DurableQueue:Enabled: the queue's database" },
             { "link host as a URL", "--HostLink:Links:plc:Tcp=tcp://127.0.0.1:27600", "HostLink:Links:plc:Tcp: 'tcp://127.0.0.1:27600'" },
             { "link host not an IPv4 address", "--HostLink:Links:plc:Tcp=127.0.0.1.5:27600", "HostLink:Links:plc:Tcp '127.0.0.1.5' does not name a host: it looks like an IPv4 address" },
             { "broker host not an IPv4 address", "--Mqtt:Host=127.0.0.1.5", "Mqtt:Host '127.0.0.1.5' is not a host name or address: it looks like an IPv4 address" },
@@ -156,6 +164,7 @@ public sealed class GatewayStartupTests
             string output = await stdout + await stderr;
             process.ExitCode.Should().Be(2, output);
             output.Should().Contain($"Simulator:Port {port} on 127.0.0.1 is in use by another program");
+            output.Split('\n').Where(l => l.Contains("in use", StringComparison.Ordinal)).Should().ContainSingle("one line says it: {0}", output);
             output.Should().NotMatchRegex(@"(?m)^\s+at ", "no stack trace: {0}", output).And.NotContain("Exception");
         }
         finally

@@ -28,6 +28,7 @@ public sealed class SystemdServiceTests(ITestOutputHelper output)
             "--Simulator:Memory:D100=1234",
             $"--HostLink:Links:sim:Tcp=127.0.0.1:{port.ToString(CultureInfo.InvariantCulture)}",
             "--HostLink:Links:sim:Serial:BaudRate=115200",
+            $"--HostLink:Links:sim:TurnaroundAllowance={Allowances.LosslessLineText}",
             "--HostLink:Links:sim:Groups:level:Address=D100",
             "--HostLink:Links:sim:Groups:level:Type=int16",
             "--HostLink:Links:sim:Groups:level:Interval=00:00:00.200",

@@ -47,7 +47,8 @@ public sealed class MqttConfigurationTests
 
         host.Services.GetService<MqttClientFactory>().Should().BeNull("no MQTT client can be made");
         host.Services.GetService<MqttGateway>().Should().BeNull();
-        host.Services.GetService<ITagOutput>().Should().BeNull("the links report to nobody");
+        host.Services.GetServices<ITagOutput>().Should().ContainSingle("the links report to no output but the statistics (metrics)")
+            .Which.Should().BeOfType<OmronHostLink.Gateway.Statistics.LinkStatistics>();
         host.Services.GetServices<IHostedService>().Should().NotContain(s => s is MqttGateway);
         logs.Entries.Should().NotContain(e => e.Category.StartsWith("OmronHostLink.Gateway.Mqtt", StringComparison.Ordinal));
         logs.WithEvent(GatewayLog.Events.Values).First().Message.Should().Be("plc/level: unit 0 D100 = 11");

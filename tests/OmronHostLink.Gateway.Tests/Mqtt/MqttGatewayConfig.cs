@@ -19,7 +19,7 @@ public static class MqttGatewayConfig
     {
         ["HostLink:Links:plc:Tcp"] = $"127.0.0.1:{plcPort}",
         ["HostLink:Links:plc:Serial:BaudRate"] = "115200",
-        ["HostLink:Links:plc:TurnaroundAllowance"] = "00:00:00.200",
+        ["HostLink:Links:plc:TurnaroundAllowance"] = Allowances.LosslessLineText,
         ["HostLink:Links:plc:ReadRetries"] = "1",
         ["HostLink:Links:plc:Tcp:ConnectTimeout"] = "00:00:00.500",
         ["HostLink:Links:plc:Backoff:Initial"] = "00:00:00.100",
@@ -31,7 +31,14 @@ public static class MqttGatewayConfig
         ["Mqtt:Timeout"] = "00:00:05",
         ["Mqtt:Reconnect:Initial"] = "00:00:00.100",
         ["Mqtt:Reconnect:Max"] = "00:00:00.500",
+        ["Mqtt:StateDirectory"] = NewStateDirectory(),
     };
+
+    /// <summary>
+    /// A state directory of its own for each gateway a test starts: the count of unsent messages one test leaves must not
+    /// be announced in the next one. All are deleted when the test process ends.
+    /// </summary>
+    public static string NewStateDirectory() => Directory.CreateDirectory(Path.Combine(StateRoot.Path, Guid.NewGuid().ToString("N"))).FullName;
 
     /// <summary>Adds a poll group (a tag) to the link "plc".</summary>
     public static void Group(Dictionary<string, string?> config, string name, string address, string type = "int16", int count = 1, int intervalMs = 20, bool writable = false, int unit = 0)
@@ -52,8 +59,8 @@ public static class MqttGatewayConfig
     /// <summary>The value topic of a tag on the link "plc".</summary>
     public static string Topic(string tag, int unit = 0) => $"{Prefix}/plc/{unit}/{tag}";
 
-    /// <summary>Builds the worker's host as Program.cs does, from in-memory configuration, logging to <paramref name="logs"/>.</summary>
-    public static IHost Build(Dictionary<string, string?> config, CapturingLoggerProvider logs)
+    /// <summary>Builds the worker's host as Program.cs does, from in-memory configuration, logging to <paramref name="logs"/>; <paramref name="services"/> may add to it.</summary>
+    public static IHost Build(Dictionary<string, string?> config, CapturingLoggerProvider logs, Action<IServiceCollection>? services = null)
     {
         var configuration = new ConfigurationManager();
         configuration.AddInMemoryCollection(config);
@@ -67,6 +74,7 @@ public static class MqttGatewayConfig
         builder.Logging.SetMinimumLevel(LogLevel.Debug);
         builder.Logging.AddProvider(logs);
         builder.Services.Configure<HostOptions>(o => o.ShutdownTimeout = TimeSpan.FromSeconds(10));
+        services?.Invoke(builder.Services);
         return builder.Build();
     }
 
@@ -83,6 +91,27 @@ public static class MqttGatewayConfig
             }
 
             await Task.Delay(20);
+        }
+    }
+
+    private static class StateRoot
+    {
+        public static readonly string Path = Create();
+
+        private static string Create()
+        {
+            string path = Directory.CreateTempSubdirectory("ohl-gateway-state-").FullName;
+            AppDomain.CurrentDomain.ProcessExit += (_, _) =>
+            {
+                try
+                {
+                    Directory.Delete(path, recursive: true);
+                }
+                catch (IOException)
+                {
+                }
+            };
+            return path;
         }
     }
 }

@@ -18,11 +18,16 @@ public sealed class RecordingSimulator : IAsyncDisposable
     private TcpListener? _listener;
     private CancellationTokenSource? _stopping;
     private Task? _accepting;
+    private readonly Func<Stream, CancellationToken, Task> _serve;
     private long _answers;
 
-    private RecordingSimulator(VirtualPlc plc) => Plc = plc;
+    private RecordingSimulator(VirtualPlc plc, Func<Stream, CancellationToken, Task> serve)
+    {
+        Plc = plc;
+        _serve = serve;
+    }
 
-    /// <summary>The PLC.</summary>
+    /// <summary>The PLC (the first of a line's).</summary>
     public VirtualPlc Plc { get; }
 
     /// <summary>The port on 127.0.0.1.</summary>
@@ -46,8 +51,16 @@ public sealed class RecordingSimulator : IAsyncDisposable
     /// <summary>Starts a simulator on a free port (or <paramref name="port"/>).</summary>
     public static async Task<RecordingSimulator> StartAsync(VirtualPlc plc, int port = 0)
     {
-        var simulator = new RecordingSimulator(plc);
+        var simulator = new RecordingSimulator(plc, plc.RunAsync);
         await simulator.RestartAsync(port);
+        return simulator;
+    }
+
+    /// <summary>Starts a simulator of a multidrop line (each unit answered by its own PLC) on a free port.</summary>
+    public static async Task<RecordingSimulator> StartAsync(VirtualPlcLine line)
+    {
+        var simulator = new RecordingSimulator(line.Plcs[0], line.RunAsync);
+        await simulator.RestartAsync(0);
         return simulator;
     }
 
@@ -133,7 +146,7 @@ public sealed class RecordingSimulator : IAsyncDisposable
 
             client.NoDelay = true;
             var stream = new RecordingStream(client.GetStream(), this);
-            Task session = Plc.RunAsync(stream, cancellationToken);
+            Task session = _serve(stream, cancellationToken);
             lock (_gate)
             {
                 _sessions.Add((client, session));

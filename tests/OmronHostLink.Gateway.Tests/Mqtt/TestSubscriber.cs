@@ -7,8 +7,8 @@ using MQTTnet.Protocol;
 
 namespace OmronHostLink.Gateway.Tests.Mqtt;
 
-/// <summary>A message as a test subscriber received it.</summary>
-public sealed record ReceivedMessage(string Topic, string Payload, bool Retain, string? ResponseTopic, byte[]? CorrelationData);
+/// <summary>A message as a test subscriber received it (<see cref="Bytes"/>: the payload as sent, for binary payloads).</summary>
+public sealed record ReceivedMessage(string Topic, string Payload, bool Retain, string? ResponseTopic, byte[]? CorrelationData, byte[]? Bytes = null);
 
 /// <summary>
 /// An MQTTnet client on the test's side of the broker: records what arrives on its subscriptions and waits for
@@ -35,7 +35,8 @@ public sealed class TestSubscriber : IAsyncDisposable
         _client.ApplicationMessageReceivedAsync += e =>
         {
             MqttApplicationMessage m = e.ApplicationMessage;
-            var received = new ReceivedMessage(m.Topic, Encoding.UTF8.GetString(m.Payload.ToArray()), m.Retain, m.ResponseTopic, m.CorrelationData);
+            byte[] bytes = m.Payload.ToArray();
+            var received = new ReceivedMessage(m.Topic, Encoding.UTF8.GetString(bytes), m.Retain, m.ResponseTopic, m.CorrelationData, bytes);
             lock (_messages)
             {
                 _messages.Add(received);
@@ -127,6 +128,10 @@ public sealed class TestSubscriber : IAsyncDisposable
 
         return _client.PublishAsync(builder.Build());
     }
+
+    /// <summary>Publishes a binary payload (QoS 1, not retained).</summary>
+    public Task<MqttClientPublishResult> PublishAsync(string topic, byte[] payload)
+        => _client.PublishAsync(new MqttApplicationMessageBuilder().WithTopic(topic).WithPayload(payload).WithQualityOfServiceLevel(MqttQualityOfServiceLevel.AtLeastOnce).Build());
 
     /// <summary>The payloads received on <paramref name="topic"/>, in order.</summary>
     public IReadOnlyList<string> PayloadsOn(string topic) => Messages.Where(m => m.Topic == topic).Select(m => m.Payload).ToArray();

@@ -27,7 +27,7 @@ public sealed class TagFileGatewayTests : IDisposable
     {
         ["HostLink:Links:plc:Tcp"] = $"127.0.0.1:{port}",
         ["HostLink:Links:plc:Serial:BaudRate"] = "115200",
-        ["HostLink:Links:plc:TurnaroundAllowance"] = "00:00:00.200",
+        ["HostLink:Links:plc:TurnaroundAllowance"] = Allowances.LosslessLineText,
         ["HostLink:Links:plc:Backoff:Initial"] = "00:00:00.100",
         ["HostLink:Links:plc:Backoff:Max"] = "00:00:00.200",
         ["HostLink:Links:plc:TagFiles:0:Path"] = Path.Combine(AppContext.BaseDirectory, "TagImport", "Samples", file),
@@ -65,6 +65,9 @@ public sealed class TagFileGatewayTests : IDisposable
         plc.WriteWords("D101", [unchecked((ushort)-5)]);
         plc.WriteWords("D102", [0x0042]);
         plc.WriteWords("H10", [0x0008]);
+        plc.WriteWords("D106", [0x7960, 0xFFFE]); // -100000, low word first
+        plc.WriteWords("D110", [0x0000, 0x41AC]); // 21.5
+        plc.WriteWords("A5", [0x8000]);
         await using var simulator = new TcpSimulatorHost(plc, new IPEndPoint(IPAddress.Loopback, 0));
         await simulator.StartAsync();
         var logs = new CapturingLoggerProvider();
@@ -73,7 +76,10 @@ public sealed class TagFileGatewayTests : IDisposable
         await host.StartAsync();
         try
         {
-            string[] expected = ["Setpoint", "Offset", "Batch", "Recipe", "HoldBit", "Product", "TimerDone", "LinkWord", "Inputs", "TimerPV", "Total", "Matrix"];
+            // Every row of the export, every address form Kepware's Host Link driver documents.
+            string[] expected = File.ReadAllLines(Path.Combine(AppContext.BaseDirectory, "TagImport", "Samples", "kepware-c200h.csv"))
+                .Skip(1).Select(l => l.Split(',')[0].Trim('"')).ToArray();
+            expected.Should().HaveCount(22);
             var clock = Stopwatch.StartNew();
             while (expected.Any(g => LastValue(logs, g) is null) && clock.Elapsed < Patience)
             {
@@ -84,8 +90,12 @@ public sealed class TagFileGatewayTests : IDisposable
             LastValue(logs, "Offset").Should().Be("-5", "DM0101 (Short) is D101 as int16");
             LastValue(logs, "Batch").Should().Be("42", "DM0102 (BCD) reads 0x0042 as 42");
             LastValue(logs, "Recipe").Should().Be("[0x0001, 0x0002, 0x0003, 0x0004]", "DM0120 [4] (Word Array) is four words");
-            expected.Where(g => LastValue(logs, g) is null).Should().BeEmpty("every row of the export is a running tag (LR, IR and TC areas included)");
+            expected.Where(g => LastValue(logs, g) is null).Should().BeEmpty("every row of the export is a running tag (HR, AR, LR, IR and TC areas included)");
             LastValue(logs, "HoldBit")!.Should().BeOneOf("1", "True", "true");
+            LastValue(logs, "Position").Should().Be("-100000", "DM0106 (Long) is two words, low word first");
+            LastValue(logs, "Temperature").Should().Be("21.5", "DM0110 (Float) is a REAL");
+            LastValue(logs, "AuxBit")!.Should().BeOneOf("1", "True", "true");
+            LastValue(logs, "Aux").Should().Be("0x8000", "AR05 is A5");
         }
         finally
         {

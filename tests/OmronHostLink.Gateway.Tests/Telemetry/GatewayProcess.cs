@@ -85,6 +85,34 @@ internal sealed class GatewayProcess : IAsyncDisposable
         return true;
     }
 
+    /// <summary>Waits until an output line satisfies <paramref name="predicate"/>; false after <paramref name="timeout"/> or if the worker exited.</summary>
+    public async Task<bool> WaitForLineAsync(Func<string, bool> predicate, TimeSpan timeout)
+    {
+        var clock = Stopwatch.StartNew();
+        while (true)
+        {
+            bool found;
+            lock (_output)
+            {
+                found = _output.Any(predicate);
+            }
+
+            if (found || _process.HasExited || clock.Elapsed > timeout)
+            {
+                return found;
+            }
+
+            await Task.Delay(50);
+        }
+    }
+
+    /// <summary>Kills the gateway at once (SIGKILL on Linux: none of its shutdown code runs) and waits until it is gone.</summary>
+    public async Task KillAsync()
+    {
+        _process.Kill();
+        await _process.WaitForExitAsync();
+    }
+
     public async ValueTask DisposeAsync()
     {
         if (!_process.HasExited)

@@ -64,7 +64,7 @@ public sealed class OlderFamilyAddressTests
         await using var plc = new ScriptedPlc(plcEnd, f => f.StartsWith("@00RL00100001", StringComparison.Ordinal)
             ? new Reply(TestFrames.Final("@00RL00" + "1234"))
             : null);
-        await using var client = HostLinkClient.ForStream(host, new HostLinkClientOptions { LineTiming = new LineTiming(115200, 11), ReadRetries = 0 });
+        await using var client = HostLinkClient.ForStream(host, new HostLinkClientOptions { LineTiming = new LineTiming(115200, 11), TurnaroundAllowance = Allowances.LosslessLine, ReadRetries = 0 });
 
         var words = await client.ReadWordsAsync("LR10", 1);
 
@@ -79,7 +79,7 @@ public sealed class OlderFamilyAddressTests
         (Stream host, Stream plcEnd) = InMemoryLink.CreatePair();
         using var stop = new CancellationTokenSource();
         _ = plc.RunAsync(plcEnd, stop.Token);
-        await using (var client = HostLinkClient.ForStream(host, new HostLinkClientOptions { LineTiming = new LineTiming(115200, 11) }))
+        await using (var client = HostLinkClient.ForStream(host, new HostLinkClientOptions { LineTiming = new LineTiming(115200, 11), TurnaroundAllowance = Allowances.LosslessLine }))
         {
             await client.WriteWordsAsync("LR10", new ushort[] { 0xBEEF, 0x0102 });
 

@@ -69,20 +69,20 @@ public class PlcAddressRangeTests
     public void C_mode_cannot_reach_the_work_area(bool forWrite)
     {
         Ensure("W30", 1, HostLinkCommandSet.CMode, forWrite).Should().Throw<ArgumentException>()
-            .WithMessage("W30: the work area (W) is not reachable with C-mode commands; use FINS.");
+            .WithMessage("W30: the work area (W) is not reachable with C-mode commands; use FINS: set HostLinkClientOptions.CommandSet = HostLinkCommandSet.Fins, or go through a FINS view of the unit, such as plc.Unit(0, HostLinkCommandSet.Fins).");
         Ensure("W30.06", 1, HostLinkCommandSet.CMode, forWrite).Should().Throw<ArgumentException>().WithMessage("W30.06: *use FINS*");
         Ensure("W30", 1, HostLinkCommandSet.Fins, forWrite).Should().NotThrow();
     }
 
     [Theory]
-    [InlineData("D10000", 1, false, "D10000 is beyond the DM area (0–9999) reachable with C-mode RD; use FINS.*")]
-    [InlineData("D10000", 1, true, "D10000 is beyond the DM area (0–9999) reachable with C-mode WD; use FINS.*")]
-    [InlineData("D32767.05", 1, false, "D32767 is beyond the DM area (0–9999) reachable with C-mode RD; use FINS.*")]
-    [InlineData("D9995", 10, false, "10 words from D9995 reach D10004, beyond the DM area (0–9999) reachable with C-mode RD; use FINS or transfer fewer words.*")]
-    [InlineData("E3_10000", 1, false, "E3_10000 is beyond the EM area (0–9999) reachable with C-mode RE; use FINS.*")]
+    [InlineData("D10000", 1, false, "D10000 is beyond the DM area (0–9999) reachable with C-mode RD; use FINS: set HostLinkClientOptions.CommandSet = HostLinkCommandSet.Fins, *")]
+    [InlineData("D10000", 1, true, "D10000 is beyond the DM area (0–9999) reachable with C-mode WD; use FINS: set HostLinkClientOptions.CommandSet = HostLinkCommandSet.Fins, *")]
+    [InlineData("D32767.05", 1, false, "D32767 is beyond the DM area (0–9999) reachable with C-mode RD; use FINS: set HostLinkClientOptions.CommandSet = HostLinkCommandSet.Fins, *")]
+    [InlineData("D9995", 10, false, "10 words from D9995 reach D10004, beyond the DM area (0–9999) reachable with C-mode RD; transfer fewer words, or use FINS: set HostLinkClientOptions.CommandSet = HostLinkCommandSet.Fins, *")]
+    [InlineData("E3_10000", 1, false, "E3_10000 is beyond the EM area (0–9999) reachable with C-mode RE; use FINS: set HostLinkClientOptions.CommandSet = HostLinkCommandSet.Fins, *")]
     [InlineData("E3_9999", 2, true, "2 words from E3_9999 reach E3_10000, beyond the EM area (0–9999) reachable with C-mode WE*")]
-    [InlineData("T2048", 1, false, "T2048 is beyond the timer numbers (0–2047) reachable with C-mode RC; use FINS.*")]
-    [InlineData("C2048", 1, true, "C2048 is beyond the counter numbers (0–2047) reachable with C-mode WC; use FINS.*")]
+    [InlineData("T2048", 1, false, "T2048 is beyond the timer numbers (0–2047) reachable with C-mode RC; use FINS: set HostLinkClientOptions.CommandSet = HostLinkCommandSet.Fins, *")]
+    [InlineData("C2048", 1, true, "C2048 is beyond the counter numbers (0–2047) reachable with C-mode WC; use FINS: set HostLinkClientOptions.CommandSet = HostLinkCommandSet.Fins, *")]
     [InlineData("C2000", 100, false, "100 words from C2000 reach C2099, beyond the counter numbers (0–2047)*")]
     public void C_mode_limits_are_named_in_the_message(string address, int count, bool forWrite, string message)
     {

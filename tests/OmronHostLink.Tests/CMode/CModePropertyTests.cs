@@ -3,7 +3,6 @@ using System.Text;
 using OmronHostLink.Protocol;
 using OmronHostLink.Protocol.CMode;
 using OmronHostLink.Tests.Infrastructure;
-using OmronHostLink.Tests.Vectors;
 
 namespace OmronHostLink.Tests.CMode;
 
@@ -28,8 +27,7 @@ public sealed class CModePropertyTests
             case 3:
             {
                 CModeArea area = areas[r.Next(areas.Length)];
-                int first = CModeAreaInfo.FirstWritable(area);
-                int begin = r.Next(first, CModeAreaInfo.Size(area));
+                int begin = r.Next(CModeAreaInfo.Size(area));
                 int n = r.Next(1, Math.Min(200, CModeAreaInfo.Size(area) - begin) + 1);
                 ushort[] words = Enumerable.Range(0, n).Select(_ => (ushort)r.Next(65536)).ToArray();
                 return new AreaWriteCommand(area, begin, words, area == CModeArea.Em ? r.Next(13) : 0);

@@ -2,7 +2,6 @@ using System.Buffers;
 using System.Text;
 using OmronHostLink.Protocol;
 using OmronHostLink.Protocol.CMode;
-using OmronHostLink.Tests.Vectors;
 
 namespace OmronHostLink.Tests.CMode;
 

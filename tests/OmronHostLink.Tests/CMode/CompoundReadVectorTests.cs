@@ -1,6 +1,5 @@
 using System.Text;
 using FluentAssertions;
-using OmronHostLink.Cli;
 using OmronHostLink.Protocol;
 using OmronHostLink.Protocol.CMode;
 using OmronHostLink.Simulator;
@@ -10,27 +9,16 @@ using Xunit;
 namespace OmronHostLink.Tests.CMode;
 
 /// <summary>
-/// QQ frames written by hand from the command and response formats of the manuals (the FCS computed separately, not
-/// with this library): W342 4-3-35 REGISTER I/O MEMORY – QQMR and 4-3-36 READ I/O MEMORY – QQIR (p146–147 of the
-/// 07-2009 edition; end codes p105: QQMR 00 13 14 15 18 21 A3–A8, QQIR 00 13 14 18 19); C200HS operation manual 11-3-33
-/// COMPOUND COMMAND – QQ (p428–429); CPM1 programming manual 4-5-30 (p302); CQM1H programming manual 6-5-34 (p470–471).
-/// Item: read area (4 characters, spaces filled: <c>CIO </c>, <c>DM  </c>, <c>TIM </c>), word (4 decimal digits), data
-/// format (bit <c>00</c>–<c>15</c> or <c>CH</c>), items separated by <c>,</c>. QQIR answer: the items in registration
-/// order, separated by <c>,</c>: a bit as 0/1, a word as four hex digits, a timer/counter PV as its Completion Flag followed
-/// by the PV. The manuals show formats only; these frames instantiate them.
+/// QQ, the compound read, against the frames of the manuals (<see cref="CompoundReadFrames"/>): written, parsed, read
+/// and answered by the simulator as they show.
 /// </summary>
 public class CompoundReadVectorTests
 {
-    // CIO 1.05 (bit), DM 1000 (word), TIM 5 (CH: Completion Flag and PV).
-    private const string RegisterFrame = "@00QQMRCIO 000105,DM  1000CH,TIM 0005CH43*\r";
-    private const string RegisterAnswer = "@00QQMR005F*\r";
-    private const string ReadFrame = "@00QQIR5B*\r";
-
-    // CIO 1.05 on, DM 1000 = 1234 hex, TIM 5 flag off with PV 0042.
-    private const string ReadAnswer = "@00QQIR001,1234,0004258*\r";
-
-    // W342 end code 19 (not executable): QQIR with nothing registered.
-    private const string NothingRegistered = "@00QQIR1953*\r";
+    private const string RegisterFrame = CompoundReadFrames.Register;
+    private const string RegisterAnswer = CompoundReadFrames.RegisterAnswer;
+    private const string ReadFrame = CompoundReadFrames.Read;
+    private const string ReadAnswer = CompoundReadFrames.ReadAnswer;
+    private const string NothingRegistered = CompoundReadFrames.NothingRegistered;
 
     private static readonly CompoundItem[] Items =
     [
@@ -112,28 +100,6 @@ public class CompoundReadVectorTests
         // One registration per unit, lost when the PLC restarts.
         plc.Restart();
         Framed(responder.Respond(Encoding.ASCII.GetBytes(ReadFrame[..^4]))!).Should().Be(NothingRegistered);
-    }
-
-    [Fact]
-    public void Explain_decodes_both_commands_and_both_answers()
-    {
-        FrameExplanation register = FrameExplainer.Explain(RegisterFrame, null);
-        register.Name.Should().Be("REGISTER I/O MEMORY (QQMR)");
-        register.IsResponse.Should().BeFalse();
-        register.Fields["items"].Should().BeEquivalentTo(new[] { "CIO 000105", "DM  1000CH", "TIM 0005CH" });
-
-        FrameExplanation answer = FrameExplainer.Explain(ReadAnswer, null);
-        answer.Name.Should().Be("READ I/O MEMORY (QQIR)");
-        answer.IsResponse.Should().BeTrue();
-        answer.EndCode.Should().Be("00");
-        answer.Fields["items"].Should().BeEquivalentTo(new[] { "1", "1234", "00042" });
-        answer.Problems.Should().BeEmpty();
-
-        FrameExplanation refused = FrameExplainer.Explain(NothingRegistered, true);
-        refused.EndCode.Should().Be("19");
-        refused.Problems.Should().BeEmpty();
-
-        FrameExplainer.Explain(RegisterAnswer, true).EndCode.Should().Be("00");
     }
 
     private static EndCode Refusal(string text)

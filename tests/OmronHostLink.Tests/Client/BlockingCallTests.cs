@@ -23,7 +23,7 @@ public sealed class BlockingCallTests
 
     /// <summary>
     /// One call per public async method of <see cref="HostLinkUnit"/> (the C-mode client, or a FINS view of the same PLC
-    /// for the FINS services), in an order the simulator accepts.
+    /// for the FINS services and bit writes), in an order the simulator accepts.
     /// </summary>
     private static IEnumerable<(string Method, Func<HostLinkUnit, HostLinkUnit, Task> Call)> Calls() =>
     [
@@ -52,11 +52,11 @@ public sealed class BlockingCallTests
         ("ReadBcdAsync", (c, _) => Expect(c.ReadBcdAsync("D238"), v => v.Should().Be(1234))),
         ("WriteStringAsync", (c, _) => c.WriteStringAsync("D240", "LOT42")),
         ("ReadStringAsync", (c, _) => Expect(c.ReadStringAsync("D240", 5), v => v.Should().Be("LOT42"))),
-        ("WriteBitAsync", (c, _) => c.WriteBitAsync("CIO 10.03", true)),
-        ("WriteBitAsync", (c, _) => c.WriteBitAsync(PlcAddress.Parse("CIO 10.04"), true)),
+        ("WriteBitAsync", (_, f) => f.WriteBitAsync("CIO 10.03", true)),
+        ("WriteBitAsync", (_, f) => f.WriteBitAsync(PlcAddress.Parse("CIO 10.04"), true)),
         ("ReadBitAsync", (c, _) => Expect(c.ReadBitAsync("CIO 10.03"), v => v.Should().BeTrue())),
         ("ReadBitAsync", (c, _) => Expect(c.ReadBitAsync(PlcAddress.Parse("CIO 10.05")), v => v.Should().BeFalse())),
-        ("WriteBitsAsync", (c, _) => c.WriteBitsAsync(PlcAddress.Parse("CIO 11.00"), new[] { true, false, true })),
+        ("WriteBitsAsync", (_, f) => f.WriteBitsAsync(PlcAddress.Parse("CIO 11.00"), new[] { true, false, true })),
         ("ReadBitsAsync", (c, _) => Expect(c.ReadBitsAsync(PlcAddress.Parse("CIO 11.00"), 3), v => v.Should().Equal(true, false, true))),
         ("ReadTagsAsync", (c, _) => Expect(c.ReadTagsAsync(new[] { "D100", "D200:float" }), v => v.Should().HaveCount(2))),
         ("ReadTagsAsync", (c, _) => Expect(c.ReadTagsAsync(new[] { PlcTag.Parse("D104") }), v => v.Should().HaveCount(1))),
@@ -136,7 +136,7 @@ public sealed class BlockingCallTests
     public async Task A_refusal_reaches_the_blocked_caller_as_the_library_exception()
     {
         await using InProcessLine line = InProcessLine.Start(
-            new HostLinkClientOptions { TurnaroundAllowance = TimeSpan.FromMilliseconds(300), ReadRetries = 0 },
+            new HostLinkClientOptions { TurnaroundAllowance = Allowances.LosslessLine, ReadRetries = 0 },
             new OmronHostLink.Simulator.VirtualPlcOptions { InitialMode = PlcMode.Run });
         using var ui = new SingleThreadContext();
         Exception? direct = null;

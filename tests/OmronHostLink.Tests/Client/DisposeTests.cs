@@ -138,6 +138,40 @@ public sealed class DisposeTests
         typeof(IDisposable).IsAssignableFrom(typeof(IHostLinkClient)).Should().BeTrue();
     }
 
+    [Fact]
+    public async Task Dispose_during_an_exchange_on_a_serial_port_fails_it_promptly_and_closes_the_port()
+    {
+        await using SocatPtyPair pty = await SocatPtyPair.StartAsync();
+        using Stream plcEnd = await SocatPtyPair.OpenAsync(pty.PathB);
+        string device = new FileInfo(pty.PathA).ResolveLinkTarget(returnFinalTarget: true)!.FullName;
+        var client = HostLinkClient.ForSerialPort(pty.PathA, Patient);
+        Task<ushort[]> read = client.ReadWordsAsync("D100", 2);
+        await ReadFrameAsync(plcEnd);
+        OpenHandles(device).Should().Be(1, "the client holds the port during the exchange");
+        read.IsCompleted.Should().BeFalse("the silent PLC has not answered");
+
+        client.Dispose();
+
+        (await FluentActions.Awaiting(() => read.WaitAsync(Prompt)).Should().ThrowAsync<HostLinkConnectionException>())
+            .Which.InnerException.Should().BeOfType<ObjectDisposedException>();
+        SpinWait.SpinUntil(() => OpenHandles(device) == 0, Prompt).Should().BeTrue("Dispose closed the port");
+    }
+
+    /// <summary>How many of this process's file descriptors are open on <paramref name="device"/> (Linux /proc).</summary>
+    private static int OpenHandles(string device)
+        => new DirectoryInfo("/proc/self/fd").EnumerateFileSystemInfos()
+            .Count(fd =>
+            {
+                try
+                {
+                    return fd.LinkTarget == device;
+                }
+                catch (IOException)
+                {
+                    return false;
+                }
+            });
+
     private static async Task ReceiveCommandAsync(Socket plc)
     {
         var buffer = new byte[64];

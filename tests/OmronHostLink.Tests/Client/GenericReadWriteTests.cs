@@ -26,7 +26,13 @@ public sealed class GenericReadWriteTests
     [MemberData(nameof(OrdersAndCommandSets))]
     public async Task Every_type_round_trips_one_value_and_several(WordOrder order, HostLinkCommandSet commandSet)
     {
-        await using InProcessLine line = Start(order, commandSet);
+        // C-mode has no bit write: the C-mode client writes its bits by reading and writing back the words.
+        await using InProcessLine line = InProcessLine.Start(new HostLinkClientOptions
+        {
+            WordOrder = order,
+            CommandSet = commandSet,
+            AllowReadModifyWriteBits = commandSet == HostLinkCommandSet.CMode,
+        });
         HostLinkUnit plc = line.Client;
 
         await RoundTrip(plc, "CIO 10.14", true, false, true);

@@ -125,7 +125,7 @@ public sealed class WatchTests
         await using HostLinkClient client = HostLinkClient.ForTcp("127.0.0.1", port, new HostLinkClientOptions
         {
             LineTiming = new LineTiming(115200, 11),
-            TurnaroundAllowance = TimeSpan.FromMilliseconds(300),
+            TurnaroundAllowance = Allowances.LosslessLine,
         }, connectTimeout: TimeSpan.FromSeconds(2));
         var clock = new SteppingClock();
         var retry = TimeSpan.FromSeconds(5);

@@ -1,6 +1,5 @@
 using OmronHostLink.Protocol;
 using OmronHostLink.Protocol.Fins;
-using OmronHostLink.Tests.Vectors;
 
 namespace OmronHostLink.Tests.Fins;
 

@@ -1,7 +1,6 @@
 using System.Text;
 using OmronHostLink.Protocol;
 using OmronHostLink.Protocol.Fins;
-using OmronHostLink.Tests.Vectors;
 
 namespace OmronHostLink.Tests.Fins;
 

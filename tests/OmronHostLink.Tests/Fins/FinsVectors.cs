@@ -1,4 +1,3 @@
-using OmronHostLink.Tests.Vectors;
 
 namespace OmronHostLink.Tests.Fins;
 

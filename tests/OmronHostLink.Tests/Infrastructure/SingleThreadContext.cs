@@ -19,6 +19,12 @@ internal sealed class SingleThreadContext : SynchronizationContext, IDisposable
         _thread.Start();
     }
 
+    /// <summary>
+    /// Called with an exception a callback threw, as WinForms raises <c>Application.ThreadException</c> and goes on
+    /// pumping; without it such an exception ends the pumping thread (and the process).
+    /// </summary>
+    public Action<Exception>? ThreadException { get; set; }
+
     /// <summary>The pumping thread's managed id.</summary>
     public int ThreadId => _thread.ManagedThreadId;
 
@@ -92,7 +98,20 @@ internal sealed class SingleThreadContext : SynchronizationContext, IDisposable
         SetSynchronizationContext(this);
         foreach ((SendOrPostCallback callback, object? state) in _queue.GetConsumingEnumerable())
         {
-            callback(state);
+            if (ThreadException is not { } report)
+            {
+                callback(state);
+                continue;
+            }
+
+            try
+            {
+                callback(state);
+            }
+            catch (Exception e)
+            {
+                report(e);
+            }
         }
     }
 }

@@ -11,10 +11,13 @@ public sealed class LinkExchangeTests
     private const string RdD100x3 = "@00RD0100000354*\r"; // roof_rd_d100_3
     private const string Rd3WordsResponse = "@00RD00000AFFFF80002F*\r"; // c_rd_resp_3w
 
-    private static HostLinkClientOptions FastOptions(int retries = 0) => new()
+    // The allowance of the tests whose PLC stays silent or answers late: the deadline is what they check.
+    private static readonly TimeSpan DeadlineAllowance = TimeSpan.FromMilliseconds(150);
+
+    private static HostLinkClientOptions FastOptions(int retries = 0, TimeSpan? allowance = null) => new()
     {
         LineTiming = new LineTiming(115200, 11),
-        TurnaroundAllowance = TimeSpan.FromMilliseconds(150),
+        TurnaroundAllowance = allowance ?? Allowances.LosslessLine,
         ReadRetries = retries,
     };
 
@@ -100,7 +103,7 @@ public sealed class LinkExchangeTests
     [Fact]
     public async Task A_frame_cut_before_its_CR_times_out()
     {
-        var (client, plc) = Connect(f => f == RdD100x3 ? new Reply(Rd3WordsResponse.TrimEnd('\r')) : null);
+        var (client, plc) = Connect(f => f == RdD100x3 ? new Reply(Rd3WordsResponse.TrimEnd('\r')) : null, FastOptions(allowance: DeadlineAllowance));
         await using var _ = plc;
         await using var __ = client;
 
@@ -149,7 +152,7 @@ public sealed class LinkExchangeTests
 
             // The first answer comes long after the client's deadline; the second is the fresh one.
             return Interlocked.Increment(ref calls) == 1 ? new Reply(Rd3WordsResponse, TimeSpan.FromMilliseconds(400)) : new Reply(fresh);
-        }, FastOptions(retries: 2));
+        }, FastOptions(retries: 2, allowance: DeadlineAllowance));
         await using var _ = plc;
         await using var __ = client;
 
@@ -314,7 +317,7 @@ public sealed class LinkExchangeTests
     [Fact]
     public async Task A_silent_unit_times_out_within_its_deadline()
     {
-        var (client, plc) = Connect(_ => Reply.None);
+        var (client, plc) = Connect(_ => Reply.None, FastOptions(allowance: DeadlineAllowance));
         await using var _ = plc;
         await using var __ = client;
         var clock = System.Diagnostics.Stopwatch.StartNew();
@@ -363,7 +366,7 @@ public sealed class LinkExchangeTests
             }
 
             return null;
-        });
+        }, FastOptions(allowance: DeadlineAllowance));
         await using var _ = plc;
         await using var __ = client;
 

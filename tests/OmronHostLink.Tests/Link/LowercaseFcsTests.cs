@@ -22,7 +22,7 @@ public sealed class LowercaseFcsTests
         await using var client = HostLinkClient.ForStream(host, new HostLinkClientOptions
         {
             LineTiming = new LineTiming(115200, 11),
-            TurnaroundAllowance = InProcessLine.InMemoryAllowance,
+            TurnaroundAllowance = Allowances.LosslessLine,
             ReadRetries = 0,
         });
 

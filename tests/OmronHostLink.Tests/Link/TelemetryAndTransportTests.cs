@@ -15,8 +15,8 @@ public sealed class TelemetryAndTransportTests
     private static HostLinkClientOptions Fast(ILoggerFactory? logging = null) => new()
     {
         LineTiming = new LineTiming(115200, 11),
-        // Generous: these tests are about what is counted and logged, not about timing, and share the machine.
-        TurnaroundAllowance = TimeSpan.FromSeconds(1),
+        // These tests are about what is counted and logged, not about timing.
+        TurnaroundAllowance = Allowances.LosslessLine,
         ReadRetries = 0,
         LoggerFactory = logging,
     };

@@ -137,7 +137,7 @@ public sealed class PlcModelProfileTests
         profile.Extent(PlcArea.Timer).Should().Be("T0–T127");
         profile.Has(PlcArea.Em).Should().BeFalse();
         profile.SupportsFins.Should().BeFalse();
-        profile.SupportsCompoundRead.Should().BeFalse("the CPM2A's QQ page was not found, so QQ is not assumed for code 11");
+        profile.SupportsCompoundRead.Should().BeTrue("every model of code 11 lists QQ (CQM1/CPM1 manual p388, CQM1H p470, W353 p302)");
         FluentActions.Invoking(() => profile.EnsureRange(PlcAddress.Parse("D2000"), 1, false)).Should().Throw<ArgumentOutOfRangeException>();
     }
 

@@ -29,7 +29,7 @@ public sealed class ReadTagsTests
         (Stream host, Stream plcEnd) = InMemoryLink.CreatePair();
         using var stop = new CancellationTokenSource();
         Task session = plc.RunAsync(plcEnd, stop.Token);
-        await using HostLinkClient client = HostLinkClient.ForStream(host, new HostLinkClientOptions { CommandSet = protocol, LineTiming = new LineTiming(115200, 11) });
+        await using HostLinkClient client = HostLinkClient.ForStream(host, new HostLinkClientOptions { CommandSet = protocol, LineTiming = new LineTiming(115200, 11), TurnaroundAllowance = Allowances.LosslessLine });
 
         var tags = new[]
         {
@@ -58,7 +58,7 @@ public sealed class ReadTagsTests
         (Stream host, Stream plcEnd) = InMemoryLink.CreatePair();
         using var stop = new CancellationTokenSource();
         Task session = plc.RunAsync(plcEnd, stop.Token);
-        await using HostLinkClient client = HostLinkClient.ForStream(host, new HostLinkClientOptions { CommandSet = protocol, LineTiming = new LineTiming(115200, 11) });
+        await using HostLinkClient client = HostLinkClient.ForStream(host, new HostLinkClientOptions { CommandSet = protocol, LineTiming = new LineTiming(115200, 11), TurnaroundAllowance = Allowances.LosslessLine });
 
         PlcTagValue[] values = await client.ReadTagsAsync(new[] { "T5:bit", "T5", "T6:bit", "T8:bit", "C7:bit", "C8:bit" });
         values.Select(v => v.Value).Should().Equal(true, (ushort)0x0123, false, true, true, false);
@@ -74,7 +74,7 @@ public sealed class ReadTagsTests
         (Stream host, Stream plcEnd) = InMemoryLink.CreatePair();
         using var stop = new CancellationTokenSource();
         Task session = plc.RunAsync(plcEnd, stop.Token);
-        await using HostLinkClient client = HostLinkClient.ForStream(host, new HostLinkClientOptions { LineTiming = new LineTiming(115200, 11) });
+        await using HostLinkClient client = HostLinkClient.ForStream(host, new HostLinkClientOptions { LineTiming = new LineTiming(115200, 11), TurnaroundAllowance = Allowances.LosslessLine });
         ReadPlan plan = new ReadPlanner().Plan(new[] { new PlcTag("D0"), new PlcTag("D2") });
         for (ushort i = 0; i < 3; i++)
         {

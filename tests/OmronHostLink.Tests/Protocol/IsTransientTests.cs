@@ -81,7 +81,7 @@ public sealed class IsTransientTests
     [Fact]
     public async Task A_silent_plc_gives_a_transient_timeout()
     {
-        var (client, plc) = Connect(_ => null);
+        var (client, plc) = Connect(_ => null, TimeSpan.FromMilliseconds(150));
         await using var _ = plc;
         await using var __ = client;
 
@@ -114,13 +114,14 @@ public sealed class IsTransientTests
         e.Which.IsTransient.Should().Be(transient);
     }
 
-    private static (HostLinkClient Client, ScriptedPlc Plc) Connect(Func<string, Reply?> handler)
+    /// <summary>A client and a scripted PLC; the allowance is short only where the PLC stays silent.</summary>
+    private static (HostLinkClient Client, ScriptedPlc Plc) Connect(Func<string, Reply?> handler, TimeSpan? allowance = null)
     {
         (Stream host, Stream plc) = InMemoryLink.CreatePair();
         var options = new HostLinkClientOptions
         {
             LineTiming = new LineTiming(115200, 11),
-            TurnaroundAllowance = TimeSpan.FromMilliseconds(150),
+            TurnaroundAllowance = allowance ?? Allowances.LosslessLine,
             ReadRetries = 0,
         };
         return (HostLinkClient.ForStream(host, options), new ScriptedPlc(plc, handler));

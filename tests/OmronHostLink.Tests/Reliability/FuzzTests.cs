@@ -7,7 +7,6 @@ using OmronHostLink.Protocol.CMode;
 using OmronHostLink.Protocol.Fins;
 using OmronHostLink.Simulator;
 using OmronHostLink.Simulator.Protocol;
-using OmronHostLink.Tests.Vectors;
 using Xunit.Abstractions;
 
 namespace OmronHostLink.Tests.Reliability;

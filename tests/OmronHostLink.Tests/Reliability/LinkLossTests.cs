@@ -22,7 +22,7 @@ public sealed class LinkLossTests
     private static HostLinkClientOptions Options => new()
     {
         LineTiming = new LineTiming(115200, 11),
-        TurnaroundAllowance = TimeSpan.FromMilliseconds(500),
+        TurnaroundAllowance = Allowances.LosslessLine,
     };
 
     [Fact]

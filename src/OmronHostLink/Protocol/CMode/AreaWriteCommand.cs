@@ -9,7 +9,7 @@ internal sealed class AreaWriteCommand : CModeCommand
     private readonly ushort[] _words;
 
     /// <summary>Creates the command; the range is checked against the area's C-mode limits.</summary>
-    /// <exception cref="ArgumentOutOfRangeException">The range is outside what C-mode reaches (AR below A448 is read-only).</exception>
+    /// <exception cref="ArgumentOutOfRangeException">The range is outside what C-mode reaches.</exception>
     public AreaWriteCommand(CModeArea area, int begin, ReadOnlySpan<ushort> words, int bank = 0)
     {
         CModeAreaInfo.CheckRange(area, begin, words.Length, bank, write: true);

@@ -97,9 +97,6 @@ internal static class CModeAreaInfo
         return BankLength(area);
     }
 
-    /// <summary>The lowest word a write may start at (AR words below A448 are read-only).</summary>
-    public static int FirstWritable(CModeArea area) => area == CModeArea.Auxiliary ? PlcAreaInfo.FirstWritableAuxiliaryWord : 0;
-
     /// <summary>Characters a read response spends on one entry: 4 hex digits a word, 1 character a completion flag.</summary>
     public static int CharactersPerEntry(CModeArea area) => area == CModeArea.TimerCounterStatus ? 1 : 4;
 
@@ -123,7 +120,9 @@ internal static class CModeAreaInfo
     {
         string header = write ? WriteHeader(area) : ReadHeader(area);
         int size = Size(area);
-        int first = write ? FirstWritable(area) : 0;
+        // Which words a model lets a host write is the model's (A0–A447 on CS/CJ, every AR word on the C series):
+        // the client checks it against the PLC's profile, the simulator against the model it emulates.
+        const int first = 0;
         if (area == CModeArea.Em && (uint)bank > MaxEmBank)
         {
             throw new ArgumentOutOfRangeException(nameof(bank), bank, $"EM bank {bank:X} is not reachable with C-mode {header}; banks 0-C exist.");

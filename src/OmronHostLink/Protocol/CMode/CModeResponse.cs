@@ -127,8 +127,10 @@ internal static class CModeResponse
             _ => throw new HostLinkFrameException(FrameError.Malformed, $"MS status {status:X4} names no operating mode (bits 9-8 = 01).", data),
         };
 
+        // Some units send the 16 message characters as spaces when no FAL/FALS has run (a Serial Communications Unit
+        // in Host Link-compatible mode B, W336 p301); that is no message, as when they are left out.
         string? message = data.Length == 20 ? Encoding.ASCII.GetString(data.Slice(4, 16).ToArray()).TrimEnd() : null;
-        return new PlcStatus(mode, status, message);
+        return new PlcStatus(mode, status, string.IsNullOrEmpty(message) ? null : message);
     }
 
     /// <summary>The MS status word for a mode (bits 9-8), as a PLC writes it.</summary>

@@ -116,7 +116,7 @@ internal readonly struct CompoundItem : IEquatable<CompoundItem>
             PlcArea.Counter => CompoundArea.Counter,
             PlcArea.Dm => CompoundArea.Dm,
             PlcArea.Em => CompoundArea.Em,
-            _ => throw new ArgumentException($"{address} is in the {PlcAreaInfo.Name(address.Area)}, which C-mode cannot reach; use FINS.", nameof(address)),
+            _ => throw new ArgumentException($"{address} is in the {PlcAreaInfo.Name(address.Area)}, which C-mode cannot reach; {CommandSetAdvice.UseFins()}.", nameof(address)),
         };
         return address.IsBit && ReadsBits(address.Area) ? ForBit(area, address.Word, address.Bit, address.Bank) : ForWord(area, address.Word, address.Bank);
     }

@@ -1,0 +1,284 @@
+using System.Buffers;
+using System.Threading.Channels;
+using Microsoft.Extensions.Hosting;
+using Microsoft.Extensions.Logging;
+using Microsoft.Extensions.Options;
+using MQTTnet;
+using MQTTnet.Formatter;
+using MQTTnet.Protocol;
+using OmronHostLink.Gateway.Mqtt;
+
+namespace OmronHostLink.Gateway.Sparkplug;
+
+/// <summary>
+/// The edge node's MQTT session (Sparkplug B 3.0): it connects with the NDEATH of a new <c>bdSeq</c> as its will,
+/// subscribes to its NCMD and DCMD topics, publishes NBIRTH and the DBIRTH of every answering unit, then the node's
+/// deaths, births and data as <see cref="SparkplugNode"/> gives them, in order, one publisher. An NCMD
+/// <c>Node Control/Rebirth</c> is answered with new births; a DCMD is handed to the <see cref="SparkplugCommands"/>.
+/// When the broker goes away it reconnects with capped exponential backoff (a new <c>bdSeq</c>, new births; data meanwhile
+/// is not kept, a host application reads the state from the births). On a clean stop it publishes NDEATH itself.
+/// Births and data go out at QoS 0, not retained; NDEATH at QoS 1, as the specification asks.
+/// </summary>
+public sealed class SparkplugEdgeNode : IHostedService, IAsyncDisposable
+{
+    private readonly SparkplugOptions _options;
+    private readonly SparkplugNode _node;
+    private readonly SparkplugCommands _commands;
+    private readonly MqttClientFactory _factory = new();
+    private readonly ILogger _logger;
+    private readonly TimeProvider _time;
+    private readonly string _broker;
+    private readonly Channel<bool> _wake = Channel.CreateBounded<bool>(new BoundedChannelOptions(1) { FullMode = BoundedChannelFullMode.DropWrite });
+    private readonly CancellationTokenSource _stop = new();
+    private IMqttClient? _client;
+    private Task? _loop;
+    private Task? _commandLoop;
+    private ulong _bdSeq;
+    private int _connections;
+    private volatile string? _certificateProblem;
+
+    /// <summary>Creates the edge node; nothing connects until it is started.</summary>
+    public SparkplugEdgeNode(IOptions<SparkplugOptions> options, SparkplugNode node, SparkplugCommands commands, ILogger<SparkplugEdgeNode> logger, TimeProvider timeProvider)
+    {
+        ArgumentNullException.ThrowIfNull(options);
+        _options = options.Value;
+        _node = node;
+        _commands = commands;
+        _logger = logger;
+        _time = timeProvider;
+        _broker = $"{_options.Host}:{_options.PortOrDefault}";
+    }
+
+    /// <summary>Whether the session is up (connected, births sent).</summary>
+    public bool IsOnline { get; private set; }
+
+    /// <inheritdoc/>
+    public Task StartAsync(CancellationToken cancellationToken)
+    {
+        if (_options.Tls is { Enabled: true, AllowUntrustedCertificates: true })
+        {
+            SparkplugLog.UntrustedCertificates(_logger, _broker);
+        }
+
+        _client = _factory.CreateMqttClient();
+        _client.DisconnectedAsync += _ =>
+        {
+            Wake();
+            return Task.CompletedTask;
+        };
+        _client.ApplicationMessageReceivedAsync += e =>
+        {
+            Received(e.ApplicationMessage);
+            return Task.CompletedTask;
+        };
+        _node.Changed += Wake;
+        _loop = Task.Run(() => RunAsync(_stop.Token), CancellationToken.None);
+        _commandLoop = Task.Run(() => _commands.RunAsync(_stop.Token), CancellationToken.None);
+        return Task.CompletedTask;
+    }
+
+    /// <inheritdoc/>
+    public async Task StopAsync(CancellationToken cancellationToken)
+    {
+        if (_loop is null || _stop.IsCancellationRequested)
+        {
+            return;
+        }
+
+        _node.Changed -= Wake;
+        await _stop.CancelAsync().ConfigureAwait(false);
+        await _loop.ConfigureAwait(ConfigureAwaitOptions.SuppressThrowing);
+        await _commandLoop!.ConfigureAwait(ConfigureAwaitOptions.SuppressThrowing);
+
+        // The links have stopped (they are registered after this service): their devices' deaths go out, then NDEATH.
+        if (IsOnline && _client is { IsConnected: true } client)
+        {
+            try
+            {
+                using var timeout = new CancellationTokenSource(_options.Timeout);
+                await PublishPendingAsync(client, timeout.Token).ConfigureAwait(false);
+                await client.PublishAsync(Message(_node.Topic(SparkplugMessageType.NDEATH), SparkplugPayloads.NodeDeath(_bdSeq), MqttQualityOfServiceLevel.AtLeastOnce), timeout.Token).ConfigureAwait(false);
+                await client.DisconnectAsync(new MqttClientDisconnectOptions(), timeout.Token).ConfigureAwait(false);
+            }
+            catch (Exception e) when (e is not OutOfMemoryException)
+            {
+                // The broker went away meanwhile: it publishes the will, the same NDEATH.
+            }
+        }
+
+        IsOnline = false;
+        SparkplugLog.Stopped(_logger, _broker);
+    }
+
+    /// <inheritdoc/>
+    public async ValueTask DisposeAsync()
+    {
+        if (!_stop.IsCancellationRequested)
+        {
+            await _stop.CancelAsync().ConfigureAwait(false);
+        }
+
+        if (_loop is not null)
+        {
+            await _loop.ConfigureAwait(ConfigureAwaitOptions.SuppressThrowing);
+        }
+
+        _client?.Dispose();
+        _stop.Dispose();
+    }
+
+    private void Wake() => _wake.Writer.TryWrite(true);
+
+    private void Received(MqttApplicationMessage message)
+    {
+        if (!SparkplugTopic.TryParse(message.Topic, out SparkplugTopic? topic) || topic!.GroupId != _node.GroupId || topic.EdgeNodeId != _node.EdgeNodeId)
+        {
+            return;
+        }
+
+        if (topic.Type == SparkplugMessageType.NCMD)
+        {
+            IReadOnlyList<SparkplugCommandMetric>? metrics = SparkplugCommandMetric.Parse(message.Payload.ToArray());
+            if (metrics is not null && metrics.Any(m => m.Name == SparkplugPayloads.Rebirth && m.TryGetValue(SparkplugDataType.Boolean, out System.Text.Json.JsonElement v, out _) && v.GetBoolean()))
+            {
+                SparkplugLog.RebirthRequested(_logger);
+                _node.RequestRebirth();
+            }
+            else
+            {
+                SparkplugLog.CommandIgnored(_logger, message.Topic, "an NCMD other than Node Control/Rebirth = true");
+            }
+        }
+        else if (topic.Type == SparkplugMessageType.DCMD && topic.DeviceId is { } device)
+        {
+            _commands.Accept(device, message.Payload.ToArray());
+        }
+    }
+
+    private async Task RunAsync(CancellationToken cancellationToken)
+    {
+        IMqttClient client = _client!;
+        TimeSpan backoff = TimeSpan.Zero;
+        int attempts = 0;
+        while (!cancellationToken.IsCancellationRequested)
+        {
+            try
+            {
+                if (!client.IsConnected)
+                {
+                    IsOnline = false;
+                    await ConnectAsync(client, cancellationToken).ConfigureAwait(false);
+                    attempts = 0;
+                    backoff = TimeSpan.Zero;
+                    continue;
+                }
+
+                if (_node.RebirthRequested)
+                {
+                    await PublishAllAsync(client, _node.Births(_bdSeq), cancellationToken).ConfigureAwait(false);
+                    continue;
+                }
+
+                await PublishPendingAsync(client, cancellationToken).ConfigureAwait(false);
+                await _wake.Reader.ReadAsync(cancellationToken).ConfigureAwait(false);
+            }
+            catch (OperationCanceledException) when (cancellationToken.IsCancellationRequested)
+            {
+                return;
+            }
+            catch (Exception e) when (e is not OutOfMemoryException)
+            {
+                IsOnline = false;
+                await MqttGateway.DropConnectionAsync(client).ConfigureAwait(false);
+                _node.TakeMessages(connected: false);
+                string reason = _certificateProblem is { } why ? "TLS: " + why : e.Message;
+                _certificateProblem = null;
+                backoff = attempts++ == 0 ? _options.Reconnect.Initial : TimeSpan.FromTicks(Math.Min(backoff.Ticks * 2, _options.Reconnect.Max.Ticks));
+                SparkplugLog.Unreachable(_logger, _broker, reason, backoff.TotalSeconds);
+                try
+                {
+                    await Task.Delay(backoff, _time, cancellationToken).ConfigureAwait(false);
+                }
+                catch (OperationCanceledException)
+                {
+                    return;
+                }
+            }
+        }
+    }
+
+    private async Task ConnectAsync(IMqttClient client, CancellationToken cancellationToken)
+    {
+        // A new bdSeq for every connection: the will registered now carries it, and so does the NBIRTH that follows.
+        _bdSeq = (ulong)(_connections++ % 256);
+        MqttClientConnectResult result = await client.ConnectAsync(ClientOptions(_bdSeq), cancellationToken).ConfigureAwait(false);
+        if (result.ResultCode != MqttClientConnectResultCode.Success)
+        {
+            throw new InvalidOperationException($"the broker refused the connection: {result.ResultCode}");
+        }
+
+        MqttClientSubscribeOptions subscribe = _factory.CreateSubscribeOptionsBuilder()
+            .WithTopicFilter(f => f.WithTopic(_node.Topic(SparkplugMessageType.NCMD).ToString()).WithQualityOfServiceLevel(MqttQualityOfServiceLevel.AtLeastOnce))
+            .WithTopicFilter(f => f.WithTopic(_node.Topic(SparkplugMessageType.DCMD, "+").ToString()).WithQualityOfServiceLevel(MqttQualityOfServiceLevel.AtLeastOnce))
+            .Build();
+        await client.SubscribeAsync(subscribe, cancellationToken).ConfigureAwait(false);
+        List<SparkplugMessage> births = _node.Births(_bdSeq);
+        await PublishAllAsync(client, births, cancellationToken).ConfigureAwait(false);
+        IsOnline = true;
+        SparkplugLog.Online(_logger, _broker, _node.GroupId, _node.EdgeNodeId, _bdSeq, births.Count - 1);
+    }
+
+    private async Task PublishPendingAsync(IMqttClient client, CancellationToken cancellationToken)
+        => await PublishAllAsync(client, _node.TakeMessages(connected: true), cancellationToken).ConfigureAwait(false);
+
+    private async Task PublishAllAsync(IMqttClient client, List<SparkplugMessage> messages, CancellationToken cancellationToken)
+    {
+        foreach (SparkplugMessage message in messages)
+        {
+            await client.PublishAsync(Message(message.Topic, message.Payload, MqttQualityOfServiceLevel.AtMostOnce), cancellationToken).ConfigureAwait(false);
+        }
+    }
+
+    private MqttApplicationMessage Message(SparkplugTopic topic, byte[] payload, MqttQualityOfServiceLevel qos)
+        => _factory.CreateApplicationMessageBuilder()
+            .WithTopic(topic.ToString())
+            .WithPayload(payload)
+            .WithQualityOfServiceLevel(qos)
+            .WithRetainFlag(false)
+            .Build();
+
+    private MqttClientOptions ClientOptions(ulong bdSeq)
+    {
+        MqttClientOptionsBuilder builder = new MqttClientOptionsBuilder()
+            .WithTcpServer(_options.Host, _options.PortOrDefault)
+            .WithClientId(_options.ClientIdOrDefault)
+            .WithProtocolVersion(MqttProtocolVersion.V311)
+            .WithCleanSession(true)
+            .WithKeepAlivePeriod(_options.KeepAlive)
+            .WithTimeout(_options.Timeout)
+            .WithWillTopic(_node.Topic(SparkplugMessageType.NDEATH).ToString())
+            .WithWillPayload(SparkplugPayloads.NodeDeath(bdSeq))
+            .WithWillQualityOfServiceLevel(MqttQualityOfServiceLevel.AtLeastOnce)
+            .WithWillRetain(false);
+        if (!string.IsNullOrEmpty(_options.Username))
+        {
+            builder = builder.WithCredentials(_options.Username, _options.Password ?? "");
+        }
+
+        if (_options.Tls.Enabled)
+        {
+            MqttTlsOptions tls = _options.Tls;
+            System.Security.Cryptography.X509Certificates.X509Certificate2Collection? authorities = string.IsNullOrEmpty(tls.CaFile) ? null : MqttClientOptionsFactory.LoadAuthorities(tls.CaFile);
+            builder = builder.WithTlsOptions(o => o.UseTls()
+                .WithTargetHost(string.IsNullOrEmpty(tls.ServerName) ? _options.Host : tls.ServerName)
+                .WithCertificateValidationHandler(e =>
+                {
+                    string? why = MqttClientOptionsFactory.CertificateProblem(e.Certificate, e.Chain, e.SslPolicyErrors, authorities, tls.AllowUntrustedCertificates);
+                    _certificateProblem = why;
+                    return why is null;
+                }));
+        }
+
+        return builder.Build();
+    }
+}

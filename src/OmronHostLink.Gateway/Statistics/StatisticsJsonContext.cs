@@ -1,0 +1,8 @@
+using System.Text.Json.Serialization;
+
+namespace OmronHostLink.Gateway.Statistics;
+
+/// <summary>Source-generated JSON for the statistics topics.</summary>
+[JsonSourceGenerationOptions(NumberHandling = JsonNumberHandling.AllowNamedFloatingPointLiterals)]
+[JsonSerializable(typeof(UnitStatistics))]
+internal sealed partial class StatisticsJsonContext : JsonSerializerContext;

@@ -1,0 +1,70 @@
+using Microsoft.Extensions.DependencyInjection;
+using Microsoft.Extensions.Hosting;
+using Microsoft.Extensions.Options;
+using OmronHostLink.Gateway.Configuration;
+using OmronHostLink.Gateway.Sparkplug;
+using OmronHostLink.Gateway.Tests.Mqtt;
+
+namespace OmronHostLink.Gateway.Tests.Sparkplug;
+
+/// <summary>The <c>Sparkplug</c> section is checked at start like every other, each problem naming its key.</summary>
+public sealed class SparkplugConfigurationTests
+{
+    public static TheoryData<string, string> BadSettings => new()
+    {
+        { "Sparkplug:GroupId=", "Sparkplug:GroupId '' cannot be a Sparkplug id: it is empty" },
+        { "Sparkplug:GroupId=plant/1", "Sparkplug:GroupId 'plant/1' cannot be a Sparkplug id: it contains '/'" },
+        { "Sparkplug:EdgeNodeId=gw+1", "Sparkplug:EdgeNodeId 'gw+1' cannot be a Sparkplug id: it contains '+'" },
+        { "Sparkplug:Host=", "Sparkplug:Host is empty" },
+        { "Sparkplug:Host=mqtt://broker", "Sparkplug:Host 'mqtt://broker' is not a host name or address" },
+        { "Sparkplug:Port=0", "Sparkplug:Port must be 1-65535; it is 0" },
+        { "Sparkplug:Password=secret", "Sparkplug:Password is set without Sparkplug:Username" },
+        { "Sparkplug:KeepAlive=1.5s", "Sparkplug:KeepAlive must be whole seconds" },
+        { "Sparkplug:Timeout=0s", "Sparkplug:Timeout must be more than 0" },
+        { "Sparkplug:Reconnect:Max=50ms", "Sparkplug:Reconnect: Initial must be more than 0 and Max at least Initial" },
+        { "Sparkplug:Tls:AllowUntrustedCertificates=true", "Sparkplug:Tls:Enabled is false but AllowUntrustedCertificates is set" },
+        { "Sparkplug:Tls:Enabled=true;Sparkplug:Tls:CaFile=/nonexistent/ca.pem", "Sparkplug:Tls:CaFile '/nonexistent/ca.pem' does not exist" },
+        { "Sparkplug:EdgeNode=gw1", "Sparkplug:EdgeNode is not a setting here" },
+        { "Sparkplug:Writes:Enabled=yes", "Sparkplug:Writes:Enabled 'yes' is not true or false" },
+        { "HostLink:Links:plc:Groups:a#b:Address=D1", "HostLink:Links:plc:Groups:a#b: the group's name is a Sparkplug metric name and it contains '#'" },
+        { "HostLink:Links:plc:Groups:flag:Writable=true", "HostLink:Links:plc:Groups:flag:Writable: T5 is a timer/counter completion flag" },
+        { "HostLink:Links:plc:Demotion:After=-1", "HostLink:Links:plc:Demotion:After must be 0 (never demote) to 1000 polls; it is -1" },
+        { "HostLink:Links:plc:Demotion:Period=0s", "HostLink:Links:plc:Demotion:Period must be more than 0 and at most 1 day" },
+        { "HostLink:Links:plc:Demotion:Perod=5s", "HostLink:Links:plc:Demotion:Perod is not a setting here" },
+        { "Sparkplug:Writes:Enabled=true", "" },
+    };
+
+    [Theory]
+    [MemberData(nameof(BadSettings))]
+    public void Invalid_sparkplug_configuration_fails_at_start_naming_the_key(string settings, string expected)
+    {
+        Dictionary<string, string?> config = MqttGatewayConfig.Create(9, broker: null)
+            .Where(k => !k.Key.StartsWith("Mqtt:", StringComparison.Ordinal))
+            .ToDictionary(k => k.Key, k => k.Value);
+        config["Sparkplug:Host"] = "127.0.0.1";
+        config["Sparkplug:Port"] = "9";
+        config["Sparkplug:GroupId"] = "Plant1";
+        config["Sparkplug:EdgeNodeId"] = "gw1";
+        MqttGatewayConfig.Group(config, "g", "D100");
+        MqttGatewayConfig.Group(config, "flag", "T5", "bit");
+        foreach (string setting in settings.Split(';'))
+        {
+            string[] pair = setting.Split('=', 2);
+            config[pair[0]] = pair[1];
+        }
+
+        using IHost host = MqttGatewayConfig.Build(config, new CapturingLoggerProvider());
+
+        Exception? error = Record.Exception(() => host.Services.GetRequiredService<IOptions<SparkplugOptions>>().Value);
+        error ??= Record.Exception(() => host.Services.GetRequiredService<IOptions<GatewayOptions>>().Value);
+
+        if (expected.Length == 0)
+        {
+            error.Should().BeNull();
+            return;
+        }
+
+        error.Should().BeOfType<OptionsValidationException>();
+        ((OptionsValidationException)error!).Failures.Should().Contain(m => m.Contains(expected, StringComparison.Ordinal), $"the message names the key ({string.Join(" | ", ((OptionsValidationException)error).Failures)})");
+    }
+}
