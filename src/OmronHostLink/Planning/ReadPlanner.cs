@@ -159,9 +159,9 @@ public sealed partial class ReadPlanner
     {
         int message = CModeCommand.PrefixLength + CompoundRegisterCommand.GetTextLength(items);
         int fixedLength = CModeCommand.PrefixLength + CompoundRegisterCommand.GetTextLength(1);
-        exchanges = FrameWriter.CountFrames(message, fixedLength, CompoundItem.Length + 1);
+        exchanges = FrameWriter.CountFrames(message, fixedLength, CompoundRegisterCommand.ItemAtomLength);
         int answer = CModeResponse.PrefixLength + CompoundCommands.AnswerFixed + FrameWriter.FinalOverhead;
-        return FrameWriter.WireLength(message, fixedLength, CompoundItem.Length + 1) + (exchanges - 1) + answer;
+        return FrameWriter.WireLength(message, fixedLength, CompoundRegisterCommand.ItemAtomLength) + (exchanges - 1) + answer;
     }
 
     /// <summary>Characters (both ways) of one C-mode RG read of <paramref name="flags"/> completion flags, and its frame exchanges.</summary>

@@ -255,10 +255,13 @@ internal sealed class CompoundRegisterCommand : CModeCommand
     public override int FixedTextLength => GetTextLength(1);
 
     /// <summary>Later items travel as ",item": a frame is cut before a comma.</summary>
-    public override int AtomLength => CompoundItem.Length + 1;
+    public override int AtomLength => ItemAtomLength;
+
+    /// <summary>Characters of a later item with the comma before it: what a frame of the command is cut between.</summary>
+    public const int ItemAtomLength = CompoundItem.Length + 1;
 
     /// <summary>Characters of the text registering <paramref name="items"/> items: the sub-header, then the items with a comma between two.</summary>
-    public static int GetTextLength(int items) => CompoundCommands.Register.Length + (items * (CompoundItem.Length + 1)) - 1;
+    public static int GetTextLength(int items) => CompoundCommands.Register.Length + (items * ItemAtomLength) - 1;
 
     /// <inheritdoc/>
     public override void WriteText(Span<byte> destination)
