@@ -72,12 +72,12 @@ internal static class FinsExplainFields
     {
         switch (commandCode)
         {
-            case FinsCommandCodes.CpuUnitDataRead:
+            case CpuUnitDataReadCommand.Code:
                 FinsCpuUnitData unit = FinsCpuUnitData.Read(data);
                 x.Field("model", unit.Model);
                 x.Field("version", unit.Version);
                 break;
-            case FinsCommandCodes.CpuUnitStatusRead:
+            case CpuUnitStatusReadCommand.Code:
                 FinsCpuStatus status = FinsCpuStatus.Read(data);
                 x.Field("running", status.IsRunning);
                 x.Field("mode", ModeName(status.Mode));
@@ -87,7 +87,7 @@ internal static class FinsExplainFields
                 x.Field("falNumber", (long)status.FalNumber);
                 x.Field("errorMessage", status.ErrorMessage);
                 break;
-            case FinsCommandCodes.ClockRead:
+            case ClockReadCommand.Code:
                 FinsClock clock = FinsClock.Read(data);
                 x.Field("clock", clock.Time.ToString("yyyy-MM-dd HH:mm:ss", CultureInfo.InvariantCulture));
                 x.Field("dayOfWeek", clock.DayOfWeek.ToString());

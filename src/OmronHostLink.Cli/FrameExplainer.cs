@@ -438,7 +438,7 @@ internal static class FrameExplainer
         x.Field("sa2", Hex(h.Sa2));
         x.Field("sid", Hex(h.Sid));
         x.Field("command", command.ToString("X4", CultureInfo.InvariantCulture));
-        x.Name = FinsCommandCodes.Name(command) is { } name ? $"FINS {command:X4} {name}" : $"FINS {command:X4}";
+        x.Name = FinsCommandTable.Standard.Name(command) is { } name ? $"FINS {command:X4} {name}" : $"FINS {command:X4}";
     }
 
     private static string Hex(byte value) => value.ToString("X2", CultureInfo.InvariantCulture);

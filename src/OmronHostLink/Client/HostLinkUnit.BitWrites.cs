@@ -7,17 +7,14 @@ namespace OmronHostLink;
 /// </summary>
 public partial class HostLinkUnit
 {
-    /// <summary>Refuses a write of <paramref name="count"/> bits from <paramref name="address"/> that this view's command set cannot make.</summary>
-    /// <exception cref="ArgumentException">The view uses C-mode (without <see cref="HostLinkClientOptions.AllowReadModifyWriteBits"/>).</exception>
-    private void EnsureBitWriteCommandSet(PlcAddress address, int count)
+    /// <summary>
+    /// The refusal of a write of <paramref name="count"/> bits from <paramref name="address"/> by a C-mode view (without
+    /// <see cref="HostLinkClientOptions.AllowReadModifyWriteBits"/>), naming the ways to make it.
+    /// </summary>
+    internal ArgumentException BitWriteRefusal(PlcAddress address, int count)
     {
-        if (Options.CommandSet != HostLinkCommandSet.CMode)
-        {
-            return;
-        }
-
         PlcAddress first = address.AsWord();
-        int words = WordsCovered(address, count);
+        int words = UnitCommandSet.WordsCovered(address, count);
         string what = count == 1 ? address.ToString() : $"{count} bits from {address}";
         string covered = words == 1 ? first.ToString() : $"{first}-{first.Offset(words - 1)}";
         string message = $"C-mode has no bit write, so a C-mode client does not write {what} (nothing was sent). To write it, {CommandSetAdvice.UseFins(UnitNumber)}";
@@ -26,7 +23,7 @@ public partial class HostLinkUnit
             message += "; " + CommandSetAdvice.ReadModifyWrite(covered);
         }
 
-        throw new ArgumentException(message + ".", nameof(address));
+        return new ArgumentException(message + ".", nameof(address));
     }
 
     private static bool CModeReaches(PlcAddress first, int words)

@@ -23,7 +23,7 @@ public partial class HostLinkUnit
         }
 
         EnsureBitAddress(address);
-        ushort[] words = await ReadWordsAsync(address.AsWord(), WordsCovered(address, count), cancellationToken).ConfigureAwait(false);
+        ushort[] words = await ReadWordsAsync(address.AsWord(), UnitCommandSet.WordsCovered(address, count), cancellationToken).ConfigureAwait(false);
         var bits = new bool[count];
         for (int i = 0; i < count; i++)
         {
@@ -46,37 +46,8 @@ public partial class HostLinkUnit
     {
         EnsureBitAddress(address);
         Guard.InRange(values.Length, 1, 10000, nameof(values));
-        PlcAddress first = address.AsWord();
-        int words = WordsCovered(address, values.Length);
-        if (Options.AllowReadModifyWriteBits && Options.CommandSet == HostLinkCommandSet.CMode)
-        {
-            first.EnsureRange(words, HostLinkCommandSet.CMode, forWrite: Models.Off);
-            ushort[] current = await ReadWordsAsync(first, words, cancellationToken).ConfigureAwait(false);
-            for (int i = 0; i < values.Length; i++)
-            {
-                int n = address.Bit + i;
-                current[n / 16] = PlcWords.SetBit(current[n / 16], n % 16, values.Span[i]);
-            }
-
-            await WriteWordsAsync(first, current, cancellationToken).ConfigureAwait(false);
-            return;
-        }
-
-        EnsureBitWriteCommandSet(address, values.Length);
-        first.EnsureRange(words, HostLinkCommandSet.Fins, forWrite: true);
-        EnsureModel(await GetModelProfileAsync(cancellationToken).ConfigureAwait(false), first, words, HostLinkCommandSet.Fins, forWrite: true);
-        for (int done = 0; done < values.Length;)
-        {
-            int n = Math.Min(MemoryAreaWriteCommand.MaxDataBytes, values.Length - done);
-            int bit = address.Bit + done;
-            PlcAddress from = first.Offset(bit / 16).WithBit(bit % 16);
-            var command = MemoryAreaWriteCommand.Bits(FinsAddressing.Bit(from), values.Span.Slice(done, n));
-            await FinsAsync(command, 0, CommandEffect.Idempotent, ExpectNoData, "0102", cancellationToken).ConfigureAwait(false);
-            done += n;
-        }
+        await Commands.WriteBitsAsync(this, address, values, cancellationToken).ConfigureAwait(false);
     }
-
-    private static int WordsCovered(PlcAddress address, int bits) => (address.Bit + bits + 15) / 16;
 
     private static void EnsureBitAddress(PlcAddress address)
     {

@@ -43,7 +43,17 @@ public partial class HostLinkUnit
         }
 
         _ = new CompoundRegisterCommand(items); // refuses an empty or oversized set before anything is sent
-        return await ReadCompoundItemsAsync(items, cancellationToken).ConfigureAwait(false);
+        ushort[] values = await ReadCompoundItemsAsync(items, cancellationToken).ConfigureAwait(false);
+        for (int i = 0; i < values.Length; i++)
+        {
+            if (parsed[i].IsBit && !items[i].IsBit)
+            {
+                // A bit of DM or EM: QQ reads its word.
+                values[i] = PlcWords.GetBit(values[i], parsed[i].Bit) ? (ushort)1 : (ushort)0;
+            }
+        }
+
+        return values;
     }
 
     /// <summary>Whether this unit holds <paramref name="items"/> as its registration, as far as this client knows.</summary>

@@ -10,23 +10,23 @@ public partial class HostLinkUnit
 {
     /// <summary>Reads the CPU Unit's model and version (FINS 0501).</summary>
     public Task<FinsCpuUnitData> ReadCpuUnitDataAsync(CancellationToken cancellationToken = default)
-        => FinsAsync(new CpuUnitDataReadCommand(), 160, CommandEffect.ReadOnly, static (data, _) => FinsCpuUnitData.Read(data), 0, cancellationToken).AsTask();
+        => FinsAsync(new CpuUnitDataReadCommand(), static (data, _) => FinsCpuUnitData.Read(data), 0, cancellationToken).AsTask();
 
     /// <summary>Reads the CPU Unit's status, mode, error flags and error message (FINS 0601).</summary>
     public Task<FinsCpuStatus> ReadCpuStatusAsync(CancellationToken cancellationToken = default)
-        => FinsAsync(new CpuUnitStatusReadCommand(), FinsCpuStatus.Length, CommandEffect.ReadOnly, static (data, _) => FinsCpuStatus.Read(data), 0, cancellationToken).AsTask();
+        => FinsAsync(new CpuUnitStatusReadCommand(), static (data, _) => FinsCpuStatus.Read(data), 0, cancellationToken).AsTask();
 
     /// <summary>Reads the average, longest and shortest cycle times (FINS 0620); <paramref name="initialize"/> restarts the measurement instead.</summary>
     public Task<FinsCycleTime?> ReadCycleTimeAsync(bool initialize = false, CancellationToken cancellationToken = default)
-        => FinsAsync(new CycleTimeReadCommand(initialize), 12, initialize ? CommandEffect.NotRepeatable : CommandEffect.ReadOnly, static (data, init) => init ? null : FinsCycleTime.Read(data), initialize, cancellationToken).AsTask();
+        => FinsAsync(new CycleTimeReadCommand(initialize), static (data, init) => init ? null : FinsCycleTime.Read(data), initialize, cancellationToken).AsTask();
 
     /// <summary>Reads the PLC's clock (FINS 0701).</summary>
     public Task<FinsClock> ReadClockAsync(CancellationToken cancellationToken = default)
-        => FinsAsync(new ClockReadCommand(), FinsClock.Length, CommandEffect.ReadOnly, static (data, _) => FinsClock.Read(data), 0, cancellationToken).AsTask();
+        => FinsAsync(new ClockReadCommand(), static (data, _) => FinsClock.Read(data), 0, cancellationToken).AsTask();
 
     /// <summary>Sets the PLC's clock (FINS 0702), seconds and day of week included.</summary>
     public async Task WriteClockAsync(DateTime time, CancellationToken cancellationToken = default)
-        => await FinsAsync(new ClockWriteCommand(time, includeSecond: true, time.DayOfWeek), 0, CommandEffect.NotRepeatable, ExpectNoData, "0702", cancellationToken).ConfigureAwait(false);
+        => await FinsNoDataAsync(new ClockWriteCommand(time, includeSecond: true, time.DayOfWeek), cancellationToken).ConfigureAwait(false);
 
     /// <summary>Starts the program in MONITOR or RUN mode (FINS 0401).</summary>
     public async Task RunAsync(PlcMode mode = PlcMode.Monitor, CancellationToken cancellationToken = default)
@@ -37,22 +37,22 @@ public partial class HostLinkUnit
         }
 
         var command = new RunCommand(mode == PlcMode.Run ? FinsCpuMode.Run : FinsCpuMode.Monitor);
-        await FinsAsync(command, 0, CommandEffect.NotRepeatable, ExpectNoData, "0401", cancellationToken).ConfigureAwait(false);
+        await FinsNoDataAsync(command, cancellationToken).ConfigureAwait(false);
     }
 
     /// <summary>Stops the program: PROGRAM mode (FINS 0402).</summary>
     public async Task StopAsync(CancellationToken cancellationToken = default)
-        => await FinsAsync(new StopCommand(), 0, CommandEffect.NotRepeatable, ExpectNoData, "0402", cancellationToken).ConfigureAwait(false);
+        => await FinsNoDataAsync(new StopCommand(), cancellationToken).ConfigureAwait(false);
 
     /// <summary>Clears one error, or all with the default <c>FFFF</c> (FINS 2101).</summary>
     public async Task ClearErrorsAsync(ushort errorCode = ErrorClearCommand.AllErrors, CancellationToken cancellationToken = default)
-        => await FinsAsync(new ErrorClearCommand(errorCode), 0, CommandEffect.NotRepeatable, ExpectNoData, "2101", cancellationToken).ConfigureAwait(false);
+        => await FinsNoDataAsync(new ErrorClearCommand(errorCode), cancellationToken).ConfigureAwait(false);
 
     /// <summary>Reads error log records (FINS 2102), up to 53 in one exchange.</summary>
     public Task<FinsErrorLog> ReadErrorLogAsync(int firstRecord = 0, int count = 20, CancellationToken cancellationToken = default)
     {
         var command = new ErrorLogReadCommand(firstRecord, count);
-        return FinsAsync(command, 6 + (count * FinsErrorLogRecord.Length), CommandEffect.ReadOnly, static (data, _) => FinsErrorLog.Read(data), 0, cancellationToken).AsTask();
+        return FinsAsync(command, static (data, _) => FinsErrorLog.Read(data), 0, cancellationToken).AsTask();
     }
 
     /// <summary>Writes <paramref name="value"/> to <paramref name="count"/> words (FINS 0103).</summary>
@@ -60,7 +60,7 @@ public partial class HostLinkUnit
     {
         PlcAddress a = PlcAddress.Parse(address).AsWord();
         a.EnsureRange(count, HostLinkCommandSet.Fins, forWrite: true);
-        await FinsAsync(new MemoryAreaFillCommand(FinsAddressing.Word(a), count, value), 0, CommandEffect.Idempotent, ExpectNoData, "0103", cancellationToken).ConfigureAwait(false);
+        await FinsNoDataAsync(new MemoryAreaFillCommand(FinsAddressing.Word(a), count, value), cancellationToken).ConfigureAwait(false);
     }
 
     /// <summary>Copies <paramref name="count"/> words inside the PLC (FINS 0105).</summary>
@@ -71,7 +71,7 @@ public partial class HostLinkUnit
         from.EnsureRange(count, HostLinkCommandSet.Fins, forWrite: false);
         to.EnsureRange(count, HostLinkCommandSet.Fins, forWrite: true);
         var command = new MemoryAreaTransferCommand(FinsAddressing.Word(from), FinsAddressing.Word(to), count);
-        await FinsAsync(command, 0, CommandEffect.Idempotent, ExpectNoData, "0105", cancellationToken).ConfigureAwait(false);
+        await FinsNoDataAsync(command, cancellationToken).ConfigureAwait(false);
     }
 
     /// <summary>
@@ -92,7 +92,7 @@ public partial class HostLinkUnit
         }
 
         var command = new MultipleMemoryAreaReadCommand(items);
-        FinsMultipleReadValue[] values = await FinsAsync(command, command.ResponseDataLength, CommandEffect.ReadOnly, static (data, c) => FinsMultipleReadValue.ReadAll(data, c), command, cancellationToken).ConfigureAwait(false);
+        FinsMultipleReadValue[] values = await FinsAsync(command, static (data, c) => FinsMultipleReadValue.ReadAll(data, c), command, cancellationToken).ConfigureAwait(false);
         return values.Select(v => v.Word).ToArray();
     }
 
@@ -105,107 +105,24 @@ public partial class HostLinkUnit
             throw new ArgumentException($"{a} names a word; forcing takes a bit address.", nameof(address));
         }
 
-        await FinsAsync(new ForcedSetResetCommand(action, FinsAddressing.Item(a)), 0, CommandEffect.NotRepeatable, ExpectNoData, "2301", cancellationToken).ConfigureAwait(false);
+        await FinsNoDataAsync(new ForcedSetResetCommand(action, FinsAddressing.Item(a)), cancellationToken).ConfigureAwait(false);
     }
 
     /// <summary>Releases every forced bit (FINS 2302).</summary>
     public async Task CancelForcedBitsAsync(CancellationToken cancellationToken = default)
-        => await FinsAsync(new ForcedSetResetCancelCommand(), 0, CommandEffect.NotRepeatable, ExpectNoData, "2302", cancellationToken).ConfigureAwait(false);
+        => await FinsNoDataAsync(new ForcedSetResetCancelCommand(), cancellationToken).ConfigureAwait(false);
 
-    // ---- Used by the protocol-neutral members ----
-
-    private async Task<ushort[]> FinsReadWordsAsync(PlcAddress address, int count, CancellationToken cancellationToken)
-    {
-        // Beyond one command's limit the read is split into the fewest commands; the words are then not one snapshot.
-        var words = new ushort[count];
-        for (int done = 0; done < count;)
-        {
-            int n = Math.Min(MemoryAreaReadCommand.MaxWords, count - done);
-            var command = new MemoryAreaReadCommand(FinsAddressing.Word(address.Offset(done)), n);
-            await FinsAsync(
-                command,
-                n * 2,
-                CommandEffect.ReadOnly,
-                static (data, s) =>
-                {
-                    FinsWords.Read(data, s.words.AsSpan(s.done, s.n));
-                    return true;
-                },
-                (words, done, n),
-                cancellationToken).ConfigureAwait(false);
-            done += n;
-        }
-
-        return words;
-    }
-
-    private async Task FinsWriteWordsAsync(PlcAddress address, ReadOnlyMemory<ushort> words, CancellationToken cancellationToken)
-    {
-        for (int done = 0; done < words.Length;)
-        {
-            int n = Math.Min(MemoryAreaWriteCommand.MaxWords, words.Length - done);
-            var command = MemoryAreaWriteCommand.Words(FinsAddressing.Word(address.Offset(done)), words.Span.Slice(done, n));
-            await FinsAsync(command, 0, CommandEffect.Idempotent, ExpectNoData, "0102", cancellationToken).ConfigureAwait(false);
-            done += n;
-        }
-    }
-
-    private async ValueTask FinsWriteBitAsync(PlcAddress address, bool value, CancellationToken cancellationToken)
-    {
-        address.EnsureRange(1, HostLinkCommandSet.Fins, forWrite: true);
-        EnsureModel(await GetModelProfileAsync(cancellationToken).ConfigureAwait(false), address, 1, HostLinkCommandSet.Fins, forWrite: true);
-        var command = MemoryAreaWriteCommand.Bits(FinsAddressing.Bit(address), new[] { value });
-        await FinsAsync(command, 0, CommandEffect.Idempotent, ExpectNoData, "0102", cancellationToken).ConfigureAwait(false);
-    }
-
-    private async ValueTask<bool[]> FinsReadCompletionFlagsAsync(PlcAddress address, int count, CancellationToken cancellationToken)
-    {
-        // Beyond one answer frame's bits the read is split into the fewest commands, as word reads are.
-        var flags = new bool[count];
-        for (int done = 0; done < count;)
-        {
-            int n = Math.Min(MemoryAreaReadCommand.MaxBits, count - done);
-            bool[] part = await FinsAsync(
-                new MemoryAreaReadCommand(FinsAddressing.Item(address.Offset(done)), n),
-                n,
-                CommandEffect.ReadOnly,
-                static (data, c) => FinsBits.Read(data, c),
-                n,
-                cancellationToken).ConfigureAwait(false);
-            part.CopyTo(flags, done);
-            done += n;
-        }
-
-        return flags;
-    }
-
-    private async Task<PlcStatus> FinsReadStatusAsync(CancellationToken cancellationToken)
-    {
-        FinsCpuStatus status = await ReadCpuStatusAsync(cancellationToken).ConfigureAwait(false);
-        PlcMode mode = status.Mode switch
-        {
-            FinsCpuMode.Run => PlcMode.Run,
-            FinsCpuMode.Monitor => PlcMode.Monitor,
-            _ => PlcMode.Program,
-        };
-        string message = status.ErrorMessage.Trim();
-
-        // CONTROLLER STATUS READ has no MS status word: its bits (UM protection, program area) are not reported.
-        return new PlcStatus(mode, statusWord: null, message.Length == 0 ? null : message);
-    }
-
-    private static bool ExpectNoData(ReadOnlySpan<byte> data, string command)
-    {
-        if (!data.IsEmpty)
-        {
-            throw new HostLinkFrameException(FrameError.WrongLength, $"The answer to FINS {command} should carry no data but carried {data.Length} bytes.");
-        }
-
-        return true;
-    }
+    /// <summary>Sends one FINS command whose answer carries no data.</summary>
+    internal async ValueTask FinsNoDataAsync(FinsCommand command, CancellationToken cancellationToken)
+        => await FinsAsync(
+            command,
+            static (data, c) => data.IsEmpty ? true : throw new HostLinkFrameException(FrameError.WrongLength, $"The answer to FINS {c.Row} should carry no data but carried {data.Length} bytes."),
+            command,
+            cancellationToken).ConfigureAwait(false);
 
     /// <summary>Sends one FINS command in an FA frame and decodes the data of a successful answer.</summary>
-    private protected ValueTask<TResult> FinsAsync<TState, TResult>(FinsCommand command, int maxResponseData, CommandEffect effect, ResponseDecoder<TState, TResult> decodeData, TState state, CancellationToken cancellationToken)
+    /// <remarks>How often it is repeated and how long its answer may be come from the command (<see cref="FinsCommand.Effect"/>, <see cref="FinsCommand.MaxResponseDataLength"/>).</remarks>
+    internal ValueTask<TResult> FinsAsync<TState, TResult>(FinsCommand command, ResponseDecoder<TState, TResult> decodeData, TState state, CancellationToken cancellationToken)
     {
         // A model known to have no FINS over Host Link is not sent FA frames at all.
         if (Models.TryGet(UnitNumber, out PlcModelProfile? model) && model is not null)
@@ -216,10 +133,10 @@ public partial class HostLinkUnit
         FinsHeader header = FinsHeader.Direct(Connection.NextSid(), Options.FinsResponseWait);
         var message = new byte[FinsMessage.GetCommandLength(header, command)];
         FinsMessage.WriteCommand(message, UnitNumber, header, command);
-        var request = new HostLinkRequest(UnitNumber, CModeHeaders.Fins, message, FinsMessage.GetExchange(message.Length, header, maxResponseData));
+        var request = new HostLinkRequest(UnitNumber, CModeHeaders.Fins, message, FinsMessage.GetExchange(message.Length, header, command.MaxResponseDataLength));
         return Connection.ExecuteAsync(
             request,
-            RetriesFor(effect),
+            RetriesFor(command.Effect),
             static (text, s) =>
             {
                 FinsResponse response = FinsResponse.Parse(text, s.unit, s.header, s.code);

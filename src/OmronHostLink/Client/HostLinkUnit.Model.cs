@@ -21,31 +21,6 @@ public partial class HostLinkUnit
             : Models.GetAsync(UnitNumber, ct => new ValueTask<PlcModel>(ReadModelAsync(ct)), cancellationToken);
 
     /// <summary>
-    /// Refuses, before anything is sent, what <paramref name="model"/> does not have or accept. Without a model, a write
-    /// is held to the CS/CJ rules (A0–A447 read-only); with one, to the model's own read-only ranges (the C-series AR
-    /// words are writable).
-    /// </summary>
-    private protected static void EnsureModel(PlcModelProfile? model, PlcAddress address, int count, HostLinkCommandSet commandSet, bool forWrite)
-    {
-        if (model is null)
-        {
-            if (forWrite)
-            {
-                address.AsWord().EnsureRange(count, commandSet, forWrite: true);
-            }
-
-            return;
-        }
-
-        if (commandSet == HostLinkCommandSet.Fins)
-        {
-            model.EnsureFins();
-        }
-
-        model.EnsureRange(address.AsWord(), count, forWrite);
-    }
-
-    /// <summary>
     /// Refuses, before anything is sent, a C-mode command the unit's model (configured, or already detected) does not
     /// list: MM and XZ on a CP2E, for example. TS is answered by every model.
     /// </summary>
@@ -78,23 +53,14 @@ public partial class HostLinkUnit
     private async Task<ushort[]> ReadWordsOfDetectedModelAsync(PlcAddress address, int count, CancellationToken cancellationToken)
     {
         PlcModelProfile? model = await GetModelProfileAsync(cancellationToken).ConfigureAwait(false);
-        EnsureModel(model, address, count, Options.CommandSet, forWrite: false);
-        return Options.CommandSet == HostLinkCommandSet.Fins
-            ? await FinsReadWordsAsync(address, count, cancellationToken).ConfigureAwait(false)
-            : await CModeReadWordsAsync(address, count, cancellationToken, model).ConfigureAwait(false);
+        Commands.EnsureModel(model, address, count, forWrite: false);
+        return await Commands.ReadWordsAsync(this, address, count, model, cancellationToken).ConfigureAwait(false);
     }
 
     private async Task WriteWordsOfDetectedModelAsync(PlcAddress address, ReadOnlyMemory<ushort> words, CancellationToken cancellationToken)
     {
         PlcModelProfile? model = await GetModelProfileAsync(cancellationToken).ConfigureAwait(false);
-        EnsureModel(model, address, words.Length, Options.CommandSet, forWrite: true);
-        if (Options.CommandSet == HostLinkCommandSet.Fins)
-        {
-            await FinsWriteWordsAsync(address, words, cancellationToken).ConfigureAwait(false);
-        }
-        else
-        {
-            await CModeWriteWordsAsync(address, words, cancellationToken, model).ConfigureAwait(false);
-        }
+        Commands.EnsureModel(model, address, words.Length, forWrite: true);
+        await Commands.WriteWordsAsync(this, address, words, model, cancellationToken).ConfigureAwait(false);
     }
 }

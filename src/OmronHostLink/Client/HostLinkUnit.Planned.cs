@@ -66,7 +66,7 @@ public partial class HostLinkUnit
     }
 
     /// <summary>The plan this view's reads of <paramref name="tags"/> use: its command set and line, tags without a unit from this unit.</summary>
-    private ReadPlan Plan(IReadOnlyList<PlcTag> tags) => new ReadPlanner(Options.CommandSet, LineTiming) { UseCompoundRead = Options.UseCompoundRead }.Plan(tags, UnitNumber);
+    private ReadPlan Plan(IReadOnlyList<PlcTag> tags) => new ReadPlanner(Commands.Kind, LineTiming) { UseCompoundRead = Options.UseCompoundRead }.Plan(tags, UnitNumber);
 
     private ValueTask<ushort[]> ExecuteAsync(PlannedRead read, CancellationToken cancellationToken)
     {
@@ -75,58 +75,41 @@ public partial class HostLinkUnit
             return ExecuteOnDetectedModelAsync(read, cancellationToken);
         }
 
-        EnsureModel(model, read);
-        switch (read.Kind)
+        UnitCommandSet commands = CommandsOf(read);
+        if (read.Kind is not (PlannedReadKind.FinsMultiple or PlannedReadKind.CModeCompound))
         {
-            case PlannedReadKind.FinsMultiple:
-                return ReadScatteredWordsAsync(read.Items, cancellationToken);
-            case PlannedReadKind.CModeCompound:
-                return ReadCompoundWordsAsync(read, model, cancellationToken);
-            case PlannedReadKind.CModeCompletionFlags:
-                return FlagWordsAsync(CModeReadCompletionFlagsAsync(read.Start, read.Count, cancellationToken, model));
-            case PlannedReadKind.FinsCompletionFlags:
-                read.Start.EnsureRange(read.Count, HostLinkCommandSet.Fins, forWrite: false);
-                return FlagWordsAsync(FinsReadCompletionFlagsAsync(read.Start, read.Count, cancellationToken));
-            case PlannedReadKind.FinsArea:
-                read.Start.EnsureRange(read.Count, HostLinkCommandSet.Fins, forWrite: false);
-                return new ValueTask<ushort[]>(FinsReadWordsAsync(read.Start, read.Count, cancellationToken));
-            default:
-                read.Start.EnsureRange(read.Count, HostLinkCommandSet.CMode, forWrite: false);
-                return CModeReadWordsAsync(read.Start, read.Count, cancellationToken, model);
+            read.Start.EnsureRange(read.Count, commands.Kind, forWrite: false);
         }
+
+        EnsureModel(model, read);
+        return read.Kind switch
+        {
+            PlannedReadKind.FinsMultiple => ReadScatteredWordsAsync(read.Items, cancellationToken),
+            PlannedReadKind.CModeCompound => ReadCompoundWordsAsync(read, model, cancellationToken),
+            PlannedReadKind.CModeCompletionFlags or PlannedReadKind.FinsCompletionFlags => FlagWordsAsync(commands.ReadCompletionFlagsAsync(this, read.Start, read.Count, model, cancellationToken)),
+            _ => commands.ReadWordsAsync(this, read.Start, read.Count, model, cancellationToken),
+        };
     }
+
+    /// <summary>The command set of a planned read: the plan names its command by kind, whatever this view's command set.</summary>
+    private static UnitCommandSet CommandsOf(PlannedRead read)
+        => UnitCommandSet.For(read.Kind is PlannedReadKind.FinsArea or PlannedReadKind.FinsCompletionFlags or PlannedReadKind.FinsMultiple ? HostLinkCommandSet.Fins : HostLinkCommandSet.CMode);
 
     // The plan was made without the model; what the model lacks (FINS, memory) is refused here, before the read is sent.
     private static void EnsureModel(PlcModelProfile? model, PlannedRead read)
     {
-        if (model is null)
-        {
-            return;
-        }
-
-        if (read.Kind == PlannedReadKind.CModeCompound)
+        UnitCommandSet commands = CommandsOf(read);
+        if (read.Kind is PlannedReadKind.FinsMultiple or PlannedReadKind.CModeCompound)
         {
             foreach (PlcAddress item in read.Items)
             {
-                EnsureModel(model, item, 1, HostLinkCommandSet.CMode, forWrite: false);
+                commands.EnsureModel(model, item, 1, forWrite: false);
             }
 
             return;
         }
 
-        if (read.Kind == PlannedReadKind.FinsMultiple)
-        {
-            model.EnsureFins();
-            foreach (PlcAddress item in read.Items)
-            {
-                model.EnsureRange(item.AsWord(), 1, forWrite: false);
-            }
-
-            return;
-        }
-
-        bool fins = read.Kind is PlannedReadKind.FinsArea or PlannedReadKind.FinsCompletionFlags;
-        EnsureModel(model, read.Start, read.Count, fins ? HostLinkCommandSet.Fins : HostLinkCommandSet.CMode, forWrite: false);
+        commands.EnsureModel(model, read.Start, read.Count, forWrite: false);
     }
 
     private async ValueTask<ushort[]> ExecuteOnDetectedModelAsync(PlannedRead read, CancellationToken cancellationToken)
@@ -169,7 +152,9 @@ public partial class HostLinkUnit
         var result = new ushort[items.Length];
         for (int i = 0; i < result.Length; i++)
         {
-            result[i] = words[read.Items[i]];
+            PlcAddress item = read.Items[i];
+            ushort word = words[item.AsWord()];
+            result[i] = item.IsBit ? (PlcWords.GetBit(word, item.Bit) ? (ushort)1 : (ushort)0) : word;
         }
 
         return result;
@@ -193,8 +178,6 @@ public partial class HostLinkUnit
         var command = new MultipleMemoryAreaReadCommand(items);
         return FinsAsync(
             command,
-            command.ResponseDataLength,
-            CommandEffect.ReadOnly,
             static (data, c) =>
             {
                 FinsMultipleReadValue[] values = FinsMultipleReadValue.ReadAll(data, c);

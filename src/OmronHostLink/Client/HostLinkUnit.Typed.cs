@@ -129,16 +129,6 @@ public partial class HostLinkUnit
             throw new ArgumentException($"{address} names a word; a bit address has a bit number, as in {address}.05.", nameof(address));
         }
 
-        if (Options.AllowReadModifyWriteBits && Options.CommandSet == HostLinkCommandSet.CMode)
-        {
-            PlcAddress word = address.AsWord();
-            word.EnsureRange(1, HostLinkCommandSet.CMode, forWrite: Models.Off);
-            ushort current = (await ReadWordsAsync(word, 1, cancellationToken).ConfigureAwait(false))[0];
-            await WriteWordsAsync(word, new[] { PlcWords.SetBit(current, address.Bit, value) }, cancellationToken).ConfigureAwait(false);
-            return;
-        }
-
-        EnsureBitWriteCommandSet(address, 1);
-        await FinsWriteBitAsync(address, value, cancellationToken).ConfigureAwait(false);
+        await Commands.WriteBitsAsync(this, address, new[] { value }, cancellationToken).ConfigureAwait(false);
     }
 }

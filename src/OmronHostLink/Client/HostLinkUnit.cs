@@ -1,4 +1,3 @@
-using System.Buffers;
 using System.Text;
 using OmronHostLink.Link;
 using OmronHostLink.Protocol;
@@ -17,11 +16,14 @@ public partial class HostLinkUnit
     /// <summary>The highest unit number Host Link addresses (the lowest is 0).</summary>
     public const int MaxUnitNumber = 31;
 
-    private protected readonly HostLinkConnection Connection;
-    private protected readonly HostLinkClientOptions Options;
-    private protected readonly UnitModels Models;
+    internal readonly HostLinkConnection Connection;
+    internal readonly HostLinkClientOptions Options;
+    internal readonly UnitModels Models;
 
     private protected readonly CompoundReadRegistry CompoundReads;
+
+    /// <summary>This view's command set, taken once from <see cref="HostLinkClientOptions.CommandSet"/>.</summary>
+    private protected readonly UnitCommandSet Commands;
 
     private protected HostLinkUnit(HostLinkConnection connection, HostLinkClientOptions options, int unitNumber, UnitModels models)
         : this(connection, options, unitNumber, models, new CompoundReadRegistry())
@@ -36,6 +38,7 @@ public partial class HostLinkUnit
         UnitNumber = unitNumber;
         Models = models;
         CompoundReads = compoundReads;
+        Commands = UnitCommandSet.For(options.CommandSet);
     }
 
     /// <summary>The unit number (0-31) this view addresses.</summary>
@@ -45,7 +48,7 @@ public partial class HostLinkUnit
     public LineTiming LineTiming => Connection.Timing;
 
     /// <summary>Which command set (C-mode or FINS) this view uses for reads, writes, status and mode where both can do the job.</summary>
-    public HostLinkCommandSet CommandSet => Options.CommandSet;
+    public HostLinkCommandSet CommandSet => Commands.Kind;
 
     /// <summary>A view of another unit on the same line (multidrop), sharing this link.</summary>
     /// <exception cref="ArgumentOutOfRangeException">The unit number is not 0-31.</exception>
@@ -81,16 +84,14 @@ public partial class HostLinkUnit
     public Task<ushort[]> ReadWordsAsync(PlcAddress address, int count, CancellationToken cancellationToken = default)
     {
         address = address.AsWord();
-        address.EnsureRange(count, Options.CommandSet, forWrite: false);
+        address.EnsureRange(count, Commands.Kind, forWrite: false);
         if (!Models.TryGet(UnitNumber, out PlcModelProfile? model))
         {
             return ReadWordsOfDetectedModelAsync(address, count, cancellationToken);
         }
 
-        EnsureModel(model, address, count, Options.CommandSet, forWrite: false);
-        return Options.CommandSet == HostLinkCommandSet.Fins
-            ? FinsReadWordsAsync(address, count, cancellationToken)
-            : CModeReadWordsAsync(address, count, cancellationToken, model).AsTask();
+        Commands.EnsureModel(model, address, count, forWrite: false);
+        return Commands.ReadWordsAsync(this, address, count, model, cancellationToken).AsTask();
     }
 
     /// <summary>Reads one word.</summary>
@@ -114,16 +115,14 @@ public partial class HostLinkUnit
     public Task WriteWordsAsync(PlcAddress address, ReadOnlyMemory<ushort> words, CancellationToken cancellationToken = default)
     {
         address = address.AsWord();
-        address.EnsureRange(words.Length, Options.CommandSet, forWrite: Models.Off);
+        address.EnsureRange(words.Length, Commands.Kind, forWrite: Models.Off);
         if (!Models.TryGet(UnitNumber, out PlcModelProfile? model))
         {
             return WriteWordsOfDetectedModelAsync(address, words, cancellationToken);
         }
 
-        EnsureModel(model, address, words.Length, Options.CommandSet, forWrite: true);
-        return Options.CommandSet == HostLinkCommandSet.Fins
-            ? FinsWriteWordsAsync(address, words, cancellationToken)
-            : CModeWriteWordsAsync(address, words, cancellationToken, model);
+        Commands.EnsureModel(model, address, words.Length, forWrite: true);
+        return Commands.WriteWordsAsync(this, address, words, model, cancellationToken);
     }
 
     /// <summary>Writes one word.</summary>
@@ -139,9 +138,7 @@ public partial class HostLinkUnit
     /// <exception cref="HostLinkConnectionException">The port or socket could not be opened, or was lost or closed during the exchange.</exception>
     /// <exception cref="ObjectDisposedException">The client was disposed.</exception>
     public Task<PlcStatus> ReadStatusAsync(CancellationToken cancellationToken = default)
-        => Options.CommandSet == HostLinkCommandSet.Fins
-            ? FinsReadStatusAsync(cancellationToken)
-            : CModeAsync(CModeCommands.StatusReadCommand, static (data, _) => CModeResponse.ReadStatus(data), 0, cancellationToken).AsTask();
+        => Commands.ReadStatusAsync(this, cancellationToken);
 
     /// <summary>
     /// Changes the operating mode (C-mode SC; FINS 0401/0402 when the protocol is FINS). Leaving RUN or MONITOR stops
@@ -153,16 +150,8 @@ public partial class HostLinkUnit
     /// <exception cref="HostLinkFrameException">The answer was damaged, from another unit, or not the answer to this command: never returned as data.</exception>
     /// <exception cref="HostLinkConnectionException">The port or socket could not be opened, or was lost or closed during the exchange.</exception>
     /// <exception cref="ObjectDisposedException">The client was disposed.</exception>
-    public async Task SetModeAsync(PlcMode mode, CancellationToken cancellationToken = default)
-    {
-        if (Options.CommandSet == HostLinkCommandSet.Fins)
-        {
-            await (mode == PlcMode.Program ? StopAsync(cancellationToken) : RunAsync(mode, cancellationToken)).ConfigureAwait(false);
-            return;
-        }
-
-        await CModeAsync(new StatusChangeCommand(mode), static (data, _) => ExpectEmpty(data, "SC"), 0, cancellationToken).ConfigureAwait(false);
-    }
+    public Task SetModeAsync(PlcMode mode, CancellationToken cancellationToken = default)
+        => Commands.SetModeAsync(this, mode, cancellationToken);
 
     /// <summary>Reads the error information (MF), clearing the errors afterwards when <paramref name="clear"/> is true.</summary>
     /// <exception cref="HostLinkEndCodeException">The PLC refused the command (its end code, header and unit are in the exception).</exception>
@@ -219,21 +208,21 @@ public partial class HostLinkUnit
 
     // ---- C-mode plumbing ----
 
-    private protected HostLinkRequest Request(CModeCommand command)
+    internal HostLinkRequest Request(CModeCommand command)
     {
         EnsureModelAccepts(command);
         return new(UnitNumber, command.Header, command.ToMessage(UnitNumber), command.Exchange);
     }
 
     /// <summary>How often a command is repeated after a timeout or damage: by what repeating it would do.</summary>
-    private protected int RetriesFor(CommandEffect effect) => effect switch
+    internal int RetriesFor(CommandEffect effect) => effect switch
     {
         CommandEffect.ReadOnly => Options.ReadRetries,
         CommandEffect.Idempotent => Options.WriteRetries,
         _ => 0,
     };
 
-    private protected ValueTask<TResult> CModeAsync<TState, TResult>(CModeCommand command, ResponseDecoder<TState, TResult> decodeData, TState state, CancellationToken cancellationToken)
+    internal ValueTask<TResult> CModeAsync<TState, TResult>(CModeCommand command, ResponseDecoder<TState, TResult> decodeData, TState state, CancellationToken cancellationToken)
         => Connection.ExecuteAsync(
             Request(command),
             RetriesFor(command.Effect),
@@ -241,78 +230,15 @@ public partial class HostLinkUnit
             (decodeData, state, header: command.Header, unit: UnitNumber),
             cancellationToken);
 
-#if NET
-    [System.Runtime.CompilerServices.AsyncMethodBuilder(typeof(System.Runtime.CompilerServices.PoolingAsyncValueTaskMethodBuilder<>))]
-#endif
-    private async ValueTask<ushort[]> CModeReadWordsAsync(PlcAddress address, int count, CancellationToken cancellationToken, PlcModelProfile? model = null)
-    {
-        // The hot path: no command object and no message array (a pooled buffer carries the message); the only
-        // allocation of the protocol work is the result.
-        (CModeArea area, int begin) = CModeAddressing.Map(address, model);
-        int length = AreaReadCommand.GetMessageLength(area);
-        byte[] message = ArrayPool<byte>.Shared.Rent(length);
-        try
-        {
-            AreaReadCommand.WriteMessage(UnitNumber, area, begin, count, address.Bank, message);
-            string header = CModeAreaInfo.ReadHeader(area);
-            var request = new HostLinkRequest(UnitNumber, header, message.AsMemory(0, length), AreaReadCommand.GetExchange(area, count));
-            return await Connection.ExecuteAsync(
-                request,
-                RetriesFor(CommandEffect.ReadOnly),
-                static (text, s) =>
-                {
-                    ReadOnlySpan<byte> data = CModeResponse.GetData(text, s.header, s.unit);
-                    var words = new ushort[s.count];
-                    CModeResponse.ReadWords(data, words);
-                    return words;
-                },
-                (count, header, unit: UnitNumber),
-                cancellationToken).ConfigureAwait(false);
-        }
-        finally
-        {
-            ArrayPool<byte>.Shared.Return(message);
-        }
-    }
-
-    private async Task CModeWriteWordsAsync(PlcAddress address, ReadOnlyMemory<ushort> words, CancellationToken cancellationToken, PlcModelProfile? model = null)
-    {
-        (CModeArea area, int begin) = CModeAddressing.Map(address, model);
-        var command = new AreaWriteCommand(area, begin, words.Span, address.Bank);
-        await CModeAsync(command, static (data, h) => ExpectEmpty(data, h), command.Header, cancellationToken).ConfigureAwait(false);
-    }
-
     private async ValueTask<bool[]> ReadCompletionFlagsAsync(PlcAddress address, int count, CancellationToken cancellationToken)
     {
-        address.EnsureRange(count, Options.CommandSet, forWrite: false);
+        address.EnsureRange(count, Commands.Kind, forWrite: false);
         PlcModelProfile? model = await GetModelProfileAsync(cancellationToken).ConfigureAwait(false);
-        EnsureModel(model, address, count, Options.CommandSet, forWrite: false);
-        if (Options.CommandSet == HostLinkCommandSet.Fins)
-        {
-            return await FinsReadCompletionFlagsAsync(address, count, cancellationToken).ConfigureAwait(false);
-        }
-
-        return await CModeReadCompletionFlagsAsync(address, count, cancellationToken, model).ConfigureAwait(false);
+        Commands.EnsureModel(model, address, count, forWrite: false);
+        return await Commands.ReadCompletionFlagsAsync(this, address, count, model, cancellationToken).ConfigureAwait(false);
     }
 
-    private async ValueTask<bool[]> CModeReadCompletionFlagsAsync(PlcAddress address, int count, CancellationToken cancellationToken, PlcModelProfile? model = null)
-    {
-        address.EnsureRange(count, HostLinkCommandSet.CMode, forWrite: false);
-        (_, int begin) = CModeAddressing.Map(address, model);
-        var command = new AreaReadCommand(CModeArea.TimerCounterStatus, begin, count);
-        return await CModeAsync(
-            command,
-            static (data, n) =>
-            {
-                var flags = new bool[n];
-                CModeResponse.ReadFlags(data, flags);
-                return flags;
-            },
-            count,
-            cancellationToken).ConfigureAwait(false);
-    }
-
-    private static bool ExpectEmpty(ReadOnlySpan<byte> data, string header)
+    internal static bool ExpectEmpty(ReadOnlySpan<byte> data, string header)
     {
         if (!data.IsEmpty)
         {

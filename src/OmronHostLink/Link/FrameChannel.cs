@@ -1,4 +1,3 @@
-using System.Buffers;
 using System.Runtime.CompilerServices;
 using System.Threading.Tasks.Sources;
 using Microsoft.Extensions.Logging;
@@ -16,8 +15,9 @@ namespace OmronHostLink.Link;
 /// between transactions are kept until resynchronisation discards them. The receive loop is a chain of read
 /// completions, not a thread: when bytes complete a read, the next read is issued first and then the waiting frame
 /// read is resumed on that same thread, so the caller resumes with one thread hand-off (the stream's own completion)
-/// and anything the caller then blocks on cannot stall the reception of later bytes. The buffer is bounded: past
-/// 64 KiB without a frame being taken the loop stops reading until the buffer drains.
+/// and anything the caller then blocks on cannot stall the reception of later bytes. The bytes wait in a
+/// <see cref="ReceiveBuffer"/>, bounded: past 64 KiB without a frame being taken the loop stops reading until the buffer
+/// drains (a line that floods the port costs no CPU while nobody reads).
 /// <para>
 /// Not a <c>System.IO.Pipelines</c> pipe: its reader resumes either inline in the writer's flush, where the loop could
 /// not read on until the caller returns (a caller that blocks would stall reception), or through a scheduler, one more
@@ -27,7 +27,9 @@ namespace OmronHostLink.Link;
 /// <para>
 /// One transaction at a time (the connection's gate): <see cref="Begin"/>, frame reads and writes, <see cref="End"/>.
 /// The deadline is one timer from the <see cref="TimeProvider"/>, re-armed for each frame, so a transaction allocates
-/// nothing for it.
+/// nothing for it. The waiting frame read is this object, one reusable <see cref="IValueTaskSource{TResult}"/>: a task
+/// completion source per wait measured 70–100 B more a read when the answer arrives on another thread
+/// (docs/performance.md, read path).
 /// </para>
 /// </remarks>
 internal sealed class FrameChannel : IValueTaskSource<bool>
@@ -48,9 +50,7 @@ internal sealed class FrameChannel : IValueTaskSource<bool>
     private readonly TaskCompletionSource<bool> _readingStopped = new(TaskCreationOptions.RunContinuationsAsynchronously);
 
     // Guarded by _lock.
-    private byte[] _buffer = new byte[4096];
-    private int _start;
-    private int _end;
+    private readonly ReceiveBuffer _received = new();
     private bool _reading;
     private bool _closed;
     private bool _stopped;
@@ -279,8 +279,7 @@ internal sealed class FrameChannel : IValueTaskSource<bool>
         bool resume;
         lock (_lock)
         {
-            discarded = _end - _start;
-            _start = _end = 0;
+            discarded = _received.Clear();
             resume = ConsumedLocked();
         }
 
@@ -341,7 +340,7 @@ internal sealed class FrameChannel : IValueTaskSource<bool>
             {
                 ThrowIfAbortedLocked();
                 ThrowIfCancelledLocked();
-                taken = echo.IsEmpty ? TakeFrameLocked(expectStart, out error) : TakeEchoLocked(echo.Span, out error);
+                taken = echo.IsEmpty ? _received.TakeFrame(expectStart, _frame, out error) : _received.TakeEcho(echo.Span, out error);
                 if (taken == 0 && error is null)
                 {
                     if (_deadlinePassed)
@@ -384,50 +383,6 @@ internal sealed class FrameChannel : IValueTaskSource<bool>
 
             await new ValueTask<bool>(this, _waiter.Version).ConfigureAwait(false);
         }
-    }
-
-    /// <summary>Takes the first complete frame from the buffer into <see cref="Frame"/>, skipping noise before it.</summary>
-    /// <returns>The frame's length, or 0 when no frame is complete yet (or on <paramref name="error"/>).</returns>
-    private int TakeFrameLocked(bool expectStart, out Exception? error)
-    {
-        error = null;
-        int held = _end - _start;
-        var buffer = new ReadOnlySequence<byte>(_buffer, _start, held);
-        FrameScanResult scan = FrameReader.TryReadFrame(ref buffer, expectStart, out ReadOnlySequence<byte> frame, out _);
-        if (scan == FrameScanResult.Overflow)
-        {
-            _start = _end;
-            error = new HostLinkFrameException(FrameError.TooLong, $"More than {FrameReader.MaxFrameLength} characters arrived without a CR.");
-            return 0;
-        }
-
-        // Taken: the frame, or the noise skipped before a frame's start, which is gone for good.
-        _start += held - (int)buffer.Length;
-        if (scan != FrameScanResult.Frame)
-        {
-            return 0;
-        }
-
-        frame.CopyTo(_frame);
-        return (int)frame.Length;
-    }
-
-    /// <summary>Takes our own echoed bytes from the buffer once they are all in, and checks them.</summary>
-    private int TakeEchoLocked(ReadOnlySpan<byte> sent, out Exception? error)
-    {
-        error = null;
-        if (_end - _start < sent.Length)
-        {
-            return 0;
-        }
-
-        if (!_buffer.AsSpan(_start, sent.Length).SequenceEqual(sent))
-        {
-            error = new HostLinkFrameException(FrameError.Unexpected, "The line's echo of our frame differs from what was sent.");
-        }
-
-        _start += sent.Length;
-        return error is null ? sent.Length : 0;
     }
 
     private void ArmDeadline(TimeSpan timeout)
@@ -530,12 +485,7 @@ internal sealed class FrameChannel : IValueTaskSource<bool>
     /// <summary>After bytes were taken: whether a paused receive loop should read again.</summary>
     private bool ConsumedLocked()
     {
-        if (_start == _end)
-        {
-            _start = _end = 0;
-        }
-
-        if (!_reading && !_closed && _end - _start < ResumeThreshold)
+        if (!_reading && !_closed && _received.Held < ResumeThreshold)
         {
             _reading = true;
             return true;
@@ -631,23 +581,9 @@ internal sealed class FrameChannel : IValueTaskSource<bool>
 
         lock (_lock)
         {
-            if (_end + n > _buffer.Length)
-            {
-                int held = _end - _start;
-                if (held + n > _buffer.Length)
-                {
-                    Array.Resize(ref _buffer, Math.Max(_buffer.Length * 2, held + n));
-                }
-
-                Buffer.BlockCopy(_buffer, _start, _buffer, 0, held);
-                _start = 0;
-                _end = held;
-            }
-
-            Buffer.BlockCopy(_readBuffer, 0, _buffer, _end, n);
-            _end += n;
+            _received.Append(_readBuffer.AsSpan(0, n));
             wake |= TakeWaiterLocked();
-            if (_stopReading.IsCancellationRequested || _end - _start >= PauseThreshold)
+            if (_stopReading.IsCancellationRequested || _received.Held >= PauseThreshold)
             {
                 // Held back until a reader drains the buffer (or for good, when stopping).
                 _reading = false;

@@ -21,7 +21,7 @@ namespace OmronHostLink.Link;
 /// </remarks>
 internal sealed class HostLinkConnection : IAsyncDisposable, IDisposable
 {
-    private readonly IHostLinkTransport _transport;
+    private readonly LinkTransport _transport;
     private readonly ILogger _logger;
     private readonly TimeProvider _time;
     private readonly SendSpacing _spacing;
@@ -30,15 +30,11 @@ internal sealed class HostLinkConnection : IAsyncDisposable, IDisposable
     private readonly Resynchroniser _resynchroniser;
     private readonly HostLinkInstruments _instruments;
 
-    private volatile FrameChannel? _channel;
-    private volatile bool _disposed;
-    private int _closedAtOnce;
     private LinkStatus _status = new(LinkState.Closed);
     private int _sid;
 
     public HostLinkConnection(IHostLinkTransport transport, HostLinkConnectionOptions options)
     {
-        _transport = transport;
         _time = options.TimeProvider;
         _spacing = new SendSpacing(options);
         Timing = transport.LineTiming ?? options.LineTiming;
@@ -47,13 +43,14 @@ internal sealed class HostLinkConnection : IAsyncDisposable, IDisposable
         _resynchroniser = new Resynchroniser(Timing, options.TurnaroundAllowance, _time, options.LocalEcho);
         _instruments = HostLinkInstruments.For(options.MeterFactory);
         LinkName = options.LinkName ?? (transport as SerialTransport)?.PortName ?? transport.Description;
+        _transport = new LinkTransport(transport, _logger, _time, _instruments, LinkName);
     }
 
     /// <summary>Where the link stands between transactions.</summary>
     public LinkState State => _status.State;
 
     /// <summary>How often the transport has been opened: a change tells what a PLC held for this link (QQ registrations) may be gone.</summary>
-    public long Openings { get; private set; }
+    public long Openings => _transport.Openings;
 
     /// <summary>The timing every deadline is computed from.</summary>
     public LineTiming Timing { get; }
@@ -77,7 +74,7 @@ internal sealed class HostLinkConnection : IAsyncDisposable, IDisposable
     {
         request.CheckLength();
         int attempt = 0;
-        var telemetry = new CommandTelemetry(_instruments, _time, LinkName, _transport, request);
+        var telemetry = new CommandTelemetry(_instruments, _time, LinkName, _transport.Transport, request);
         try
         {
             while (true)
@@ -145,26 +142,17 @@ internal sealed class HostLinkConnection : IAsyncDisposable, IDisposable
     /// </summary>
     public void Dispose()
     {
-        _disposed = true;
-        if (Interlocked.Exchange(ref _closedAtOnce, 1) == 1)
+        if (!_transport.CloseAtOnce())
         {
             return;
         }
-
-        _channel?.Abort(DisposedDuringExchange());
-        CloseTransportAtOnce();
 
         // Between exchanges the link is tidied here; during one, the exchange does it as it fails.
         if (_gate.Wait(0))
         {
             try
             {
-                if (_channel is not null)
-                {
-                    _channel = null;
-                    _instruments.Connection(LinkName, -1);
-                }
-
+                _transport.ForgetChannel();
                 _status = new LinkStatus(LinkState.Disposed);
             }
             finally
@@ -176,62 +164,24 @@ internal sealed class HostLinkConnection : IAsyncDisposable, IDisposable
 
     public async ValueTask DisposeAsync()
     {
-        if (State == LinkState.Disposed || Volatile.Read(ref _closedAtOnce) == 1)
+        if (State == LinkState.Disposed || _transport.ClosedAtOnce)
         {
-            _disposed = true;
+            _transport.MarkDisposed();
             return;
         }
 
         await _gate.WaitAsync().ConfigureAwait(false);
         try
         {
-            if (State == LinkState.Disposed)
+            if (State != LinkState.Disposed)
             {
-                return;
+                await _transport.DisposeAsync().ConfigureAwait(false);
+                _status = new LinkStatus(LinkState.Disposed);
             }
-
-            _disposed = true;
-            await CloseAsync(lost: false).ConfigureAwait(false);
-            _status = new LinkStatus(LinkState.Disposed);
-            await _transport.DisposeAsync().ConfigureAwait(false);
         }
         finally
         {
             _gate.Release();
-        }
-    }
-
-    private HostLinkConnectionException DisposedDuringExchange()
-        => new($"The client was disposed: the link to {_transport.Description} was closed during the exchange.", new ObjectDisposedException(nameof(HostLinkClient)));
-
-    /// <summary>Closes the transport without waiting: synchronously where it can (every built-in transport does).</summary>
-    private void CloseTransportAtOnce()
-    {
-        try
-        {
-            if (_transport is IDisposable disposable)
-            {
-                disposable.Dispose();
-            }
-            else
-            {
-                _ = ObserveAsync(_transport.DisposeAsync());
-            }
-        }
-        catch (Exception e) when (e is IOException or ObjectDisposedException or InvalidOperationException or UnauthorizedAccessException or System.Net.Sockets.SocketException)
-        {
-            // Closing is all that was asked; a port that fails to close is closed as far as this link goes.
-        }
-
-        static async Task ObserveAsync(ValueTask closing)
-        {
-            try
-            {
-                await closing.ConfigureAwait(false);
-            }
-            catch (Exception e) when (e is IOException or ObjectDisposedException or InvalidOperationException or System.Net.Sockets.SocketException)
-            {
-            }
         }
     }
 
@@ -253,7 +203,7 @@ internal sealed class HostLinkConnection : IAsyncDisposable, IDisposable
         try
         {
             _attempt.Reset();
-            FrameChannel channel = await OpenedAsync(cancellationToken).ConfigureAwait(false);
+            FrameChannel channel = _transport.OpenChannel() ?? await OpenAsync(cancellationToken).ConfigureAwait(false);
             await _spacing.WaitAsync(unit, cancellationToken).ConfigureAwait(false);
             channel.FrameObserver = FrameObserver;
             channel.Begin(cancellationToken);
@@ -381,66 +331,20 @@ internal sealed class HostLinkConnection : IAsyncDisposable, IDisposable
         return roundTrip;
     }
 
-    private async ValueTask<FrameChannel> OpenedAsync(CancellationToken cancellationToken)
+    /// <summary>Opens the closed transport: the link is <see cref="LinkState.Ready"/>.</summary>
+    private async ValueTask<FrameChannel> OpenAsync(CancellationToken cancellationToken)
     {
-        if (State == LinkState.Disposed || _disposed)
-        {
-            throw new ObjectDisposedException(nameof(HostLinkConnection), $"The link to {_transport.Description} is closed.");
-        }
-
-        if (_channel is { } open)
-        {
-            return open;
-        }
-
-        Stream stream = await _transport.OpenAsync(cancellationToken).ConfigureAwait(false);
-        var channel = new FrameChannel(stream, _transport.Description, _logger, _time);
-        _channel = channel;
-        if (_disposed)
-        {
-            // Dispose ran while the transport was opening: it may have missed this stream and this channel.
-            channel.Abort(DisposedDuringExchange());
-            CloseTransportAtOnce();
-            _channel = null;
-            throw DisposedDuringExchange();
-        }
-
+        FrameChannel channel = await _transport.OpenAsync(cancellationToken).ConfigureAwait(false);
         _status = new LinkStatus(LinkState.Ready);
-        Openings++;
-        channel.Start();
-        _instruments.Connection(LinkName, +1);
-        HostLinkLog.Opened(_logger, _transport.Description);
         return channel;
     }
 
     /// <summary>The stream failed: the link is <see cref="LinkState.Broken"/> and its transport is closed now, not later.</summary>
-    private ValueTask BreakAsync(Exception reason)
+    private async ValueTask BreakAsync(Exception reason)
     {
         _status = new LinkStatus(LinkState.Broken);
         HostLinkLog.Lost(_logger, _transport.Description, reason.Message);
-        return CloseAsync(lost: true);
-    }
-
-    /// <summary>Stops the channel and closes the transport: <see cref="LinkState.Closed"/>.</summary>
-    private async ValueTask CloseAsync(bool lost)
-    {
-        FrameChannel? channel = _channel;
-        _channel = null;
-        channel?.RequestStop();
-        try
-        {
-            await _transport.CloseAsync().ConfigureAwait(false);
-        }
-        catch (Exception e) when (lost && e is IOException or ObjectDisposedException)
-        {
-        }
-
-        if (channel is not null)
-        {
-            await channel.WaitStoppedAsync().ConfigureAwait(false);
-            _instruments.Connection(LinkName, -1);
-        }
-
-        _status = new LinkStatus(_disposed ? LinkState.Disposed : LinkState.Closed);
+        await _transport.CloseAsync(lost: true).ConfigureAwait(false);
+        _status = new LinkStatus(_transport.IsDisposed ? LinkState.Disposed : LinkState.Closed);
     }
 }

@@ -163,7 +163,10 @@ public readonly struct PlcTagValue
     /// <summary>The tag.</summary>
     public PlcTag Tag { get; }
 
-    /// <summary>The raw words (one, two or four), as read.</summary>
+    /// <summary>
+    /// The raw words (one, two or four), as read. A bit tag that a plan read as a bit alone (a QQ bit item) has its word
+    /// as far as it was read: the tag's bit, the others 0.
+    /// </summary>
     public IReadOnlyList<ushort> Words { get; }
 
     /// <summary>

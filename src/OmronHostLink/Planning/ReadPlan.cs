@@ -19,9 +19,9 @@ public enum PlannedReadKind
     FinsCompletionFlags,
 
     /// <summary>
-    /// One C-mode QQIR of scattered words registered with QQMR (QQ, the compound read): at most 128 words of one unit,
-    /// one snapshot. The registration is sent when the unit does not hold it; a cycle whose registration would cost
-    /// more than the area reads it replaces reads those instead.
+    /// One C-mode QQIR of scattered words, timer/counter PVs and bits registered with QQMR (QQ, the compound read): at
+    /// most 128 items of one unit, one snapshot. The registration is sent when the unit does not hold it; a cycle whose
+    /// registration would cost more than the area reads it replaces reads those instead.
     /// </summary>
     CModeCompound,
 }
@@ -57,7 +57,10 @@ public sealed class PlannedRead
     /// <summary>Whether the read returns timer/counter completion flags (as words 0 or 1) rather than words.</summary>
     public bool IsCompletionFlags => Kind is PlannedReadKind.CModeCompletionFlags or PlannedReadKind.FinsCompletionFlags;
 
-    /// <summary>The words of a <see cref="PlannedReadKind.FinsMultiple"/> or <see cref="PlannedReadKind.CModeCompound"/> read, in order; empty for area reads.</summary>
+    /// <summary>
+    /// The words of a <see cref="PlannedReadKind.FinsMultiple"/> or <see cref="PlannedReadKind.CModeCompound"/> read, in
+    /// order (a compound read's bit items are bit addresses, read as 0 or 1); empty for area reads.
+    /// </summary>
     public IReadOnlyList<PlcAddress> Items { get; }
 
     /// <summary>Characters on the line both ways (command, answer frames, CR delimiters).</summary>
@@ -66,7 +69,7 @@ public sealed class PlannedRead
     /// <summary>Frame exchanges (each costs a PLC turnaround): 1, or more for a multi-frame C-mode answer.</summary>
     public int Exchanges { get; }
 
-    /// <summary>The address of the <paramref name="index"/>-th word this read returns.</summary>
+    /// <summary>The address of the <paramref name="index"/>-th word (or bit) this read returns.</summary>
     public PlcAddress WordAt(int index) => Kind is PlannedReadKind.FinsMultiple or PlannedReadKind.CModeCompound ? Items[index] : Start.Offset(index);
 
     /// <summary>A compound read's area reads of the same words, for a cycle that would otherwise pay the registration.</summary>
@@ -156,9 +159,17 @@ public sealed class ReadPlan
         {
             PlcTag tag = Tags[t];
             var raw = new ushort[tag.WordCount];
-            for (int i = 0; i < raw.Length; i++)
+            if (tag.Address.IsBit && words.TryGetValue(Key(TagUnits[t], tag.Address), out ushort bit))
             {
-                raw[i] = words[Key(TagUnits[t], tag.Address.AsWord().Offset(i), tag.IsCompletionFlag)];
+                // Read as a bit alone (a QQ bit item): its word as far as it was read, the tag's bit.
+                raw[0] = (ushort)(bit << tag.Address.Bit);
+            }
+            else
+            {
+                for (int i = 0; i < raw.Length; i++)
+                {
+                    raw[i] = words[Key(TagUnits[t], tag.Address.AsWord().Offset(i), tag.IsCompletionFlag)];
+                }
             }
 
             values[t] = new PlcTagValue(tag, raw, Decode(tag, raw, order));
@@ -167,9 +178,10 @@ public sealed class ReadPlan
         return values;
     }
 
-    // A timer's completion flag and its present value share an address; the flag bit keeps them apart.
-    internal static long Key(int unit, PlcAddress word, bool completionFlag = false)
-        => (completionFlag ? 1L << 48 : 0) | ((long)unit << 40) | ((long)word.Area << 32) | ((long)word.Bank << 24) | (uint)word.Word;
+    // A timer's completion flag and its present value share an address, as a word and a bit read alone do: the flag
+    // and the bit number keep them apart.
+    internal static long Key(int unit, PlcAddress address, bool completionFlag = false)
+        => (completionFlag ? 1L << 48 : 0) | ((address.IsBit ? address.Bit + 1L : 0) << 52) | ((long)unit << 40) | ((long)address.Area << 32) | ((long)address.Bank << 24) | (uint)address.Word;
 
     private static object Decode(PlcTag tag, ushort[] raw, WordOrder order)
         => PlcValueCodec.Decode(tag.Type, raw, order, tag.Address.IsBit ? tag.Address.Bit : 0).ToObject();

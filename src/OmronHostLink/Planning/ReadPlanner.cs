@@ -19,17 +19,8 @@ namespace OmronHostLink.Planning;
 /// 135 items (what one FA command frame holds) allows. Timer and counter completion flags (bit tags on <c>T5</c>,
 /// <c>C7</c>) are read by their own commands (C-mode RG, FINS 0101 with bit access), apart from the present values.
 /// </remarks>
-public sealed class ReadPlanner
+public sealed partial class ReadPlanner
 {
-    // Framed sizes, in characters.
-    private const int CModeCommandChars = CModeCommand.PrefixLength + 8 + FrameWriter.FinalOverhead;
-    private const int CModeResponseFixed = CModeResponse.PrefixLength + CModeResponse.EndCodeLength;
-    private const int FinsCommandFixed = 5 + 1 + (2 * (FinsHeader.DirectLength + 2)) + FrameWriter.FinalOverhead;
-    private const int FinsResponseFixed = 5 + 2 + (2 * (FinsHeader.DirectLength + 4)) + FrameWriter.FinalOverhead;
-    private const int FinsAreaParameterChars = 2 * 6;
-    private const int FinsItemCommandChars = 2 * FinsMemoryAddress.Length;
-    private const int FinsItemResponseChars = 2 * 3;
-
     private readonly LineTimingCost _cost;
     private readonly double _turnaroundChars;
 
@@ -71,9 +62,10 @@ public sealed class ReadPlanner
     public bool UseMultipleRead { get; }
 
     /// <summary>
-    /// Whether C-mode plans may use QQ, the compound read: per unit, up to 128 scattered words (CIO, LR, HR, AR, DM, EM;
-    /// timers, counters and completion flags keep their area reads) read with one QQIR where that costs fewer characters
-    /// than their area reads. Default true; false for PLCs without QQ (see <c>HostLinkClientOptions.UseCompoundRead</c>).
+    /// Whether C-mode plans may use QQ, the compound read: per unit, up to 128 items — scattered words of any area C-mode
+    /// reaches, timer/counter PVs (two items each), and bits of CIO, LR, HR and AR whose word no other tag needs —
+    /// read with one QQIR where that costs fewer characters than their area reads (completion flags keep their RG
+    /// reads). Default true; false for PLCs without QQ (see <c>HostLinkClientOptions.UseCompoundRead</c>).
     /// </summary>
     public bool UseCompoundRead { get; init; } = true;
 
@@ -86,6 +78,7 @@ public sealed class ReadPlanner
         Guard.NotNull(tags);
         Guard.Unit(defaultUnit);
         var units = new int[tags.Count];
+        var compoundNeeds = CommandSet == HostLinkCommandSet.CMode && UseCompoundRead ? new CompoundNeeds() : null;
         var spaces = new SortedDictionary<(int Unit, PlcArea Area, int Bank), List<(int Start, int End)>>();
         var flagSpaces = new SortedDictionary<(int Unit, PlcArea Area, int Bank), List<(int Start, int End)>>();
         for (int t = 0; t < tags.Count; t++)
@@ -112,6 +105,7 @@ public sealed class ReadPlanner
             }
 
             spans.Add((word.Word, word.Word + tag.WordCount));
+            compoundNeeds?.Add(units[t], tag);
         }
 
         var reads = new List<PlannedRead>();
@@ -127,9 +121,9 @@ public sealed class ReadPlanner
             PlanFlags(space.Key.Unit, space.Key.Area, Clusters(space.Value), reads);
         }
 
-        if (CommandSet == HostLinkCommandSet.CMode && UseCompoundRead)
+        if (compoundNeeds is not null)
         {
-            PlanCompound(spaces, reads);
+            PlanCompound(spaces, reads, compoundNeeds);
         }
 
         foreach (KeyValuePair<int, List<PlcAddress>> unitItems in multiple)
@@ -148,124 +142,55 @@ public sealed class ReadPlanner
     /// <summary>Characters (both ways) of one C-mode area read of <paramref name="words"/> words, and its frame exchanges.</summary>
     public static int CModeReadCharacters(PlcArea area, int words, out int exchanges)
     {
-        int command = CModeCommandChars + (area == PlcArea.Em ? 2 : 0);
-        int message = CModeResponseFixed + (4 * words);
-        exchanges = FrameWriter.CountFrames(message, CModeResponseFixed, 4);
-        return command + FrameWriter.WireLength(message, CModeResponseFixed, 4) + (exchanges - 1);
+        CModeArea read = CModeAddressing.AreaOf(area);
+        return CModeExchangeCharacters(AreaReadCommand.GetMessageLength(read), AreaReadCommand.MaxAnswerText(read, words), CModeResponse.EndCodeLength, CModeAreaInfo.CharactersPerEntry(read), out exchanges);
     }
 
     /// <summary>Characters (both ways) of one QQIR of <paramref name="words"/> registered words, and its frame exchanges.</summary>
     public static int CompoundReadCharacters(int words, out int exchanges)
-    {
-        int command = CModeCommand.PrefixLength + 2 + FrameWriter.FinalOverhead;
-        int message = CModeResponse.PrefixLength + CompoundCommands.AnswerFixed + (words * 5) - 1;
-        int fixedLength = CModeResponse.PrefixLength + CompoundCommands.AnswerFixed;
-        exchanges = FrameWriter.CountFrames(message, fixedLength, 1);
-        return command + FrameWriter.WireLength(message, fixedLength, 1) + (exchanges - 1);
-    }
+        => CompoundAnswerCharacters(CompoundCommands.DataLength(words, words * CompoundItem.WordAnswerLength), out exchanges);
 
-    /// <summary>Characters (both ways) of the QQMR registering <paramref name="words"/> words, and its frame exchanges.</summary>
-    internal static int CompoundRegisterCharacters(int words, out int exchanges)
+    /// <summary>Characters (both ways) of one QQIR whose answer data is <paramref name="dataLength"/> characters, and its frame exchanges.</summary>
+    internal static int CompoundAnswerCharacters(int dataLength, out int exchanges)
+        => CModeExchangeCharacters(CModeCommand.PrefixLength + CompoundCommands.ReadCommand.TextLength, CompoundCommands.AnswerFixed + dataLength, CompoundCommands.AnswerFixed, atom: 1, out exchanges);
+
+    /// <summary>Characters (both ways) of the QQMR registering <paramref name="items"/> items, and its frame exchanges.</summary>
+    internal static int CompoundRegisterCharacters(int items, out int exchanges)
     {
-        int message = CModeCommand.PrefixLength + 2 + (words * (CompoundItem.Length + 1)) - 1;
-        int fixedLength = CModeCommand.PrefixLength + 2 + CompoundItem.Length;
-        exchanges = FrameWriter.CountFrames(message, fixedLength, CompoundItem.Length + 1);
+        int message = CModeCommand.PrefixLength + CompoundRegisterCommand.GetTextLength(items);
+        int fixedLength = CModeCommand.PrefixLength + CompoundRegisterCommand.GetTextLength(1);
+        exchanges = FrameWriter.CountFrames(message, fixedLength, CompoundRegisterCommand.ItemAtomLength);
         int answer = CModeResponse.PrefixLength + CompoundCommands.AnswerFixed + FrameWriter.FinalOverhead;
-        return FrameWriter.WireLength(message, fixedLength, CompoundItem.Length + 1) + (exchanges - 1) + answer;
+        return FrameWriter.WireLength(message, fixedLength, CompoundRegisterCommand.ItemAtomLength) + (exchanges - 1) + answer;
     }
 
     /// <summary>Characters (both ways) of one C-mode RG read of <paramref name="flags"/> completion flags, and its frame exchanges.</summary>
     internal static int CModeFlagCharacters(int flags, out int exchanges)
-    {
-        int message = CModeResponseFixed + flags;
-        exchanges = FrameWriter.CountFrames(message, CModeResponseFixed, 1);
-        return CModeCommandChars + FrameWriter.WireLength(message, CModeResponseFixed, 1) + (exchanges - 1);
-    }
+        => CModeExchangeCharacters(AreaReadCommand.GetMessageLength(CModeArea.TimerCounterStatus), AreaReadCommand.MaxAnswerText(CModeArea.TimerCounterStatus, flags), CModeResponse.EndCodeLength, CModeAreaInfo.CharactersPerEntry(CModeArea.TimerCounterStatus), out exchanges);
 
     /// <summary>Characters (both ways) of one FINS 0101 read of <paramref name="flags"/> completion flags (one byte each).</summary>
     internal static int FinsFlagCharacters(int flags)
-        => FinsCommandFixed + FinsAreaParameterChars + FinsResponseFixed + (2 * flags);
+        => FinsMessage.DirectCommandFrameLength(MemoryAreaReadCommand.ParametersLength) + FinsMessage.DirectResponseFrameLength(flags * FinsMemoryArea.BitSize);
 
     /// <summary>Characters (both ways) of one FINS 0101 read of <paramref name="words"/> words (at most 269).</summary>
     public static int FinsReadCharacters(int words)
-        => FinsCommandFixed + FinsAreaParameterChars + FinsResponseFixed + (4 * words);
+        => FinsMessage.DirectCommandFrameLength(MemoryAreaReadCommand.ParametersLength) + FinsMessage.DirectResponseFrameLength(words * FinsMemoryArea.WordSize);
 
     /// <summary>Characters (both ways) of one FINS 0104 read of <paramref name="items"/> words.</summary>
     public static int MultipleChars(int items)
-        => FinsCommandFixed + FinsResponseFixed + (items * (FinsItemCommandChars + FinsItemResponseChars));
+        => FinsMessage.DirectCommandFrameLength(items * FinsMemoryAddress.Length) + FinsMessage.DirectResponseFrameLength(items * MultipleMemoryAreaReadCommand.ResponseItemLength(FinsMemoryArea.WordSize));
 
     /// <summary>
-    /// Per unit, whether one QQIR of some of its words (the dearest to read by area, up to 128) plus area reads of the
-    /// rest costs fewer characters a cycle than the area reads alone; if so the unit's area reads of those areas are
-    /// replaced. The registration is not counted here: it is paid once, not per cycle.
+    /// Characters both ways of one C-mode exchange: the command in one frame, then the answer (<paramref name="answerText"/>
+    /// characters after the header, of which <paramref name="answerFixed"/> stay in the first frame) cut into frames
+    /// between units of <paramref name="atom"/> characters, and the host's CR asking for each frame after the first.
     /// </summary>
-    private void PlanCompound(SortedDictionary<(int Unit, PlcArea Area, int Bank), List<(int Start, int End)>> spaces, List<PlannedRead> reads)
+    private static int CModeExchangeCharacters(int commandMessage, int answerText, int answerFixed, int atom, out int exchanges)
     {
-        foreach (int unit in spaces.Keys.Select(k => k.Unit).Distinct().ToArray())
-        {
-            var eligible = spaces.Where(s => s.Key.Unit == unit && s.Key.Area is not (PlcArea.Timer or PlcArea.Counter)).ToArray();
-            if (eligible.Length == 0)
-            {
-                continue;
-            }
-
-            List<PlannedRead> current = reads.Where(r => r.Kind == PlannedReadKind.CModeArea && r.Unit == unit && r.Start.Area is not (PlcArea.Timer or PlcArea.Counter)).ToList();
-            double currentCost = current.Sum(r => r.Characters + (r.Exchanges * _turnaroundChars));
-
-            // The clusters dearest per word when read alone go to QQ first.
-            var clusters = eligible
-                .SelectMany(s => Clusters(s.Value).Select(c => (s.Key.Area, s.Key.Bank, c.Start, c.End)))
-                .OrderByDescending(c => RangeCost(c.Area, c.End - c.Start) / (c.End - c.Start))
-                .ThenBy(c => c.Area).ThenBy(c => c.Start)
-                .ToList();
-            var words = new List<PlcAddress>();
-            var rest = new Dictionary<(PlcArea Area, int Bank), List<(int Start, int End)>>();
-            foreach ((PlcArea area, int bank, int start, int end) in clusters)
-            {
-                if (words.Count + (end - start) <= CompoundItem.MaxWeight)
-                {
-                    for (int w = start; w < end; w++)
-                    {
-                        words.Add(PlcAddress.WordOf(area, w, bank));
-                    }
-                }
-                else
-                {
-                    if (!rest.TryGetValue((area, bank), out List<(int, int)>? list))
-                    {
-                        rest[(area, bank)] = list = new List<(int, int)>();
-                    }
-
-                    list.Add((start, end));
-                }
-            }
-
-            var restReads = new List<PlannedRead>();
-            foreach (KeyValuePair<(PlcArea Area, int Bank), List<(int Start, int End)>> space in rest)
-            {
-                PlanSpace(unit, space.Key.Area, space.Key.Bank, Clusters(space.Value), restReads, new SortedDictionary<int, List<PlcAddress>>());
-            }
-
-            int chars = CompoundReadCharacters(words.Count, out int exchanges);
-            double compoundCost = chars + (exchanges * _turnaroundChars) + restReads.Sum(r => r.Characters + (r.Exchanges * _turnaroundChars));
-            if (words.Count == 0 || compoundCost >= currentCost)
-            {
-                continue;
-            }
-
-            // Area reads of the same words, for a cycle that would have to pay the registration.
-            var fallback = new List<PlannedRead>();
-            foreach (IGrouping<(PlcArea Area, int Bank), PlcAddress> space in words.GroupBy(w => (w.Area, w.Bank)))
-            {
-                var spans = space.Select(w => (w.Word, w.Word + 1)).ToList();
-                PlanSpace(unit, space.Key.Area, space.Key.Bank, Clusters(spans), fallback, new SortedDictionary<int, List<PlcAddress>>());
-            }
-
-            int at = reads.IndexOf(current[0]);
-            reads.RemoveAll(current.Contains);
-            var compound = new PlannedRead(PlannedReadKind.CModeCompound, unit, words[0], words.Count, words.ToArray(), chars, exchanges, fallback, CompoundRegisterCharacters(words.Count, out _));
-            reads.InsertRange(Math.Min(at, reads.Count), restReads.Prepend(compound));
-        }
+        int answer = CModeResponse.PrefixLength + answerText;
+        int fixedLength = CModeResponse.PrefixLength + answerFixed;
+        exchanges = FrameWriter.CountFrames(answer, fixedLength, atom);
+        return commandMessage + FrameWriter.FinalOverhead + FrameWriter.WireLength(answer, fixedLength, atom) + (exchanges - 1);
     }
 
     private static List<(int Start, int End)> Clusters(List<(int Start, int End)> spans)
@@ -304,7 +229,7 @@ public sealed class ReadPlanner
     private void PlanSpace(int unit, PlcArea area, int bank, List<(int Start, int End)> clusters, List<PlannedRead> reads, SortedDictionary<int, List<PlcAddress>> multiple)
     {
         bool items = CommandSet == HostLinkCommandSet.Fins && UseMultipleRead;
-        const int ItemChars = FinsItemCommandChars + FinsItemResponseChars;
+        int itemChars = MultipleChars(1) - MultipleChars(0);
         int n = clusters.Count;
 
         // best[i]: cheapest way to read clusters 0..i-1; from[i] = j: clusters j..i-1 are one area read; -1: cluster i-1 as 0104 items.
@@ -325,7 +250,7 @@ public sealed class ReadPlanner
 
             if (items)
             {
-                double cost = best[i - 1] + ((clusters[i - 1].End - clusters[i - 1].Start) * ItemChars);
+                double cost = best[i - 1] + ((clusters[i - 1].End - clusters[i - 1].Start) * itemChars);
                 if (cost < best[i])
                 {
                     best[i] = cost;

@@ -52,6 +52,13 @@ public sealed class CompoundReadTests : IAsyncDisposable
     }
 
     [Fact]
+    public async Task A_bit_of_DM_is_read_through_its_word()
+    {
+        (await _client.ReadCompoundAsync(["D100.04", "D100.05", "H7.07"])).Should().Equal(1, 0, 1);
+        _sent.Should().Contain(f => f.StartsWith("@00QQMRDM  0100CH,DM  0100CH,HR  000707", StringComparison.Ordinal));
+    }
+
+    [Fact]
     public async Task A_PLC_that_lost_the_registration_is_registered_again_once()
     {
         string[] tags = ["D100", "D5000"];

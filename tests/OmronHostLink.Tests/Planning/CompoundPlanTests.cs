@@ -49,10 +49,56 @@ public sealed class CompoundPlanTests : IAsyncDisposable
         ReadPlan areas = new ReadPlanner { UseCompoundRead = false }.Plan(tags);
         ReadPlan plan = new ReadPlanner().Plan(tags);
 
-        plan.Reads.Where(r => r.Kind == PlannedReadKind.CModeCompound).Select(r => (r.Unit, r.Count)).Should().Equal((0, 20), (1, 10));
-        plan.Reads.Should().ContainSingle(r => r.Kind == PlannedReadKind.CModeArea).Which.Start.Area.Should().Be(PlcArea.Timer);
+        // The timer's PV is one more item of unit 0's QQIR (its flag and PV: five characters instead of an RC read).
+        plan.Reads.Select(r => (r.Kind, r.Unit, r.Count)).Should().Equal((PlannedReadKind.CModeCompound, 0, 21), (PlannedReadKind.CModeCompound, 1, 10));
+        plan.Reads[0].Items.Should().Contain(PlcAddress.Parse("T5"));
         plan.Characters.Should().BeLessThan(areas.Characters);
-        plan.Reads[0].Characters.Should().Be(ReadPlanner.CompoundReadCharacters(20, out _));
+        plan.Reads[1].Characters.Should().Be(ReadPlanner.CompoundReadCharacters(10, out _));
+        plan.Reads[0].Characters.Should().Be(ReadPlanner.CompoundReadCharacters(21, out _) + 1, "a PV answers with its completion flag first");
+    }
+
+    [Fact]
+    public void A_word_only_bit_tags_need_is_registered_as_its_bits_where_QQ_reads_bits()
+    {
+        PlcTag[] tags =
+        [
+            .. Isolated(10),
+            PlcTag.Parse("CIO100.03:bit"), PlcTag.Parse("H200.15:bit"), // bits alone: one character each
+            PlcTag.Parse("H300.01:bit"), PlcTag.Parse("H300:word"), // the word is read anyway
+            PlcTag.Parse("A400.00:bit"), PlcTag.Parse("A400.01:bit"), PlcTag.Parse("A400.02:bit"), // three bits: the word is shorter
+            PlcTag.Parse("D9000.04:bit"), // DM is read by words
+        ];
+
+        PlannedRead qq = new ReadPlanner().Plan(tags).Reads.Should().ContainSingle().Which;
+
+        qq.Kind.Should().Be(PlannedReadKind.CModeCompound);
+        qq.Items.Where(a => a.IsBit).Should().BeEquivalentTo([PlcAddress.Parse("CIO100.03"), PlcAddress.Parse("H200.15")]);
+        qq.Items.Should().Contain([PlcAddress.Parse("H300"), PlcAddress.Parse("A400"), PlcAddress.Parse("D9000")]);
+        qq.Count.Should().Be(15);
+    }
+
+    [Fact]
+    public async Task Bits_and_PVs_read_with_QQ_decode_as_their_area_reads_do()
+    {
+        _plc.WriteWord(PlcArea.Cio, 100, 0x0008);
+        _plc.WriteWord(PlcArea.Holding, 200, 0x7FFF);
+        _plc.WriteWord(PlcArea.Holding, 300, 0x0002);
+        _plc.WriteWord(PlcArea.Auxiliary, 400, 0x0005);
+        _plc.WriteWord(PlcArea.Timer, 5, 0x0123);
+        PlcTag[] tags =
+        [
+            .. Isolated(10),
+            PlcTag.Parse("CIO100.03:bit"), PlcTag.Parse("H200.15:bit"), PlcTag.Parse("H300.01:bit"), PlcTag.Parse("H300:word"),
+            PlcTag.Parse("A400.00:bit"), PlcTag.Parse("A400.01:bit"), PlcTag.Parse("A400.02:bit"), PlcTag.Parse("D9000.04:bit"),
+            new PlcTag("T5", PlcValueType.Word, null),
+        ];
+
+        PlcTagValue[] byQq = await _client.ReadTagsAsync(tags);
+        PlcTagValue[] byArea = await _client.ReadTagsAsync(new ReadPlanner(HostLinkCommandSet.CMode, _client.LineTiming) { UseCompoundRead = false }.Plan(tags));
+
+        Sent("@00QQIR").Should().Be(1);
+        byQq.Select(v => v.Value).Should().Equal(byArea.Select(v => v.Value));
+        byQq.Skip(10).Select(v => v.Value).Should().Equal(true, false, true, (ushort)2, true, false, true, true, (ushort)0x0123); // D9000 = 63000 = F618 hex
     }
 
     [Fact]

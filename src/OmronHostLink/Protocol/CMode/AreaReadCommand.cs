@@ -41,13 +41,16 @@ internal sealed class AreaReadCommand : CModeCommand
     /// <inheritdoc/>
     internal override int MaxAnswerTextLength => MaxAnswerText(Area, Count);
 
+    /// <inheritdoc/>
+    internal override ExchangeShape Exchange => GetExchange(Area, Count);
+
     /// <summary>The one row per area (RR, RL, RH, RC, RG, RD, RJ, RE), by <see cref="CModeArea"/>.</summary>
     internal static CModeCommandRow[] Rows { get; } = CreateRows();
 
     /// <summary>The answer text of a read of <paramref name="count"/> entries: end code and the entries.</summary>
     internal static int MaxAnswerText(CModeArea area, int count) => CModeResponse.EndCodeLength + (count * CModeAreaInfo.CharactersPerEntry(area));
 
-    /// <summary>How a read of <paramref name="count"/> entries of <paramref name="area"/> travels; the command object's <see cref="CModeCommand.Exchange"/> is the same.</summary>
+    /// <summary>How a read of <paramref name="count"/> entries of <paramref name="area"/> travels (what the command object's <see cref="Exchange"/> is): one frame out, the answer in as many as it needs.</summary>
     internal static ExchangeShape GetExchange(CModeArea area, int count)
         => ExchangeShape.CMode(
             GetMessageLength(area),

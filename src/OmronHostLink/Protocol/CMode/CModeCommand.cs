@@ -40,7 +40,7 @@ internal abstract class CModeCommand
     internal virtual CommandEffect Effect => Row.Effect;
 
     /// <summary>How the command travels and is answered.</summary>
-    internal ExchangeShape Exchange => ExchangeShape.CMode(
+    internal virtual ExchangeShape Exchange => ExchangeShape.CMode(
         PrefixLength + FixedTextLength,
         AtomLength,
         MayUseSeveralFrames,

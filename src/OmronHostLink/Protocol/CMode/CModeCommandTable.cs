@@ -19,23 +19,7 @@ internal sealed class CModeCommandTable
 
     /// <summary>This table with <paramref name="rows"/> added; a row whose key is already present replaces it.</summary>
     public CModeCommandTable With(params CModeCommandRow[] rows)
-    {
-        var list = new List<CModeCommandRow>(_rows);
-        foreach (CModeCommandRow row in rows)
-        {
-            int at = list.FindIndex(r => r.Key == row.Key);
-            if (at >= 0)
-            {
-                list[at] = row;
-            }
-            else
-            {
-                list.Add(row);
-            }
-        }
-
-        return new CModeCommandTable(list.ToArray());
-    }
+        => new CModeCommandTable(TableRows.With(_rows, rows, r => r.Key));
 
     /// <summary>
     /// The row of a header and the text after it: a row with a sub-header matches when the text starts with it; a

@@ -47,14 +47,17 @@ internal static class CompoundCommands
     /// <summary>Characters of the data of a QQIR answer to <paramref name="items"/>: each item and a comma between two.</summary>
     public static int DataLength(IReadOnlyList<CompoundItem> items)
     {
-        int length = Math.Max(0, items.Count - 1);
+        int length = 0;
         foreach (CompoundItem item in items)
         {
             length += item.AnswerLength;
         }
 
-        return length;
+        return DataLength(items.Count, length);
     }
+
+    /// <summary>Characters of the data of a QQIR answer to <paramref name="items"/> items that take <paramref name="itemCharacters"/> in all: the items and a comma between two.</summary>
+    public static int DataLength(int items, int itemCharacters) => itemCharacters + Math.Max(0, items - 1);
 
     /// <summary>
     /// Reads the data of a QQIR answer (after sub-header and end code) registered as <paramref name="items"/>: one value
@@ -167,7 +170,7 @@ internal static class CompoundCommands
     }
 
     private static CModeCommandRow CreateReadRow()
-        => new("QQ", "READ I/O MEMORY (QQIR)", CommandEffect.ReadOnly, AnswerFixed + ((CompoundItem.MaxWeight * 5) - 1))
+        => new("QQ", "READ I/O MEMORY (QQIR)", CommandEffect.ReadOnly, AnswerFixed + DataLength(CompoundItem.MaxWeight, CompoundItem.MaxWeight * CompoundItem.WordAnswerLength))
         {
             SubHeader = Read,
             Parse = static text =>
@@ -246,13 +249,19 @@ internal sealed class CompoundRegisterCommand : CModeCommand
     public override CModeCommandRow Row => CompoundCommands.RegisterRow;
 
     /// <inheritdoc/>
-    public override int TextLength => 2 + (_items.Length * (CompoundItem.Length + 1)) - 1;
+    public override int TextLength => GetTextLength(_items.Length);
 
     /// <summary>The sub-header and the first item stay in the first frame.</summary>
-    public override int FixedTextLength => 2 + CompoundItem.Length;
+    public override int FixedTextLength => GetTextLength(1);
 
     /// <summary>Later items travel as ",item": a frame is cut before a comma.</summary>
-    public override int AtomLength => CompoundItem.Length + 1;
+    public override int AtomLength => ItemAtomLength;
+
+    /// <summary>Characters of a later item with the comma before it: what a frame of the command is cut between.</summary>
+    public const int ItemAtomLength = CompoundItem.Length + 1;
+
+    /// <summary>Characters of the text registering <paramref name="items"/> items: the sub-header, then the items with a comma between two.</summary>
+    public static int GetTextLength(int items) => CompoundCommands.Register.Length + (items * ItemAtomLength) - 1;
 
     /// <inheritdoc/>
     public override void WriteText(Span<byte> destination)

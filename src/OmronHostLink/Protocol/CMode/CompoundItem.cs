@@ -40,6 +40,15 @@ internal readonly struct CompoundItem : IEquatable<CompoundItem>
     /// <summary>Characters of one item in QQMR: area 4, word 4, format 2.</summary>
     public const int Length = 10;
 
+    /// <summary>Characters of a word in the QQIR answer: four hex digits.</summary>
+    public const int WordAnswerLength = 4;
+
+    /// <summary>Characters of a bit (or a completion flag alone) in the QQIR answer: 0 or 1.</summary>
+    public const int BitAnswerLength = 1;
+
+    /// <summary>Characters of a timer/counter read with <c>CH</c> in the QQIR answer: the completion flag, then the PV.</summary>
+    public const int TimerCounterAnswerLength = BitAnswerLength + WordAnswerLength;
+
     /// <summary>The most items one registration holds (a timer/counter PV counts as two).</summary>
     public const int MaxWeight = 128;
 
@@ -76,7 +85,7 @@ internal readonly struct CompoundItem : IEquatable<CompoundItem>
     public int Weight => IsTimerCounterWord ? 2 : 1;
 
     /// <summary>Characters the item takes in the QQIR answer (without the comma before it).</summary>
-    public int AnswerLength => IsBit ? 1 : IsTimerCounterWord ? 5 : 4;
+    public int AnswerLength => IsBit ? BitAnswerLength : IsTimerCounterWord ? TimerCounterAnswerLength : WordAnswerLength;
 
     /// <summary>A word item.</summary>
     /// <exception cref="ArgumentOutOfRangeException">The word or bank is beyond what QQ reaches.</exception>
@@ -86,7 +95,13 @@ internal readonly struct CompoundItem : IEquatable<CompoundItem>
     /// <exception cref="ArgumentOutOfRangeException">The word, bit or bank is beyond what QQ reaches.</exception>
     public static CompoundItem ForBit(CompoundArea area, int word, int bit, int bank = 0) => Create(area, word, bit, bank);
 
-    /// <summary>The item reading <paramref name="address"/>: its bit for a bit address, else its word.</summary>
+    /// <summary>
+    /// Whether QQ reads single bits of <paramref name="area"/>: CIO, LR, HR and AR (DM and EM are read as words whatever
+    /// the format; a timer or counter's "bit" is its completion flag).
+    /// </summary>
+    public static bool ReadsBits(PlcArea area) => area is PlcArea.Cio or PlcArea.Link or PlcArea.Holding or PlcArea.Auxiliary;
+
+    /// <summary>The item reading <paramref name="address"/>: its bit for a bit address of an area <see cref="ReadsBits"/>, else its word.</summary>
     /// <exception cref="ArgumentException">The address is in the work area, which C-mode cannot reach.</exception>
     /// <exception cref="ArgumentOutOfRangeException">The address is beyond what QQ reaches.</exception>
     public static CompoundItem For(PlcAddress address)
@@ -103,7 +118,7 @@ internal readonly struct CompoundItem : IEquatable<CompoundItem>
             PlcArea.Em => CompoundArea.Em,
             _ => throw new ArgumentException($"{address} is in the {PlcAreaInfo.Name(address.Area)}, which C-mode cannot reach; {CommandSetAdvice.UseFins()}.", nameof(address)),
         };
-        return address.IsBit ? ForBit(area, address.Word, address.Bit, address.Bank) : ForWord(area, address.Word, address.Bank);
+        return address.IsBit && ReadsBits(address.Area) ? ForBit(area, address.Word, address.Bit, address.Bank) : ForWord(area, address.Word, address.Bank);
     }
 
     /// <summary>The PLC word (or timer/counter) the item names; EM's current bank is taken as <paramref name="currentBank"/>.</summary>

@@ -4,10 +4,13 @@ namespace OmronHostLink.Protocol.Fins;
 internal sealed class ClockReadCommand : FinsCommand
 {
     /// <summary>The command code, 0701.</summary>
-    public const ushort Code = FinsCommandCodes.ClockRead;
+    public const ushort Code = 0x0701;
+
+    /// <summary>The command's row: 0701 CLOCK READ.</summary>
+    internal static FinsCommandRow CommandRow { get; } = new(Code, "CLOCK READ", CommandEffect.ReadOnly, FinsClock.Length) { Parse = static p => ParseParameters(p) };
 
     /// <inheritdoc/>
-    public override ushort CommandCode => Code;
+    public override FinsCommandRow Row => CommandRow;
 
     /// <inheritdoc/>
     public override int ParameterLength => 0;

@@ -8,7 +8,10 @@ namespace OmronHostLink.Protocol.Fins;
 internal sealed class ClockWriteCommand : FinsCommand
 {
     /// <summary>The command code, 0702.</summary>
-    public const ushort Code = FinsCommandCodes.ClockWrite;
+    public const ushort Code = 0x0702;
+
+    /// <summary>The command's row: 0702 CLOCK WRITE.</summary>
+    internal static FinsCommandRow CommandRow { get; } = new(Code, "CLOCK WRITE", CommandEffect.NotRepeatable, 0) { Parse = static p => ParseParameters(p) };
 
     /// <summary>Sets the clock to <paramref name="time"/> (to the second), with its day of week.</summary>
     /// <exception cref="ArgumentOutOfRangeException">The year is outside 1970–2069.</exception>
@@ -42,7 +45,7 @@ internal sealed class ClockWriteCommand : FinsCommand
     }
 
     /// <inheritdoc/>
-    public override ushort CommandCode => Code;
+    public override FinsCommandRow Row => CommandRow;
 
     /// <inheritdoc/>
     public override int ParameterLength => 5 + (IncludesSecond ? 1 : 0) + (DayOfWeek is null ? 0 : 1);

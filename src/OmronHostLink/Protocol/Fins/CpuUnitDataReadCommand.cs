@@ -7,7 +7,10 @@ namespace OmronHostLink.Protocol.Fins;
 internal sealed class CpuUnitDataReadCommand : FinsCommand
 {
     /// <summary>The command code, 0501.</summary>
-    public const ushort Code = FinsCommandCodes.CpuUnitDataRead;
+    public const ushort Code = 0x0501;
+
+    /// <summary>The command's row: 0501 CPU UNIT DATA READ.</summary>
+    internal static FinsCommandRow CommandRow { get; } = new(Code, "CPU UNIT DATA READ", CommandEffect.ReadOnly, FinsCpuUnitData.MaxLength) { Parse = static p => ParseParameters(p) };
 
     /// <summary>Reads the CPU Unit data with no parameter.</summary>
     public CpuUnitDataReadCommand()
@@ -18,7 +21,7 @@ internal sealed class CpuUnitDataReadCommand : FinsCommand
     public CpuUnitDataReadCommand(byte selector) => Selector = selector;
 
     /// <inheritdoc/>
-    public override ushort CommandCode => Code;
+    public override FinsCommandRow Row => CommandRow;
 
     /// <inheritdoc/>
     public override int ParameterLength => Selector is null ? 0 : 1;

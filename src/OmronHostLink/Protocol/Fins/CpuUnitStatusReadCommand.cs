@@ -4,10 +4,13 @@ namespace OmronHostLink.Protocol.Fins;
 internal sealed class CpuUnitStatusReadCommand : FinsCommand
 {
     /// <summary>The command code, 0601.</summary>
-    public const ushort Code = FinsCommandCodes.CpuUnitStatusRead;
+    public const ushort Code = 0x0601;
+
+    /// <summary>The command's row: 0601 CPU UNIT STATUS READ.</summary>
+    internal static FinsCommandRow CommandRow { get; } = new(Code, "CPU UNIT STATUS READ", CommandEffect.ReadOnly, FinsCpuStatus.Length) { Parse = static p => ParseParameters(p) };
 
     /// <inheritdoc/>
-    public override ushort CommandCode => Code;
+    public override FinsCommandRow Row => CommandRow;
 
     /// <inheritdoc/>
     public override int ParameterLength => 0;

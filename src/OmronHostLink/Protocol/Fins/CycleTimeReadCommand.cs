@@ -7,20 +7,29 @@ namespace OmronHostLink.Protocol.Fins;
 internal sealed class CycleTimeReadCommand : FinsCommand
 {
     /// <summary>The command code, 0620.</summary>
-    public const ushort Code = FinsCommandCodes.CycleTimeRead;
+    public const ushort Code = 0x0620;
+
+    /// <summary>The command's row: 0620 CYCLE TIME READ.</summary>
+    internal static FinsCommandRow CommandRow { get; } = new(Code, "CYCLE TIME READ", CommandEffect.ReadOnly, FinsCycleTime.Length) { Parse = static p => ParseParameters(p) };
 
     /// <summary>Creates the command.</summary>
     /// <param name="initialize">True to reset the measurements (00), false to read them (01).</param>
     public CycleTimeReadCommand(bool initialize = false) => Initialize = initialize;
 
     /// <inheritdoc/>
-    public override ushort CommandCode => Code;
+    public override FinsCommandRow Row => CommandRow;
 
     /// <inheritdoc/>
     public override int ParameterLength => 1;
 
     /// <summary>True for initialise (00), false for read (01).</summary>
     public bool Initialize { get; }
+
+    /// <summary>Reading is repeatable; initialising restarts the measurement, so it is not repeated.</summary>
+    public override CommandEffect Effect => Initialize ? CommandEffect.NotRepeatable : CommandEffect.ReadOnly;
+
+    /// <summary>Initialising is answered without data.</summary>
+    public override int MaxResponseDataLength => Initialize ? 0 : FinsCycleTime.Length;
 
     /// <inheritdoc/>
     public override void WriteParameters(Span<byte> destination)

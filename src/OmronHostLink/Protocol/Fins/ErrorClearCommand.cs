@@ -7,7 +7,10 @@ namespace OmronHostLink.Protocol.Fins;
 internal sealed class ErrorClearCommand : FinsCommand
 {
     /// <summary>The command code, 2101.</summary>
-    public const ushort Code = FinsCommandCodes.ErrorClear;
+    public const ushort Code = 0x2101;
+
+    /// <summary>The command's row: 2101 ERROR CLEAR.</summary>
+    internal static FinsCommandRow CommandRow { get; } = new(Code, "ERROR CLEAR", CommandEffect.NotRepeatable, 0) { Parse = static p => ParseParameters(p) };
 
     /// <summary>The error code that clears all errors.</summary>
     public const ushort AllErrors = 0xFFFF;
@@ -17,7 +20,7 @@ internal sealed class ErrorClearCommand : FinsCommand
     public ErrorClearCommand(ushort errorCode = AllErrors) => ErrorCode = errorCode;
 
     /// <inheritdoc/>
-    public override ushort CommandCode => Code;
+    public override FinsCommandRow Row => CommandRow;
 
     /// <inheritdoc/>
     public override int ParameterLength => 2;

@@ -8,7 +8,10 @@ namespace OmronHostLink.Protocol.Fins;
 internal sealed class ErrorLogReadCommand : FinsCommand
 {
     /// <summary>The command code, 2102.</summary>
-    public const ushort Code = FinsCommandCodes.ErrorLogRead;
+    public const ushort Code = 0x2102;
+
+    /// <summary>The command's row: 2102 ERROR LOG READ.</summary>
+    internal static FinsCommandRow CommandRow { get; } = new(Code, "ERROR LOG READ", CommandEffect.ReadOnly, FinsErrorLog.HeaderLength + (MaxRecords * FinsErrorLogRecord.Length)) { Parse = static p => ParseParameters(p) };
 
     /// <summary>The most records one FA response carries: (538 − 6) / 10.</summary>
     public const int MaxRecords = 53;
@@ -26,7 +29,7 @@ internal sealed class ErrorLogReadCommand : FinsCommand
     }
 
     /// <inheritdoc/>
-    public override ushort CommandCode => Code;
+    public override FinsCommandRow Row => CommandRow;
 
     /// <inheritdoc/>
     public override int ParameterLength => 4;
@@ -36,6 +39,9 @@ internal sealed class ErrorLogReadCommand : FinsCommand
 
     /// <summary>How many records are asked for.</summary>
     public int Count { get; }
+
+    /// <inheritdoc/>
+    public override int MaxResponseDataLength => FinsErrorLog.HeaderLength + (Count * FinsErrorLogRecord.Length);
 
     /// <inheritdoc/>
     public override void WriteParameters(Span<byte> destination)

@@ -1,9 +1,10 @@
 namespace OmronHostLink.Protocol.Fins;
 
 /// <summary>
-/// A FINS command: its command code (MRC SRC) and its parameters. Each command this library models is a small
-/// immutable subtype that validates its values when constructed; <see cref="Parse"/> rebuilds the typed command from
-/// received bytes (codes it does not model become a <see cref="RawFinsCommand"/>).
+/// A FINS command: its row (<see cref="FinsCommandRow"/>: code, name, effect, longest answer) and its parameters. Each
+/// command this library models is a small immutable subtype that validates its values when constructed;
+/// <see cref="Parse"/> rebuilds the typed command from received bytes (codes it does not model become a
+/// <see cref="RawFinsCommand"/>).
 /// </summary>
 /// <remarks>Two commands are equal when they have the same type, code and parameter bytes.</remarks>
 internal abstract class FinsCommand : IEquatable<FinsCommand>
@@ -20,8 +21,17 @@ internal abstract class FinsCommand : IEquatable<FinsCommand>
     {
     }
 
+    /// <summary>The command's row in the command table: code, name, effect and longest answer.</summary>
+    public abstract FinsCommandRow Row { get; }
+
     /// <summary>The command code, MRC × 256 + SRC (for example 0x0101).</summary>
-    public abstract ushort CommandCode { get; }
+    public ushort CommandCode => Row.Code;
+
+    /// <summary>What repeating this command would do. Default: the row's.</summary>
+    public virtual CommandEffect Effect => Row.Effect;
+
+    /// <summary>The most data bytes after MRES SRES the answer to this command can carry. Default: the row's.</summary>
+    public virtual int MaxResponseDataLength => Row.MaxResponseData;
 
     /// <summary>How many parameter bytes follow MRC SRC.</summary>
     public abstract int ParameterLength { get; }
@@ -47,34 +57,7 @@ internal abstract class FinsCommand : IEquatable<FinsCommand>
     /// (1001 too long, 1002 too short, 1003 element count and data disagree, 1101 unknown area, 1103 address out of
     /// range, 110B response too long, 110C parameter error).
     /// </exception>
-    public static FinsCommand Parse(ushort commandCode, ReadOnlySpan<byte> parameters)
-    {
-        if (parameters.Length > MaxParameterLength)
-        {
-            throw new FinsFormatException(FinsEndCodes.CommandTooLong, $"FINS {commandCode:X4} carries {parameters.Length} parameter bytes; at most {MaxParameterLength} fit in a Host Link frame.");
-        }
-
-        return commandCode switch
-        {
-            FinsCommandCodes.MemoryAreaRead => MemoryAreaReadCommand.ParseParameters(parameters),
-            FinsCommandCodes.MemoryAreaWrite => MemoryAreaWriteCommand.ParseParameters(parameters),
-            FinsCommandCodes.MemoryAreaFill => MemoryAreaFillCommand.ParseParameters(parameters),
-            FinsCommandCodes.MultipleMemoryAreaRead => MultipleMemoryAreaReadCommand.ParseParameters(parameters),
-            FinsCommandCodes.MemoryAreaTransfer => MemoryAreaTransferCommand.ParseParameters(parameters),
-            FinsCommandCodes.Run => RunCommand.ParseParameters(parameters),
-            FinsCommandCodes.Stop => StopCommand.ParseParameters(parameters),
-            FinsCommandCodes.CpuUnitDataRead => CpuUnitDataReadCommand.ParseParameters(parameters),
-            FinsCommandCodes.CpuUnitStatusRead => CpuUnitStatusReadCommand.ParseParameters(parameters),
-            FinsCommandCodes.CycleTimeRead => CycleTimeReadCommand.ParseParameters(parameters),
-            FinsCommandCodes.ClockRead => ClockReadCommand.ParseParameters(parameters),
-            FinsCommandCodes.ClockWrite => ClockWriteCommand.ParseParameters(parameters),
-            FinsCommandCodes.ErrorClear => ErrorClearCommand.ParseParameters(parameters),
-            FinsCommandCodes.ErrorLogRead => ErrorLogReadCommand.ParseParameters(parameters),
-            FinsCommandCodes.ForcedSetReset => ForcedSetResetCommand.ParseParameters(parameters),
-            FinsCommandCodes.ForcedSetResetCancel => ForcedSetResetCancelCommand.ParseParameters(parameters),
-            _ => new RawFinsCommand(commandCode, parameters),
-        };
-    }
+    public static FinsCommand Parse(ushort commandCode, ReadOnlySpan<byte> parameters) => FinsCommandTable.Standard.Parse(commandCode, parameters);
 
     /// <inheritdoc/>
     public bool Equals(FinsCommand? other)
@@ -102,7 +85,7 @@ internal abstract class FinsCommand : IEquatable<FinsCommand>
         byte[] parameters = GetParameters();
         var text = new byte[parameters.Length * 2];
         FinsBytes.WriteHex(parameters, text);
-        return $"{CommandCode:X4} {FinsCommandCodes.Describe(CommandCode)}" + (text.Length == 0 ? string.Empty : " " + FrameText.Printable(text));
+        return $"{Row.CodeText} {Row.Name}" + (text.Length == 0 ? string.Empty : " " + FrameText.Printable(text));
     }
 
     /// <summary>Throws unless <paramref name="destination"/> holds <see cref="ParameterLength"/> bytes.</summary>

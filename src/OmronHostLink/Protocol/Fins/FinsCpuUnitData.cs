@@ -12,6 +12,12 @@ public sealed class FinsCpuUnitData
     /// <summary>Bytes of the version field.</summary>
     internal const int VersionLength = 20;
 
+    /// <summary>
+    /// The most bytes a 0501 answer carries: model, version, system use and area data (20 + 20 + 40 + 12), CPU Bus Unit
+    /// configuration (64), remote I/O data (2) and CPU Unit information (1), 159 in all (W342 5-3-15), and one byte to spare.
+    /// </summary>
+    internal const int MaxLength = 160;
+
     private readonly byte[] _remainder;
 
     /// <summary>Creates the data.</summary>

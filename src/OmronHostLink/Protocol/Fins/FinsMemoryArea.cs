@@ -182,6 +182,12 @@ internal static class FinsMemoryArea
         _ => false,
     };
 
+    /// <summary>Bytes of a bit (or completion flag) in read data and write data.</summary>
+    public const int BitSize = 1;
+
+    /// <summary>Bytes of a word in read data and write data.</summary>
+    public const int WordSize = 2;
+
     /// <summary>
     /// Bytes per element in read data and write data: 1 for bits (and task status), 2 for words, 4 for words with
     /// forced status and index registers; 0 for a code this library does not know.
@@ -190,15 +196,15 @@ internal static class FinsMemoryArea
     {
         if (IsBitArea(code) || code == TaskStatus)
         {
-            return 1;
+            return BitSize;
         }
 
         return code switch
         {
             CioWord or WorkWord or HoldingWord or AuxiliaryWord or DmWord or TimerCounterPv or EmCurrentBankWord
-                or EmCurrentBankNumber or DataRegister => 2,
-            >= EmBank0Word and <= EmBank0Word + MaxEmBank => 2,
-            >= 0x60 and <= 0x68 => 2,
+                or EmCurrentBankNumber or DataRegister => WordSize,
+            >= EmBank0Word and <= EmBank0Word + MaxEmBank => WordSize,
+            >= 0x60 and <= 0x68 => WordSize,
             CioWordForced or WorkWordForced or HoldingWordForced or IndexRegister => 4,
             _ => 0,
         };

@@ -28,7 +28,7 @@ internal static class FinsMessage
     /// code and <paramref name="maxResponseData"/> data bytes, two characters a byte.
     /// </summary>
     internal static int GetMaxAnswerTextLength(FinsHeader header, int maxResponseData)
-        => 2 + (2 * (header.Length + 4 + maxResponseData));
+        => ResponseLength(header.Length, maxResponseData) - Prefix;
 
     /// <summary>How an FA command of <paramref name="messageLength"/> characters travels and is answered.</summary>
     internal static ExchangeShape GetExchange(int messageLength, FinsHeader header, int maxResponseData)
@@ -36,11 +36,25 @@ internal static class FinsMessage
 
     /// <summary>Characters of the unframed command message for <paramref name="header"/> and <paramref name="command"/>.</summary>
     public static int GetCommandLength(FinsHeader header, FinsCommand command)
-        => Prefix + 1 + (2 * (header.Length + 2 + Guard.NotNull(command).ParameterLength));
+        => CommandLength(header.Length, Guard.NotNull(command).ParameterLength);
 
     /// <summary>Characters of the unframed response message to a command with <paramref name="commandHeader"/>, carrying <paramref name="dataLength"/> data bytes.</summary>
     public static int GetResponseLength(FinsHeader commandHeader, int dataLength)
-        => Prefix + 2 + (2 * (commandHeader.Length + 4 + dataLength));
+        => ResponseLength(commandHeader.Length, dataLength);
+
+    /// <summary>Characters of a command frame to the CPU Unit (direct header) carrying <paramref name="parameterLength"/> parameter bytes, FCS and <c>*</c>CR included.</summary>
+    public static int DirectCommandFrameLength(int parameterLength)
+        => CommandLength(FinsHeader.DirectLength, parameterLength) + FrameWriter.FinalOverhead;
+
+    /// <summary>Characters of the answer frame to a direct command carrying <paramref name="dataLength"/> data bytes, FCS and <c>*</c>CR included.</summary>
+    public static int DirectResponseFrameLength(int dataLength)
+        => ResponseLength(FinsHeader.DirectLength, dataLength) + FrameWriter.FinalOverhead;
+
+    // @ unit FA, the wait character, then header, MRC SRC and parameters in hex.
+    private static int CommandLength(int headerLength, int parameterLength) => Prefix + 1 + (2 * (headerLength + 2 + parameterLength));
+
+    // @ unit FA, the Host Link end code, then header, MRC SRC, MRES SRES and data in hex.
+    private static int ResponseLength(int headerLength, int dataLength) => Prefix + 2 + (2 * (headerLength + 4 + dataLength));
 
     /// <summary>
     /// Writes the unframed command: <c>@</c> unit <c>FA</c> wait, then header, MRC SRC and parameters in hex.

@@ -4,10 +4,13 @@ namespace OmronHostLink.Protocol.Fins;
 internal sealed class ForcedSetResetCancelCommand : FinsCommand
 {
     /// <summary>The command code, 2302.</summary>
-    public const ushort Code = FinsCommandCodes.ForcedSetResetCancel;
+    public const ushort Code = 0x2302;
+
+    /// <summary>The command's row: 2302 FORCED SET/RESET CANCEL.</summary>
+    internal static FinsCommandRow CommandRow { get; } = new(Code, "FORCED SET/RESET CANCEL", CommandEffect.NotRepeatable, 0) { Parse = static p => ParseParameters(p) };
 
     /// <inheritdoc/>
-    public override ushort CommandCode => Code;
+    public override FinsCommandRow Row => CommandRow;
 
     /// <inheritdoc/>
     public override int ParameterLength => 0;

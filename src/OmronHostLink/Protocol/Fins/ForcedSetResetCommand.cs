@@ -7,7 +7,10 @@ namespace OmronHostLink.Protocol.Fins;
 internal sealed class ForcedSetResetCommand : FinsCommand
 {
     /// <summary>The command code, 2301.</summary>
-    public const ushort Code = FinsCommandCodes.ForcedSetReset;
+    public const ushort Code = 0x2301;
+
+    /// <summary>The command's row: 2301 FORCED SET/RESET.</summary>
+    internal static FinsCommandRow CommandRow { get; } = new(Code, "FORCED SET/RESET", CommandEffect.NotRepeatable, 0) { Parse = static p => ParseParameters(p) };
 
     /// <summary>The most bits one command carries: (<see cref="FinsCommand.MaxParameterLength"/> − 2) / 6.</summary>
     public const int MaxItems = (MaxParameterLength - 2) / FinsForcedBit.Length;
@@ -41,7 +44,7 @@ internal sealed class ForcedSetResetCommand : FinsCommand
     }
 
     /// <inheritdoc/>
-    public override ushort CommandCode => Code;
+    public override FinsCommandRow Row => CommandRow;
 
     /// <inheritdoc/>
     public override int ParameterLength => 2 + (_items.Length * FinsForcedBit.Length);

@@ -7,7 +7,10 @@ namespace OmronHostLink.Protocol.Fins;
 internal sealed class MemoryAreaFillCommand : FinsCommand
 {
     /// <summary>The command code, 0103.</summary>
-    public const ushort Code = FinsCommandCodes.MemoryAreaFill;
+    public const ushort Code = 0x0103;
+
+    /// <summary>The command's row: 0103 MEMORY AREA FILL.</summary>
+    internal static FinsCommandRow CommandRow { get; } = new(Code, "MEMORY AREA FILL", CommandEffect.Idempotent, 0) { Parse = static p => ParseParameters(p) };
 
     /// <summary>Creates the command.</summary>
     /// <param name="address">The first word (a 2-byte word area).</param>
@@ -29,7 +32,7 @@ internal sealed class MemoryAreaFillCommand : FinsCommand
     }
 
     /// <inheritdoc/>
-    public override ushort CommandCode => Code;
+    public override FinsCommandRow Row => CommandRow;
 
     /// <inheritdoc/>
     public override int ParameterLength => 8;

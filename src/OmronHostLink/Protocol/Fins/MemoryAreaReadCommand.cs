@@ -12,16 +12,22 @@ namespace OmronHostLink.Protocol.Fins;
 internal sealed class MemoryAreaReadCommand : FinsCommand
 {
     /// <summary>The command code, 0101.</summary>
-    public const ushort Code = FinsCommandCodes.MemoryAreaRead;
+    public const ushort Code = 0x0101;
+
+    /// <summary>The command's row: 0101 MEMORY AREA READ.</summary>
+    internal static FinsCommandRow CommandRow { get; } = new(Code, "MEMORY AREA READ", CommandEffect.ReadOnly, MaxResponseDataBytes) { Parse = static p => ParseParameters(p) };
 
     /// <summary>The most response data bytes one FA response holds (1,076 characters).</summary>
     public const int MaxResponseDataBytes = 538;
 
     /// <summary>The most words one command reads over Host Link (538 bytes / 2).</summary>
-    public const int MaxWords = MaxResponseDataBytes / 2;
+    public const int MaxWords = MaxResponseDataBytes / FinsMemoryArea.WordSize;
 
     /// <summary>The most bits one command reads over Host Link (1 byte each).</summary>
-    public const int MaxBits = MaxResponseDataBytes;
+    public const int MaxBits = MaxResponseDataBytes / FinsMemoryArea.BitSize;
+
+    /// <summary>Parameter bytes: the first element's address and the count (2).</summary>
+    public const int ParametersLength = FinsMemoryAddress.Length + 2;
 
     /// <summary>Creates the command.</summary>
     /// <param name="address">The first element.</param>
@@ -45,10 +51,10 @@ internal sealed class MemoryAreaReadCommand : FinsCommand
     }
 
     /// <inheritdoc/>
-    public override ushort CommandCode => Code;
+    public override FinsCommandRow Row => CommandRow;
 
     /// <inheritdoc/>
-    public override int ParameterLength => 6;
+    public override int ParameterLength => ParametersLength;
 
     /// <summary>The first element read.</summary>
     public FinsMemoryAddress Address { get; }
@@ -58,6 +64,9 @@ internal sealed class MemoryAreaReadCommand : FinsCommand
 
     /// <summary>The exact number of data bytes the response to this command carries.</summary>
     public int ResponseDataLength => Count * Address.ElementSize;
+
+    /// <inheritdoc/>
+    public override int MaxResponseDataLength => ResponseDataLength;
 
     /// <summary>The most elements of area <paramref name="areaCode"/> one command reads.</summary>
     public static int MaxCount(byte areaCode)
@@ -76,7 +85,7 @@ internal sealed class MemoryAreaReadCommand : FinsCommand
 
     internal static MemoryAreaReadCommand ParseParameters(ReadOnlySpan<byte> parameters)
     {
-        CheckLength(Code, parameters, 6, 6);
+        CheckLength(Code, parameters, ParametersLength, ParametersLength);
         FinsMemoryAddress address = FinsMemoryAddress.Read(parameters);
         int count = FinsBytes.ReadUInt16(parameters, 4);
         if (count > MaxCount(address.AreaCode))

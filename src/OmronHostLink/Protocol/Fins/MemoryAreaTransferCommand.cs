@@ -7,7 +7,10 @@ namespace OmronHostLink.Protocol.Fins;
 internal sealed class MemoryAreaTransferCommand : FinsCommand
 {
     /// <summary>The command code, 0105.</summary>
-    public const ushort Code = FinsCommandCodes.MemoryAreaTransfer;
+    public const ushort Code = 0x0105;
+
+    /// <summary>The command's row: 0105 MEMORY AREA TRANSFER.</summary>
+    internal static FinsCommandRow CommandRow { get; } = new(Code, "MEMORY AREA TRANSFER", CommandEffect.Idempotent, 0) { Parse = static p => ParseParameters(p) };
 
     /// <summary>Creates the command.</summary>
     /// <param name="source">The first word copied (a 2-byte word area).</param>
@@ -34,7 +37,7 @@ internal sealed class MemoryAreaTransferCommand : FinsCommand
     }
 
     /// <inheritdoc/>
-    public override ushort CommandCode => Code;
+    public override FinsCommandRow Row => CommandRow;
 
     /// <inheritdoc/>
     public override int ParameterLength => 10;

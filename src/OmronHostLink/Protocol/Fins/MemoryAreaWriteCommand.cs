@@ -12,7 +12,10 @@ namespace OmronHostLink.Protocol.Fins;
 internal sealed class MemoryAreaWriteCommand : FinsCommand
 {
     /// <summary>The command code, 0102.</summary>
-    public const ushort Code = FinsCommandCodes.MemoryAreaWrite;
+    public const ushort Code = 0x0102;
+
+    /// <summary>The command's row: 0102 MEMORY AREA WRITE.</summary>
+    internal static FinsCommandRow CommandRow { get; } = new(Code, "MEMORY AREA WRITE", CommandEffect.Idempotent, 0) { Parse = static p => ParseParameters(p) };
 
     /// <summary>The most data bytes one command carries (<see cref="FinsCommand.MaxParameterLength"/> − 6).</summary>
     public const int MaxDataBytes = MaxParameterLength - 6;
@@ -60,7 +63,7 @@ internal sealed class MemoryAreaWriteCommand : FinsCommand
     }
 
     /// <inheritdoc/>
-    public override ushort CommandCode => Code;
+    public override FinsCommandRow Row => CommandRow;
 
     /// <inheritdoc/>
     public override int ParameterLength => 6 + _data.Length;

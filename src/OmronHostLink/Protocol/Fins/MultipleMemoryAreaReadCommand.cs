@@ -7,12 +7,18 @@ namespace OmronHostLink.Protocol.Fins;
 internal sealed class MultipleMemoryAreaReadCommand : FinsCommand
 {
     /// <summary>The command code, 0104.</summary>
-    public const ushort Code = FinsCommandCodes.MultipleMemoryAreaRead;
+    public const ushort Code = 0x0104;
+
+    /// <summary>The command's row: 0104 MULTIPLE MEMORY AREA READ.</summary>
+    internal static FinsCommandRow CommandRow { get; } = new(Code, "MULTIPLE MEMORY AREA READ", CommandEffect.ReadOnly, MemoryAreaReadCommand.MaxResponseDataBytes) { Parse = static p => ParseParameters(p) };
 
     /// <summary>The most items one command carries (<see cref="FinsCommand.MaxParameterLength"/> / 4).</summary>
     public const int MaxItems = MaxParameterLength / FinsMemoryAddress.Length;
 
     private readonly FinsMemoryAddress[] _items;
+
+    /// <summary>Bytes an item of <paramref name="elementSize"/> bytes takes in the answer: its area code, then the element.</summary>
+    public static int ResponseItemLength(int elementSize) => 1 + elementSize;
 
     /// <summary>Creates the command.</summary>
     /// <param name="items">The addresses read, 1–<see cref="MaxItems"/>, in order.</param>
@@ -33,7 +39,7 @@ internal sealed class MultipleMemoryAreaReadCommand : FinsCommand
                 throw new ArgumentException("An item address is not initialised.", nameof(items));
             }
 
-            response += 1 + item.ElementSize;
+            response += ResponseItemLength(item.ElementSize);
         }
 
         if (response > MemoryAreaReadCommand.MaxResponseDataBytes)
@@ -45,7 +51,7 @@ internal sealed class MultipleMemoryAreaReadCommand : FinsCommand
     }
 
     /// <inheritdoc/>
-    public override ushort CommandCode => Code;
+    public override FinsCommandRow Row => CommandRow;
 
     /// <inheritdoc/>
     public override int ParameterLength => _items.Length * FinsMemoryAddress.Length;
@@ -55,6 +61,9 @@ internal sealed class MultipleMemoryAreaReadCommand : FinsCommand
 
     /// <summary>The exact number of data bytes the response carries (area code + element per item).</summary>
     public int ResponseDataLength { get; }
+
+    /// <inheritdoc/>
+    public override int MaxResponseDataLength => ResponseDataLength;
 
     /// <inheritdoc/>
     public override void WriteParameters(Span<byte> destination)
@@ -79,7 +88,7 @@ internal sealed class MultipleMemoryAreaReadCommand : FinsCommand
         for (int i = 0; i < items.Length; i++)
         {
             items[i] = FinsMemoryAddress.Read(parameters.Slice(i * FinsMemoryAddress.Length));
-            response += 1 + items[i].ElementSize;
+            response += ResponseItemLength(items[i].ElementSize);
         }
 
         if (response > MemoryAreaReadCommand.MaxResponseDataBytes)

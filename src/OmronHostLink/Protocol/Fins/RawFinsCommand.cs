@@ -16,12 +16,12 @@ internal sealed class RawFinsCommand : FinsCommand
             throw new ArgumentOutOfRangeException(nameof(parameters), parameters.Length, $"A FINS command carries at most {MaxParameterLength} parameter bytes.");
         }
 
-        CommandCode = commandCode;
+        Row = new FinsCommandRow(commandCode, FinsCommandTable.Standard.Describe(commandCode), CommandEffect.NotRepeatable, FinsMessage.MaxResponseDataLength);
         _parameters = parameters.ToArray();
     }
 
-    /// <inheritdoc/>
-    public override ushort CommandCode { get; }
+    /// <summary>A row of its own: the code, its name if the library knows one, never repeated, any answer that fits a frame.</summary>
+    public override FinsCommandRow Row { get; }
 
     /// <inheritdoc/>
     public override int ParameterLength => _parameters.Length;

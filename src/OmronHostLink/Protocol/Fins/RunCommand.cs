@@ -7,7 +7,10 @@ namespace OmronHostLink.Protocol.Fins;
 internal sealed class RunCommand : FinsCommand
 {
     /// <summary>The command code, 0401.</summary>
-    public const ushort Code = FinsCommandCodes.Run;
+    public const ushort Code = 0x0401;
+
+    /// <summary>The command's row: 0401 RUN.</summary>
+    internal static FinsCommandRow CommandRow { get; } = new(Code, "RUN", CommandEffect.NotRepeatable, 0) { Parse = static p => ParseParameters(p) };
 
     /// <summary>The program number CS/CJ CPU Units expect.</summary>
     public const ushort AnyProgram = 0xFFFF;
@@ -41,7 +44,7 @@ internal sealed class RunCommand : FinsCommand
     }
 
     /// <inheritdoc/>
-    public override ushort CommandCode => Code;
+    public override FinsCommandRow Row => CommandRow;
 
     /// <inheritdoc/>
     public override int ParameterLength => ProgramNumber is null ? 0 : Mode is null ? 2 : 3;

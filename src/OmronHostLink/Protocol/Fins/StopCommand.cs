@@ -4,7 +4,10 @@ namespace OmronHostLink.Protocol.Fins;
 internal sealed class StopCommand : FinsCommand
 {
     /// <summary>The command code, 0402.</summary>
-    public const ushort Code = FinsCommandCodes.Stop;
+    public const ushort Code = 0x0402;
+
+    /// <summary>The command's row: 0402 STOP.</summary>
+    internal static FinsCommandRow CommandRow { get; } = new(Code, "STOP", CommandEffect.NotRepeatable, 0) { Parse = static p => ParseParameters(p) };
 
     /// <summary>Stops with program number FFFF.</summary>
     public StopCommand()
@@ -16,7 +19,7 @@ internal sealed class StopCommand : FinsCommand
     public StopCommand(ushort? programNumber) => ProgramNumber = programNumber;
 
     /// <inheritdoc/>
-    public override ushort CommandCode => Code;
+    public override FinsCommandRow Row => CommandRow;
 
     /// <inheritdoc/>
     public override int ParameterLength => ProgramNumber is null ? 0 : 2;
