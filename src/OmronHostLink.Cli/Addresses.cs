@@ -44,8 +44,11 @@ internal static class Addresses
         }
     }
 
-    /// <summary>The library's advice in the console's terms: "use FINS" (set the command set) is the option <c>--fins</c> here.</summary>
-    public static string InCliWords(string message) => CommandSetAdvice.Replace(message, "add --fins");
+    /// <summary>
+    /// The library's advice in the console's terms: "use FINS" (set the command set) is the option <c>--fins</c> here,
+    /// and "use C-mode" is leaving it out.
+    /// </summary>
+    public static string InCliWords(string message) => CommandSetAdvice.Replace(message, "add --fins", "leave out --fins");
 
     /// <summary>An ArgumentException message without the "(Parameter 'x')" suffix.</summary>
     public static string FirstSentence(string message)

@@ -69,7 +69,7 @@ internal sealed class CliContext
         HostLinkTimeoutException => "timeout",
         HostLinkFrameException => "frame",
         HostLinkConnectionException => "connection",
-        UsageException or ArgumentException => "usage",
+        UsageException or ArgumentException or NotSupportedException => "usage",
         _ => "other",
     };
 
@@ -87,6 +87,7 @@ internal sealed class CliContext
         {
             UsageException => e.Message,
             ArgumentException => Addresses.InCliWords(Addresses.FirstSentence(e.Message)),
+            NotSupportedException => Addresses.InCliWords(e.Message), // the model lacks what was asked for
             HostLinkException => e.Message,
             _ => $"{e.GetType().Name}: {e.Message}",
         };

@@ -24,7 +24,7 @@ internal static class ExitCodes
     /// <summary>The exit code for an exception that ended a command.</summary>
     public static int For(Exception e) => e switch
     {
-        UsageException or ArgumentException => InvalidInput,
+        UsageException or ArgumentException or NotSupportedException => InvalidInput,
         HostLinkEndCodeException or FinsEndCodeException => EndCode,
         HostLinkTimeoutException or HostLinkFrameException or HostLinkConnectionException => Communication,
         _ => Failure,

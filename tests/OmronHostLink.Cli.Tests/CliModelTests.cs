@@ -90,6 +90,17 @@ public sealed class CliModelTests
     }
 
     [Fact]
+    public async Task Fins_to_a_model_without_it_is_a_usage_error_that_says_to_leave_out_fins()
+    {
+        await using var sim = await InProcessSimulator.StartAsync("--model", "CPM1A");
+
+        CliResult r = await Cli.RunAsync("read", "D0", "--fins", "--model", "CPM1A", "--tcp", sim.Endpoint);
+
+        r.ExitCode.Should().Be(2, r.ToString());
+        r.Err.Should().Contain("does not take FINS commands over Host Link; leave out --fins").And.NotContain("NotSupportedException");
+    }
+
+    [Fact]
     public async Task The_compatible_mode_is_emulated_by_simulate_and_checked_by_read()
     {
         await using var modeC = await InProcessSimulator.StartAsync("--compatible-mode", "c");

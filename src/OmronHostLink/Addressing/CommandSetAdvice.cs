@@ -21,10 +21,17 @@ internal static class CommandSetAdvice
     /// <summary>How to switch to FINS for unit <paramref name="unit"/>.</summary>
     public static string UseFins(int unit) => Head + $"plc.Unit({unit}, HostLinkCommandSet.Fins)";
 
+    /// <summary>How to switch to C-mode, for a model that takes no FINS over Host Link.</summary>
+    public const string UseCMode = "use C-mode: set HostLinkClientOptions.CommandSet = HostLinkCommandSet.CMode (the default), or go through a C-mode view of the unit, such as plc.Unit(0, HostLinkCommandSet.CMode)";
+
     /// <summary>How to write bits with C-mode all the same, and what it costs.</summary>
     public static string ReadModifyWrite(string words)
         => $"or set HostLinkClientOptions.AllowReadModifyWriteBits = true to read {words}, change the bits and write {words} back (anything the PLC program writes there in between is lost)";
 
-    /// <summary>The advice of <paramref name="message"/> in a host's own words (the console's <c>add --fins</c>).</summary>
-    public static string Replace(string message, string replacement) => Advice.Replace(message, replacement);
+    /// <summary>
+    /// The advice of <paramref name="message"/> in a host's own words: <paramref name="useFins"/> for "use FINS" (the
+    /// console's <c>add --fins</c>), <paramref name="useCMode"/> for "use C-mode" (<c>leave out --fins</c>).
+    /// </summary>
+    public static string Replace(string message, string useFins, string useCMode)
+        => Advice.Replace(message, useFins).Replace(UseCMode, useCMode);
 }

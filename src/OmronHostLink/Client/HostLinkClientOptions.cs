@@ -54,10 +54,11 @@ public sealed class HostLinkClientOptions
     /// <summary>
     /// Whether C-mode planned reads (<c>ReadTagsAsync</c>, <c>WatchAsync</c>) may use QQ, the compound read (QQMR
     /// registration once, then one QQIR a cycle), where it costs fewer characters than area reads: 100 scattered tags
-    /// at 9600 bps read several times faster. Default false (the plans of earlier versions); turn it on for PLCs with QQ
-    /// (CS/CJ, CP1, C200H/HS/HX, CQM1/CQM1H, CPM1/CPM2, SRM1: W342 p168, C200HS p428, CQM1H p470, CPM1 p302). Leave it off
-    /// for the CP2E (W614 lists no QQ) and any model whose profile says so (<c>PlcModelProfile.SupportsCompoundRead</c>);
-    /// a unit whose model profile lacks QQ is read by area even when it is on.
+    /// at 9600 bps read several times faster. Default false (area reads only); turn it on for PLCs with QQ (CS/CJ: W342
+    /// p168; C200HS: p428; CQM1, CPM1/CPM1A, SRM1: CPM-Q p388; CQM1H: p470; CPM2A/CPM2C: W353 p302). Leave it off for
+    /// the CP2E (W614 lists no QQ), the C200H and C200HX (no QQ page found) and any model whose profile says so
+    /// (<c>PlcModelProfile.SupportsCompoundRead</c>; docs/models.md); a unit whose model profile lacks QQ is read by area
+    /// even when it is on.
     /// </summary>
     public bool UseCompoundRead { get; set; }
 

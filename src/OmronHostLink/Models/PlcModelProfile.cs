@@ -172,7 +172,7 @@ public sealed class PlcModelProfile
     {
         if (!SupportsFins)
         {
-            throw new NotSupportedException($"{Capitalised(WithArticle())} does not take FINS commands over Host Link; use C-mode.");
+            throw new NotSupportedException($"{Capitalised(WithArticle())} does not take FINS commands over Host Link; {CommandSetAdvice.UseCMode}.");
         }
     }
 

@@ -178,7 +178,7 @@ public sealed class PlcModelProfileTests
             profile.SupportsFins.Should().BeFalse(name);
             profile.SharesTimerCounterNumbers.Should().BeTrue(name);
             profile.TimerCounterCoding.Should().Be(TimerCounterCoding.Bcd, name);
-            FluentActions.Invoking(profile.EnsureFins).Should().Throw<NotSupportedException>().WithMessage("*does not take FINS*");
+            FluentActions.Invoking(profile.EnsureFins).Should().Throw<NotSupportedException>().WithMessage("*does not take FINS*; use C-mode: set HostLinkClientOptions.CommandSet = HostLinkCommandSet.CMode*plc.Unit(0, HostLinkCommandSet.CMode)*");
         }
     }
 
