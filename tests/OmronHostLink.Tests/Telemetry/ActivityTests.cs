@@ -66,13 +66,17 @@ public sealed class ActivityTests : IDisposable
     [Fact]
     public async Task A_failed_command_is_an_error_span_with_its_error_type_and_end_code()
     {
+        // The refusal on a line with the in-process allowance (a busy machine must not turn it into a timeout); the
+        // silent unit on a line of the same name with a short one.
         HostLinkClientOptions options = TelemetryLine.Options("span-fail");
-        options.TurnaroundAllowance = TimeSpan.FromMilliseconds(100);
-        options.ReadRetries = 1;
         await using var line = TelemetryLine.Start(options, new VirtualPlcOptions { InitialMode = PlcMode.Run });
+        HostLinkClientOptions silentOptions = TelemetryLine.Options("span-fail");
+        silentOptions.TurnaroundAllowance = TimeSpan.FromMilliseconds(100);
+        silentOptions.ReadRetries = 1;
+        await using var silentLine = TelemetryLine.Start(silentOptions);
 
         await FluentActions.Awaiting(() => line.Client.WriteWordAsync("D0", 1)).Should().ThrowAsync<HostLinkEndCodeException>();
-        await FluentActions.Awaiting(() => line.Client.Unit(9).ReadWordsAsync("D0", 1)).Should().ThrowAsync<HostLinkTimeoutException>();
+        await FluentActions.Awaiting(() => silentLine.Client.Unit(9).ReadWordsAsync("D0", 1)).Should().ThrowAsync<HostLinkTimeoutException>();
 
         Activity[] spans = Spans("span-fail");
         spans.Should().HaveCount(2);
