@@ -25,6 +25,7 @@ internal static class WireEfficiency
         bool skipWire = false;
         bool skipTcp = false;
         int tcpTransactions = 301;
+        var planTurnaround = TimeSpan.Zero;
         int[] bauds = [9600, 115200];
         for (int i = 0; i < args.Length; i++)
         {
@@ -52,6 +53,10 @@ internal static class WireEfficiency
                     break;
                 case "--no-plan":
                     skipPlan = true;
+                    break;
+                case "--plan-turnaround":
+                    // The PLC's turnaround for the planned reads: each exchange pays it once.
+                    planTurnaround = TimeSpan.FromMilliseconds(int.Parse(args[++i], CultureInfo.InvariantCulture));
                     break;
             }
         }
@@ -110,16 +115,16 @@ internal static class WireEfficiency
 
         if (!skipPlan)
         {
-            await PlanAsync(runs);
+            await PlanAsync(runs, planTurnaround);
         }
 
         return 0;
     }
 
-    private static async Task PlanAsync(int runs)
+    private static async Task PlanAsync(int runs, TimeSpan turnaround)
     {
         Console.WriteLine();
-        Console.WriteLine("## 100 scattered tags (seed 42, units 0 and 1), 9600 7E2, turnaround 0");
+        Console.WriteLine($"## 100 scattered tags (seed 42, units 0 and 1), 9600 7E2, turnaround {turnaround.TotalMilliseconds:0} ms");
         Console.WriteLine();
         Console.WriteLine("| Protocol | Method | Transactions | Chars on wire | Measured ms (median) | Speed-up |");
         Console.WriteLine("|---|---|---|---|---|---|");
@@ -127,7 +132,7 @@ internal static class WireEfficiency
         var qqRows = new List<string>();
         foreach (HostLinkCommandSet protocol in new[] { HostLinkCommandSet.CMode, HostLinkCommandSet.Fins })
         {
-            await using var rig = await Rig.StartAsync(9600, TimeSpan.Zero, protocol);
+            await using var rig = await Rig.StartAsync(9600, turnaround, protocol);
             ReadPlan plan = new ReadPlanner(protocol, new LineTiming(9600, Bits)) { UseCompoundRead = false }.Plan(tags);
             Measurement planned = await rig.MeasureAsync(runs, c => c.ReadTagsAsync(plan));
             Measurement naive = await rig.MeasureAsync(runs, async c =>
@@ -160,7 +165,7 @@ internal static class WireEfficiency
         }
 
         Console.WriteLine();
-        Console.WriteLine("## C-mode with QQ: 100 scattered tags, 9600 7E2, turnaround 0 (theoretical = characters on the wire × 11 / 9600)");
+        Console.WriteLine($"## C-mode with QQ: 100 scattered tags, 9600 7E2, turnaround {turnaround.TotalMilliseconds:0} ms (theoretical = characters on the wire × 11 / 9600 + a turnaround an exchange)");
         Console.WriteLine();
         Console.WriteLine("| Read | Chars on wire | Theoretical ms | Measured ms (median) | Efficiency | Faster than the 57-read plan |");
         Console.WriteLine("|---|---|---|---|---|---|");
