@@ -4,7 +4,7 @@ namespace OmronHostLink.Gateway.Mqtt;
 
 /// <summary>
 /// The broker connection of a section that publishes over MQTT (<c>Mqtt</c>, <c>Sparkplug</c>): the same keys, defaults
-/// and rules in each.
+/// and rules (<see cref="MqttBrokerOptionsValidator"/>) in each.
 /// </summary>
 public abstract class MqttBrokerOptions
 {
