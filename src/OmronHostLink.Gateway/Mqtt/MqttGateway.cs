@@ -3,6 +3,7 @@ using Microsoft.Extensions.Hosting;
 using Microsoft.Extensions.Logging;
 using Microsoft.Extensions.Options;
 using MQTTnet;
+using MQTTnet.Formatter;
 using MQTTnet.Protocol;
 using OmronHostLink.Gateway.Outputs;
 
@@ -17,6 +18,12 @@ namespace OmronHostLink.Gateway.Mqtt;
 /// </summary>
 public sealed class MqttGateway : IHostedService, IAsyncDisposable
 {
+    /// <summary>The worker's status while connected (the birth message).</summary>
+    public const string Online = "online";
+
+    /// <summary>The worker's status when it is gone (the last will, or a clean stop).</summary>
+    public const string Offline = "offline";
+
     private static readonly TimeSpan DrainLimit = TimeSpan.FromSeconds(5);
 
     private readonly MqttOptions _options;
@@ -80,7 +87,7 @@ public sealed class MqttGateway : IHostedService, IAsyncDisposable
             MqttLog.UntrustedCertificates(_logger, _broker);
         }
 
-        _clientOptions = MqttClientOptionsFactory.Create(_options, _topics, why => _certificateProblem = why);
+        _clientOptions = ClientOptions();
         _client = _factory.CreateMqttClient();
         _client.DisconnectedAsync += _ =>
         {
@@ -139,7 +146,7 @@ public sealed class MqttGateway : IHostedService, IAsyncDisposable
             try
             {
                 using var timeout = new CancellationTokenSource(_options.Timeout);
-                await client.PublishAsync(Message(new OutboundMessage(_topics.WorkerStatus, Encoding.UTF8.GetBytes(MqttClientOptionsFactory.Offline), Retain: true)), timeout.Token).ConfigureAwait(false);
+                await client.PublishAsync(Message(new OutboundMessage(_topics.WorkerStatus, Encoding.UTF8.GetBytes(Offline), Retain: true)), timeout.Token).ConfigureAwait(false);
                 await client.DisconnectAsync(new MqttClientDisconnectOptions(), timeout.Token).ConfigureAwait(false);
             }
             catch (Exception e) when (e is not OutOfMemoryException)
@@ -167,6 +174,19 @@ public sealed class MqttGateway : IHostedService, IAsyncDisposable
         _client?.Dispose();
         _stop.Dispose();
     }
+
+    /// <summary>MQTT 5, a clean start and the last will <c>offline</c> on the worker's status topic.</summary>
+    private MqttClientOptions ClientOptions()
+        => MqttClientOptionsFactory.Create(_options, MqttOptions.SectionName, why => _certificateProblem = why)
+            .WithProtocolVersion(MqttProtocolVersion.V500)
+            // No session kept by the broker: the worker's queue is the only store, and no stale command is delivered
+            // after a reconnection.
+            .WithCleanStart(true)
+            .WithWillTopic(_topics.WorkerStatus)
+            .WithWillPayload(Encoding.UTF8.GetBytes(Offline))
+            .WithWillRetain(true)
+            .WithWillQualityOfServiceLevel(MqttClientOptionsFactory.QualityOfService(_options.QoS))
+            .Build();
 
     private async Task RunAsync(CancellationToken cancellationToken)
     {
@@ -272,7 +292,7 @@ public sealed class MqttGateway : IHostedService, IAsyncDisposable
         }
 
         // Birth first, then the state of every topic with nothing queued (a restarted broker may have lost it).
-        await PublishNowAsync(client, new OutboundMessage(_topics.WorkerStatus, Encoding.UTF8.GetBytes(MqttClientOptionsFactory.Online), Retain: true), cancellationToken).ConfigureAwait(false);
+        await PublishNowAsync(client, new OutboundMessage(_topics.WorkerStatus, Encoding.UTF8.GetBytes(Online), Retain: true), cancellationToken).ConfigureAwait(false);
         foreach (OutboundMessage message in _sink.Snapshot())
         {
             await PublishNowAsync(client, message, cancellationToken).ConfigureAwait(false);

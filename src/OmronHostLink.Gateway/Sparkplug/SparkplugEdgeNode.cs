@@ -247,38 +247,14 @@ public sealed class SparkplugEdgeNode : IHostedService, IAsyncDisposable
             .WithRetainFlag(false)
             .Build();
 
+    /// <summary>MQTT 3.1.1, a clean session and the NDEATH of <paramref name="bdSeq"/> as the will.</summary>
     private MqttClientOptions ClientOptions(ulong bdSeq)
-    {
-        MqttClientOptionsBuilder builder = new MqttClientOptionsBuilder()
-            .WithTcpServer(_options.Host, _options.PortOrDefault)
-            .WithClientId(_options.ClientIdOrDefault)
+        => MqttClientOptionsFactory.Create(_options, SparkplugOptions.SectionName, why => _certificateProblem = why)
             .WithProtocolVersion(MqttProtocolVersion.V311)
             .WithCleanSession(true)
-            .WithKeepAlivePeriod(_options.KeepAlive)
-            .WithTimeout(_options.Timeout)
             .WithWillTopic(_node.Topic(SparkplugMessageType.NDEATH).ToString())
             .WithWillPayload(SparkplugPayloads.NodeDeath(bdSeq))
             .WithWillQualityOfServiceLevel(MqttQualityOfServiceLevel.AtLeastOnce)
-            .WithWillRetain(false);
-        if (!string.IsNullOrEmpty(_options.Username))
-        {
-            builder = builder.WithCredentials(_options.Username, _options.Password ?? "");
-        }
-
-        if (_options.Tls.Enabled)
-        {
-            MqttTlsOptions tls = _options.Tls;
-            System.Security.Cryptography.X509Certificates.X509Certificate2Collection? authorities = string.IsNullOrEmpty(tls.CaFile) ? null : MqttClientOptionsFactory.LoadAuthorities(tls.CaFile);
-            builder = builder.WithTlsOptions(o => o.UseTls()
-                .WithTargetHost(string.IsNullOrEmpty(tls.ServerName) ? _options.Host : tls.ServerName)
-                .WithCertificateValidationHandler(e =>
-                {
-                    string? why = MqttClientOptionsFactory.CertificateProblem(e.Certificate, e.Chain, e.SslPolicyErrors, authorities, tls.AllowUntrustedCertificates);
-                    _certificateProblem = why;
-                    return why is null;
-                }));
-        }
-
-        return builder.Build();
-    }
+            .WithWillRetain(false)
+            .Build();
 }
