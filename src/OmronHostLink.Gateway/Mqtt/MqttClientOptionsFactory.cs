@@ -1,42 +1,29 @@
 using System.Net.Security;
 using System.Security.Cryptography.X509Certificates;
-using System.Text;
 using MQTTnet;
-using MQTTnet.Formatter;
 using MQTTnet.Protocol;
 
 namespace OmronHostLink.Gateway.Mqtt;
 
-/// <summary>Turns <see cref="MqttOptions"/> into MQTTnet's client options: MQTT 5, clean start, last will, TLS.</summary>
+/// <summary>
+/// Turns a broker connection (<see cref="MqttBrokerOptions"/>) into MQTTnet's client options: server, client id,
+/// keep-alive, timeout, credentials and TLS. Each output adds its protocol version, session and last will.
+/// </summary>
 public static class MqttClientOptionsFactory
 {
-    /// <summary>The worker's status while connected (the birth message).</summary>
-    public const string Online = "online";
-
-    /// <summary>The worker's status when it is gone (the last will, or a clean stop).</summary>
-    public const string Offline = "offline";
-
-    /// <summary>Builds the options; the CA file is read here.</summary>
+    /// <summary>Starts the client options of a broker connection; the CA file is read here.</summary>
     /// <param name="options">The validated options.</param>
-    /// <param name="topics">The topics (the last will goes to the worker's status topic).</param>
+    /// <param name="section">The section's key (<c>Mqtt</c>, <c>Sparkplug</c>), named in why a certificate was refused.</param>
     /// <param name="certificateRejected">Told why the broker's certificate was refused (TLS only).</param>
-    public static MqttClientOptions Create(MqttOptions options, MqttTopics topics, Action<string>? certificateRejected = null)
+    /// <returns>The builder, for the output to add its protocol version, session and will to.</returns>
+    public static MqttClientOptionsBuilder Create(MqttBrokerOptions options, string section, Action<string>? certificateRejected = null)
     {
         ArgumentNullException.ThrowIfNull(options);
-        ArgumentNullException.ThrowIfNull(topics);
         MqttClientOptionsBuilder builder = new MqttClientOptionsBuilder()
             .WithTcpServer(options.Host, options.PortOrDefault)
             .WithClientId(options.ClientIdOrDefault)
-            .WithProtocolVersion(MqttProtocolVersion.V500)
-            // No session kept by the broker: the worker's queue is the only store, and no stale command is delivered
-            // after a reconnection.
-            .WithCleanStart(true)
             .WithKeepAlivePeriod(options.KeepAlive)
-            .WithTimeout(options.Timeout)
-            .WithWillTopic(topics.WorkerStatus)
-            .WithWillPayload(Encoding.UTF8.GetBytes(Offline))
-            .WithWillRetain(true)
-            .WithWillQualityOfServiceLevel(QualityOfService(options.QoS));
+            .WithTimeout(options.Timeout);
         if (!string.IsNullOrEmpty(options.Username))
         {
             builder = builder.WithCredentials(options.Username, options.Password ?? "");
@@ -52,7 +39,7 @@ public static class MqttClientOptionsFactory
                     .WithTargetHost(string.IsNullOrEmpty(tls.ServerName) ? options.Host : tls.ServerName)
                     .WithCertificateValidationHandler(e =>
                     {
-                        string? why = CertificateProblem(e.Certificate, e.Chain, e.SslPolicyErrors, authorities, tls.AllowUntrustedCertificates);
+                        string? why = CertificateProblem(e.Certificate, e.Chain, e.SslPolicyErrors, authorities, tls.AllowUntrustedCertificates, section + ":Tls");
                         if (why is not null)
                         {
                             certificateRejected?.Invoke(why);
@@ -63,7 +50,7 @@ public static class MqttClientOptionsFactory
             });
         }
 
-        return builder.Build();
+        return builder;
     }
 
     /// <summary>The MQTTnet level for 0, 1 or 2.</summary>
@@ -89,11 +76,12 @@ public static class MqttClientOptionsFactory
     }
 
     /// <summary>
-    /// Checks the broker's certificate: null when it is accepted, otherwise why not. Without CA certificates the
-    /// platform's verdict stands (system roots, name, dates). With them, the name must still match and the chain must
-    /// end at one of them: nothing else is trusted.
+    /// Checks the broker's certificate: null when it is accepted, otherwise why not, naming the keys below
+    /// <paramref name="tlsKey"/> (<c>Mqtt:Tls</c>) that change the verdict. Without CA certificates the platform's
+    /// verdict stands (system roots, name, dates). With them, the name must still match and the chain must end at one
+    /// of them: nothing else is trusted.
     /// </summary>
-    public static string? CertificateProblem(X509Certificate? certificate, X509Chain? chain, SslPolicyErrors errors, X509Certificate2Collection? authorities, bool allowUntrusted)
+    private static string? CertificateProblem(X509Certificate? certificate, X509Chain? chain, SslPolicyErrors errors, X509Certificate2Collection? authorities, bool allowUntrusted, string tlsKey)
     {
         if (allowUntrusted)
         {
@@ -107,14 +95,14 @@ public static class MqttClientOptionsFactory
 
         if ((errors & SslPolicyErrors.RemoteCertificateNameMismatch) != 0)
         {
-            return $"the broker's certificate ({certificate.Subject}) is not for the name the worker connects to (set Mqtt:Tls:ServerName if the broker is reached under another name)";
+            return $"the broker's certificate ({certificate.Subject}) is not for the name the worker connects to (set {tlsKey}:ServerName if the broker is reached under another name)";
         }
 
         if (authorities is null)
         {
             return errors == SslPolicyErrors.None
                 ? null
-                : $"the broker's certificate ({certificate.Subject}, issued by {certificate.Issuer}) is not trusted by this machine's root certificates ({Statuses(chain)}); for a private CA set Mqtt:Tls:CaFile";
+                : $"the broker's certificate ({certificate.Subject}, issued by {certificate.Issuer}) is not trusted by this machine's root certificates ({Statuses(chain)}); for a private CA set {tlsKey}:CaFile";
         }
 
         using var custom = new X509Chain();
@@ -133,7 +121,7 @@ public static class MqttClientOptionsFactory
         using var leaf = new X509Certificate2(certificate);
         return custom.Build(leaf)
             ? null
-            : $"the broker's certificate ({certificate.Subject}, issued by {certificate.Issuer}) does not chain to a CA in Mqtt:Tls:CaFile ({Statuses(custom)})";
+            : $"the broker's certificate ({certificate.Subject}, issued by {certificate.Issuer}) does not chain to a CA in {tlsKey}:CaFile ({Statuses(custom)})";
     }
 
     private static string Statuses(X509Chain? chain)

@@ -3,6 +3,7 @@ using Microsoft.Extensions.Hosting;
 using Microsoft.Extensions.Logging;
 using Microsoft.Extensions.Options;
 using MQTTnet;
+using MQTTnet.Formatter;
 using MQTTnet.Protocol;
 using OmronHostLink.Gateway.Outputs;
 
@@ -17,6 +18,12 @@ namespace OmronHostLink.Gateway.Mqtt;
 /// </summary>
 public sealed class MqttGateway : IHostedService, IAsyncDisposable
 {
+    /// <summary>The worker's status while connected (the birth message).</summary>
+    public const string Online = "online";
+
+    /// <summary>The worker's status when it is gone (the last will, or a clean stop).</summary>
+    public const string Offline = "offline";
+
     private static readonly TimeSpan DrainLimit = TimeSpan.FromSeconds(5);
 
     private readonly MqttOptions _options;
@@ -26,21 +33,16 @@ public sealed class MqttGateway : IHostedService, IAsyncDisposable
     private readonly TagCatalog _catalog;
     private readonly MqttMetrics _metrics;
     private readonly MqttClientFactory _factory;
+    private readonly MqttBrokerConnection _connection;
     private readonly WriteCommandProcessor _writes;
     private readonly ILogger _logger;
     private readonly TimeProvider _time;
-    private readonly string _broker;
     private readonly HashSet<string> _refusedTopics = new(StringComparer.Ordinal);
-    private readonly CancellationTokenSource _stop = new();
-    private IMqttClient? _client;
     private MqttClientOptions? _clientOptions;
-    private Task? _loop;
-    private Task? _writeLoop;
     private volatile bool _stopping;
     private int _stopCalls;
     private bool _everConnected;
     private long _overflowSince;
-    private volatile string? _certificateProblem;
 
     /// <summary>Creates the gateway; nothing connects until it is started.</summary>
     public MqttGateway(
@@ -66,37 +68,40 @@ public sealed class MqttGateway : IHostedService, IAsyncDisposable
         _writes = writes;
         _logger = logger;
         _time = timeProvider;
-        _broker = $"{_options.Host}:{_options.PortOrDefault}";
+        _connection = new MqttBrokerConnection(_options, MqttOptions.SectionName, factory, timeProvider);
     }
 
     /// <summary>Whether the client is connected to the broker now.</summary>
-    public bool IsConnected => _client?.IsConnected == true;
+    public bool IsConnected => _connection.Client.IsConnected;
 
     /// <inheritdoc/>
     public Task StartAsync(CancellationToken cancellationToken)
     {
         if (_options.Tls is { Enabled: true, AllowUntrustedCertificates: true })
         {
-            MqttLog.UntrustedCertificates(_logger, _broker);
+            MqttLog.UntrustedCertificates(_logger, _connection.Broker);
         }
 
-        _clientOptions = MqttClientOptionsFactory.Create(_options, _topics, why => _certificateProblem = why);
-        _client = _factory.CreateMqttClient();
-        _client.DisconnectedAsync += _ =>
+        _clientOptions = ClientOptions();
+        IMqttClient client = _connection.Client;
+        client.DisconnectedAsync += _ =>
         {
             _queue.Wake();
             return Task.CompletedTask;
         };
-        _client.ApplicationMessageReceivedAsync += e =>
+        client.ApplicationMessageReceivedAsync += e =>
         {
             _writes.Accept(e.ApplicationMessage);
             return Task.CompletedTask;
         };
         _queue.OverflowStarted += OnOverflowStarted;
-        _loop = Task.Run(() => RunAsync(_stop.Token), CancellationToken.None);
         if (_options.Writes.Enabled)
         {
-            _writeLoop = Task.Run(() => _writes.RunAsync(_stop.Token), CancellationToken.None);
+            _connection.Start(RunAsync, _writes.RunAsync);
+        }
+        else
+        {
+            _connection.Start(RunAsync);
         }
 
         return Task.CompletedTask;
@@ -105,7 +110,7 @@ public sealed class MqttGateway : IHostedService, IAsyncDisposable
     /// <inheritdoc/>
     public async Task StopAsync(CancellationToken cancellationToken)
     {
-        if (_loop is null || Interlocked.Exchange(ref _stopCalls, 1) != 0)
+        if (_connection.ConnectionLoop is not { } loop || Interlocked.Exchange(ref _stopCalls, 1) != 0)
         {
             return;
         }
@@ -117,62 +122,41 @@ public sealed class MqttGateway : IHostedService, IAsyncDisposable
         _queue.Wake();
         if (!IsConnected)
         {
-            await _stop.CancelAsync().ConfigureAwait(false);
+            await _connection.CancelAsync().ConfigureAwait(false);
         }
 
         using (var drain = CancellationTokenSource.CreateLinkedTokenSource(cancellationToken))
         {
             drain.CancelAfter(DrainLimit);
-            await _loop.WaitAsync(drain.Token).ConfigureAwait(ConfigureAwaitOptions.SuppressThrowing);
+            await loop.WaitAsync(drain.Token).ConfigureAwait(ConfigureAwaitOptions.SuppressThrowing);
         }
 
-        await _stop.CancelAsync().ConfigureAwait(false);
-        await _loop.ConfigureAwait(ConfigureAwaitOptions.SuppressThrowing);
-        if (_writeLoop is not null)
-        {
-            await _writeLoop.ConfigureAwait(ConfigureAwaitOptions.SuppressThrowing);
-        }
-
+        await _connection.StopLoopsAsync().ConfigureAwait(false);
         EndOverflow(_queue.EndOverflowEpisode());
-        if (_client is { IsConnected: true } client)
-        {
-            try
-            {
-                using var timeout = new CancellationTokenSource(_options.Timeout);
-                await client.PublishAsync(Message(new OutboundMessage(_topics.WorkerStatus, Encoding.UTF8.GetBytes(MqttClientOptionsFactory.Offline), Retain: true)), timeout.Token).ConfigureAwait(false);
-                await client.DisconnectAsync(new MqttClientDisconnectOptions(), timeout.Token).ConfigureAwait(false);
-            }
-            catch (Exception e) when (e is not OutOfMemoryException)
-            {
-                // The broker went away meanwhile: its last will says offline instead.
-            }
-        }
-
+        // If the broker goes away meanwhile, its last will says offline instead.
+        await _connection.CloseAsync((client, ct) => client.PublishAsync(Message(new OutboundMessage(_topics.WorkerStatus, Encoding.UTF8.GetBytes(Offline), Retain: true)), ct)).ConfigureAwait(false);
         MqttLog.Stopped(_logger, _queue.Count);
     }
 
     /// <inheritdoc/>
-    public async ValueTask DisposeAsync()
-    {
-        if (!_stop.IsCancellationRequested)
-        {
-            await _stop.CancelAsync().ConfigureAwait(false);
-        }
+    public ValueTask DisposeAsync() => _connection.DisposeAsync();
 
-        if (_loop is not null)
-        {
-            await _loop.ConfigureAwait(ConfigureAwaitOptions.SuppressThrowing);
-        }
-
-        _client?.Dispose();
-        _stop.Dispose();
-    }
+    /// <summary>MQTT 5, a clean start and the last will <c>offline</c> on the worker's status topic.</summary>
+    private MqttClientOptions ClientOptions()
+        => _connection.ClientOptions()
+            .WithProtocolVersion(MqttProtocolVersion.V500)
+            // No session kept by the broker: the worker's queue is the only store, and no stale command is delivered
+            // after a reconnection.
+            .WithCleanStart(true)
+            .WithWillTopic(_topics.WorkerStatus)
+            .WithWillPayload(Encoding.UTF8.GetBytes(Offline))
+            .WithWillRetain(true)
+            .WithWillQualityOfServiceLevel(MqttClientOptionsFactory.QualityOfService(_options.QoS))
+            .Build();
 
     private async Task RunAsync(CancellationToken cancellationToken)
     {
-        IMqttClient client = _client!;
-        TimeSpan backoff = TimeSpan.Zero;
-        int attempts = 0;
+        IMqttClient client = _connection.Client;
         long outageSince = 0;
         while (!cancellationToken.IsCancellationRequested)
         {
@@ -186,18 +170,17 @@ public sealed class MqttGateway : IHostedService, IAsyncDisposable
                     }
 
                     await ConnectAsync(client, cancellationToken).ConfigureAwait(false);
-                    if (attempts > 0)
+                    if (_connection.FailedAttempts > 0)
                     {
-                        MqttLog.Reconnected(_logger, _broker, _time.GetElapsedTime(outageSince).TotalSeconds, attempts, _queue.Count);
+                        MqttLog.Reconnected(_logger, _connection.Broker, _time.GetElapsedTime(outageSince).TotalSeconds, _connection.FailedAttempts, _queue.Count);
                     }
                     else if (!_everConnected)
                     {
-                        MqttLog.Connected(_logger, _broker, _options.ClientIdOrDefault, _topics.Prefix);
+                        MqttLog.Connected(_logger, _connection.Broker, _options.ClientIdOrDefault, _topics.Prefix);
                     }
 
                     _everConnected = true;
-                    attempts = 0;
-                    backoff = TimeSpan.Zero;
+                    _connection.Connected();
                     continue;
                 }
 
@@ -222,31 +205,23 @@ public sealed class MqttGateway : IHostedService, IAsyncDisposable
             {
                 // Unreachable, refused, TLS failure, an acknowledgement that did not come: start again from a fresh
                 // connection, so nothing half-done on the old one can reorder the queue.
-                await DropConnectionAsync(client).ConfigureAwait(false);
+                (string reason, TimeSpan delay) = await _connection.FailedAsync(e, Describe).ConfigureAwait(false);
                 if (_stopping)
                 {
                     return;
                 }
 
-                string reason = _certificateProblem is { } why ? "TLS: " + why : Describe(e);
-                _certificateProblem = null;
-                if (attempts++ == 0)
+                if (_connection.FailedAttempts == 1)
                 {
                     outageSince = _time.GetTimestamp();
-                    backoff = _options.Reconnect.Initial;
-                    MqttLog.Unreachable(_logger, _broker, reason, _queue.Count, backoff.TotalSeconds, _options.Reconnect.Max.TotalSeconds);
+                    MqttLog.Unreachable(_logger, _connection.Broker, reason, _queue.Count, delay.TotalSeconds, _options.Reconnect.Max.TotalSeconds);
                 }
                 else
                 {
-                    backoff = TimeSpan.FromTicks(Math.Min(backoff.Ticks * 2, _options.Reconnect.Max.Ticks));
-                    MqttLog.StillUnreachable(_logger, _broker, reason, backoff.TotalSeconds);
+                    MqttLog.StillUnreachable(_logger, _connection.Broker, reason, delay.TotalSeconds);
                 }
 
-                try
-                {
-                    await Task.Delay(backoff, _time, cancellationToken).ConfigureAwait(false);
-                }
-                catch (OperationCanceledException)
+                if (!await _connection.DelayAsync(delay).ConfigureAwait(false))
                 {
                     return;
                 }
@@ -272,7 +247,7 @@ public sealed class MqttGateway : IHostedService, IAsyncDisposable
         }
 
         // Birth first, then the state of every topic with nothing queued (a restarted broker may have lost it).
-        await PublishNowAsync(client, new OutboundMessage(_topics.WorkerStatus, Encoding.UTF8.GetBytes(MqttClientOptionsFactory.Online), Retain: true), cancellationToken).ConfigureAwait(false);
+        await PublishNowAsync(client, new OutboundMessage(_topics.WorkerStatus, Encoding.UTF8.GetBytes(Online), Retain: true), cancellationToken).ConfigureAwait(false);
         foreach (OutboundMessage message in _sink.Snapshot())
         {
             await PublishNowAsync(client, message, cancellationToken).ConfigureAwait(false);
@@ -344,25 +319,6 @@ public sealed class MqttGateway : IHostedService, IAsyncDisposable
         }
 
         return builder.Build();
-    }
-
-    /// <summary>Closes a connection that is still open, waiting 2 s at most; a connection already gone is left alone.</summary>
-    internal static async Task DropConnectionAsync(IMqttClient client)
-    {
-        if (!client.IsConnected)
-        {
-            return;
-        }
-
-        try
-        {
-            using var timeout = new CancellationTokenSource(TimeSpan.FromSeconds(2));
-            await client.DisconnectAsync(new MqttClientDisconnectOptions(), timeout.Token).ConfigureAwait(false);
-        }
-        catch (Exception e) when (e is not OutOfMemoryException)
-        {
-            // Already gone.
-        }
     }
 
     private void OnOverflowStarted()

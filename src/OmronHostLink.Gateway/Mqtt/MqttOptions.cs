@@ -1,39 +1,16 @@
-using OmronHostLink.Gateway.Configuration;
-
 namespace OmronHostLink.Gateway.Mqtt;
 
 /// <summary>
 /// The <c>Mqtt</c> section: publish tag values to an MQTT broker and, if allowed, accept writes. Without the section
 /// (or with <c>Enabled: false</c>) the worker only logs.
 /// </summary>
-public sealed class MqttOptions
+public sealed class MqttOptions : MqttBrokerOptions
 {
     /// <summary>The configuration section these options bind to.</summary>
     public const string SectionName = "Mqtt";
 
     /// <summary>False to keep the section in the file without connecting. Default true.</summary>
     public bool Enabled { get; set; } = true;
-
-    /// <summary>The broker's host name or address.</summary>
-    public string Host { get; set; } = "";
-
-    /// <summary>The broker's port. Default 1883, or 8883 with TLS.</summary>
-    public int? Port { get; set; }
-
-    /// <summary>
-    /// The MQTT client id, unique per worker; also names the worker's status topic. Default
-    /// <c>omronhostlink-{machine name}</c>.
-    /// </summary>
-    public string? ClientId { get; set; }
-
-    /// <summary>User name for the broker; none by default.</summary>
-    public string? Username { get; set; }
-
-    /// <summary>Password for the broker (needs <see cref="Username"/>). Keep it out of appsettings.json: use an environment variable or a secret store.</summary>
-    public string? Password { get; set; }
-
-    /// <summary>TLS to the broker.</summary>
-    public MqttTlsOptions Tls { get; set; } = new();
 
     /// <summary>Quality of service of everything the worker publishes and subscribes to: 0, 1 (default) or 2.</summary>
     public int QoS { get; set; } = 1;
@@ -54,26 +31,17 @@ public sealed class MqttOptions
     /// <summary>The outage queue on disk (off by default).</summary>
     public MqttDurableQueueOptions DurableQueue { get; set; } = new();
 
-    /// <summary>MQTT keep-alive: how soon a silent connection is noticed. Default 15 s.</summary>
-    public TimeSpan KeepAlive { get; set; } = TimeSpan.FromSeconds(15);
-
-    /// <summary>How long the broker may take to accept a connection or acknowledge a message. Default 10 s.</summary>
-    public TimeSpan Timeout { get; set; } = TimeSpan.FromSeconds(10);
-
-    /// <summary>Delay between connection attempts: Initial, doubling up to Max. Default 1 s to 30 s.</summary>
-    public BackoffOptions Reconnect { get; set; } = new();
-
     /// <summary>How often the statistics of every link and unit are published (and at once when a unit's state changes). Default 10 s; 1 s to 1 h.</summary>
     public TimeSpan StatisticsInterval { get; set; } = TimeSpan.FromSeconds(10);
 
     /// <summary>Writes from MQTT (off by default).</summary>
     public MqttWriteOptions Writes { get; set; } = new();
 
-    /// <summary>The port in effect.</summary>
-    public int PortOrDefault => Port ?? (Tls.Enabled ? 8883 : 1883);
-
-    /// <summary>The client id in effect.</summary>
-    public string ClientIdOrDefault => string.IsNullOrWhiteSpace(ClientId) ? DefaultClientId() : ClientId;
+    /// <summary>
+    /// The client id in effect, unique per worker; it also names the worker's status topic. Default
+    /// <c>omronhostlink-{machine name}</c>.
+    /// </summary>
+    public override string ClientIdOrDefault => string.IsNullOrWhiteSpace(ClientId) ? DefaultClientId() : ClientId;
 
     private static string DefaultClientId()
     {
@@ -81,28 +49,6 @@ public sealed class MqttOptions
         var name = new string(Environment.MachineName.ToLowerInvariant().Select(c => char.IsAsciiLetterOrDigit(c) || c is '-' or '_' ? c : '-').ToArray());
         return "omronhostlink-" + name;
     }
-}
-
-/// <summary>The <c>Mqtt:Tls</c> section.</summary>
-public sealed class MqttTlsOptions
-{
-    /// <summary>Connect with TLS. Default false.</summary>
-    public bool Enabled { get; set; }
-
-    /// <summary>
-    /// A PEM file with the CA certificate(s) that signed the broker's certificate (a private CA). When set, only these
-    /// CAs are trusted for the broker, as <c>mosquitto_sub --cafile</c> does; otherwise the system's trusted roots are.
-    /// </summary>
-    public string? CaFile { get; set; }
-
-    /// <summary>The name the broker's certificate must carry. Default <see cref="MqttOptions.Host"/>.</summary>
-    public string? ServerName { get; set; }
-
-    /// <summary>
-    /// Accept any server certificate (no validation at all). For a laboratory only: anyone on the path can read and
-    /// change the data. Logged as a warning at start. Default false.
-    /// </summary>
-    public bool AllowUntrustedCertificates { get; set; }
 }
 
 /// <summary>The <c>Mqtt:Writes</c> section.</summary>

@@ -34,32 +34,10 @@ public sealed class MqttOptionsValidator : IValidateOptions<MqttOptions>
 
         const string root = MqttOptions.SectionName;
         var failures = new List<string>(ConfigurationSchema.Check(_configuration.GetSection(root), typeof(MqttOptions)));
-        if (string.IsNullOrWhiteSpace(options.Host))
-        {
-            failures.Add($"{root}:Host is empty; set the broker's host name or address (e.g. 127.0.0.1 or broker.plant.local).");
-        }
-        else if (options.Host.Any(char.IsWhiteSpace) || options.Host.Contains('/', StringComparison.Ordinal) || options.Host.Count(c => c == ':') == 1)
-        {
-            failures.Add($"{root}:Host '{options.Host}' is not a host name or address (no scheme, no port: the port is {root}:Port).");
-        }
-        else if (HostSyntax.Problem(options.Host) is { } hostProblem)
-        {
-            failures.Add($"{root}:Host '{options.Host}' is not a host name or address: {hostProblem}.");
-        }
-
-        if (options.Port is { } port && port is < 1 or > 65535)
-        {
-            failures.Add($"{root}:Port must be 1-65535; it is {port}.");
-        }
-
+        MqttBrokerOptionsValidator.Validate(options, root, failures);
         if (!string.IsNullOrWhiteSpace(options.ClientId) && MqttTopics.LevelProblem(options.ClientId) is { } idProblem)
         {
             failures.Add($"{root}:ClientId '{options.ClientId}' names the worker's status topic ({{TopicPrefix}}/status/{{ClientId}}) and {idProblem}.");
-        }
-
-        if (!string.IsNullOrEmpty(options.Password) && string.IsNullOrEmpty(options.Username))
-        {
-            failures.Add($"{root}:Password is set without {root}:Username.");
         }
 
         if (options.QoS is < 0 or > 2)
@@ -73,40 +51,7 @@ public sealed class MqttOptionsValidator : IValidateOptions<MqttOptions>
             failures.Add($"{root}:QueueCapacity must be 1-10000000; it is {options.QueueCapacity}.");
         }
 
-        if (options.KeepAlive < TimeSpan.FromSeconds(1) || options.KeepAlive > TimeSpan.FromSeconds(ushort.MaxValue))
-        {
-            // 0 would turn MQTT keep-alive off: a broker that vanished without closing the connection would go unnoticed.
-            failures.Add($"{root}:KeepAlive must be 1s to 18:12:15 (whole seconds); it is {options.KeepAlive}.");
-        }
-        else if (options.KeepAlive.Ticks % TimeSpan.TicksPerSecond != 0)
-        {
-            failures.Add($"{root}:KeepAlive is sent in whole seconds; {options.KeepAlive} is not.");
-        }
-
-        if (options.Timeout <= TimeSpan.Zero)
-        {
-            failures.Add($"{root}:Timeout must be more than 0; it is {options.Timeout}.");
-        }
-
-        if (options.Reconnect is null)
-        {
-            failures.Add($"{root}:Reconnect is missing.");
-        }
-        else
-        {
-            if (options.Reconnect.Initial <= TimeSpan.Zero)
-            {
-                failures.Add($"{root}:Reconnect:Initial must be more than 0; it is {options.Reconnect.Initial}.");
-            }
-
-            if (options.Reconnect.Max < options.Reconnect.Initial)
-            {
-                failures.Add($"{root}:Reconnect:Max ({options.Reconnect.Max}) must be at least Reconnect:Initial ({options.Reconnect.Initial}).");
-            }
-        }
-
         ValidateDurableQueue(options, failures);
-        ValidateTls(options.Tls, failures);
         ValidateReplyPrefixes(options, failures);
         ValidateTags(failures);
         return failures.Count == 0 ? ValidateOptionsResult.Success : ValidateOptionsResult.Fail(failures);
@@ -193,58 +138,6 @@ public sealed class MqttOptionsValidator : IValidateOptions<MqttOptions>
             {
                 failures.Add($"{key} '{prefix}': a level {(level.Length == 0 ? "is empty (a leading, trailing or doubled '/')" : problem)}.");
                 return;
-            }
-        }
-    }
-
-    /// <summary>Checks a <c>Tls</c> section (<paramref name="key"/>: its path, <c>Mqtt:Tls</c> by default).</summary>
-    internal static void ValidateTls(MqttTlsOptions? tls, List<string> failures, string key = MqttOptions.SectionName + ":Tls")
-    {
-        if (tls is null)
-        {
-            return;
-        }
-
-        if (!tls.Enabled)
-        {
-            string? set = !string.IsNullOrEmpty(tls.CaFile) ? "CaFile" : tls.AllowUntrustedCertificates ? "AllowUntrustedCertificates" : !string.IsNullOrEmpty(tls.ServerName) ? "ServerName" : null;
-            if (set is not null)
-            {
-                failures.Add($"{key}:Enabled is false but {set} is set; set {key}:Enabled to true to use TLS.");
-            }
-
-            return;
-        }
-
-        if (!string.IsNullOrEmpty(tls.ServerName) && HostSyntax.Problem(tls.ServerName) is { } nameProblem)
-        {
-            failures.Add($"{key}:ServerName '{tls.ServerName}' is not a host name or address: {nameProblem}.");
-        }
-
-        if (!string.IsNullOrEmpty(tls.CaFile))
-        {
-            if (!File.Exists(tls.CaFile))
-            {
-                failures.Add($"{key}:CaFile '{tls.CaFile}' does not exist (relative paths start at the working directory, {Environment.CurrentDirectory}).");
-            }
-            else
-            {
-                try
-                {
-                    foreach (System.Security.Cryptography.X509Certificates.X509Certificate2 certificate in MqttClientOptionsFactory.LoadAuthorities(tls.CaFile))
-                    {
-                        certificate.Dispose();
-                    }
-                }
-                catch (Exception e) when (e is InvalidOperationException or System.Security.Cryptography.CryptographicException or IOException or UnauthorizedAccessException)
-                {
-                    failures.Add($"{key}:CaFile '{tls.CaFile}' cannot be read as PEM certificates: {e.Message}");
-                }
-            }
-
-            if (tls.AllowUntrustedCertificates)
-            {
-                failures.Add($"{key}: set either CaFile or AllowUntrustedCertificates, not both (AllowUntrustedCertificates turns every check off).");
             }
         }
     }

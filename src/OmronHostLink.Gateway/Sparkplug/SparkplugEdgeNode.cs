@@ -25,17 +25,11 @@ public sealed class SparkplugEdgeNode : IHostedService, IAsyncDisposable
     private readonly SparkplugNode _node;
     private readonly SparkplugCommands _commands;
     private readonly MqttClientFactory _factory = new();
+    private readonly MqttBrokerConnection _connection;
     private readonly ILogger _logger;
-    private readonly TimeProvider _time;
-    private readonly string _broker;
     private readonly Channel<bool> _wake = Channel.CreateBounded<bool>(new BoundedChannelOptions(1) { FullMode = BoundedChannelFullMode.DropWrite });
-    private readonly CancellationTokenSource _stop = new();
-    private IMqttClient? _client;
-    private Task? _loop;
-    private Task? _commandLoop;
     private ulong _bdSeq;
     private int _connections;
-    private volatile string? _certificateProblem;
 
     /// <summary>Creates the edge node; nothing connects until it is started.</summary>
     public SparkplugEdgeNode(IOptions<SparkplugOptions> options, SparkplugNode node, SparkplugCommands commands, ILogger<SparkplugEdgeNode> logger, TimeProvider timeProvider)
@@ -45,8 +39,7 @@ public sealed class SparkplugEdgeNode : IHostedService, IAsyncDisposable
         _node = node;
         _commands = commands;
         _logger = logger;
-        _time = timeProvider;
-        _broker = $"{_options.Host}:{_options.PortOrDefault}";
+        _connection = new MqttBrokerConnection(_options, SparkplugOptions.SectionName, _factory, timeProvider);
     }
 
     /// <summary>Whether the session is up (connected, births sent).</summary>
@@ -57,75 +50,53 @@ public sealed class SparkplugEdgeNode : IHostedService, IAsyncDisposable
     {
         if (_options.Tls is { Enabled: true, AllowUntrustedCertificates: true })
         {
-            SparkplugLog.UntrustedCertificates(_logger, _broker);
+            SparkplugLog.UntrustedCertificates(_logger, _connection.Broker);
         }
 
-        _client = _factory.CreateMqttClient();
-        _client.DisconnectedAsync += _ =>
+        IMqttClient client = _connection.Client;
+        client.DisconnectedAsync += _ =>
         {
             Wake();
             return Task.CompletedTask;
         };
-        _client.ApplicationMessageReceivedAsync += e =>
+        client.ApplicationMessageReceivedAsync += e =>
         {
             Received(e.ApplicationMessage);
             return Task.CompletedTask;
         };
         _node.Changed += Wake;
-        _loop = Task.Run(() => RunAsync(_stop.Token), CancellationToken.None);
-        _commandLoop = Task.Run(() => _commands.RunAsync(_stop.Token), CancellationToken.None);
+        _connection.Start(RunAsync, _commands.RunAsync);
         return Task.CompletedTask;
     }
 
     /// <inheritdoc/>
     public async Task StopAsync(CancellationToken cancellationToken)
     {
-        if (_loop is null || _stop.IsCancellationRequested)
+        if (_connection.ConnectionLoop is null || _connection.IsStopping)
         {
             return;
         }
 
         _node.Changed -= Wake;
-        await _stop.CancelAsync().ConfigureAwait(false);
-        await _loop.ConfigureAwait(ConfigureAwaitOptions.SuppressThrowing);
-        await _commandLoop!.ConfigureAwait(ConfigureAwaitOptions.SuppressThrowing);
+        await _connection.StopLoopsAsync().ConfigureAwait(false);
 
         // The links have stopped (they are registered after this service): their devices' deaths go out, then NDEATH.
-        if (IsOnline && _client is { IsConnected: true } client)
+        // If the broker goes away meanwhile, it publishes the will, the same NDEATH.
+        if (IsOnline)
         {
-            try
+            await _connection.CloseAsync(async (client, ct) =>
             {
-                using var timeout = new CancellationTokenSource(_options.Timeout);
-                await PublishPendingAsync(client, timeout.Token).ConfigureAwait(false);
-                await client.PublishAsync(Message(_node.Topic(SparkplugMessageType.NDEATH), SparkplugPayloads.NodeDeath(_bdSeq), MqttQualityOfServiceLevel.AtLeastOnce), timeout.Token).ConfigureAwait(false);
-                await client.DisconnectAsync(new MqttClientDisconnectOptions(), timeout.Token).ConfigureAwait(false);
-            }
-            catch (Exception e) when (e is not OutOfMemoryException)
-            {
-                // The broker went away meanwhile: it publishes the will, the same NDEATH.
-            }
+                await PublishPendingAsync(client, ct).ConfigureAwait(false);
+                await client.PublishAsync(Message(_node.Topic(SparkplugMessageType.NDEATH), SparkplugPayloads.NodeDeath(_bdSeq), MqttQualityOfServiceLevel.AtLeastOnce), ct).ConfigureAwait(false);
+            }).ConfigureAwait(false);
         }
 
         IsOnline = false;
-        SparkplugLog.Stopped(_logger, _broker);
+        SparkplugLog.Stopped(_logger, _connection.Broker);
     }
 
     /// <inheritdoc/>
-    public async ValueTask DisposeAsync()
-    {
-        if (!_stop.IsCancellationRequested)
-        {
-            await _stop.CancelAsync().ConfigureAwait(false);
-        }
-
-        if (_loop is not null)
-        {
-            await _loop.ConfigureAwait(ConfigureAwaitOptions.SuppressThrowing);
-        }
-
-        _client?.Dispose();
-        _stop.Dispose();
-    }
+    public ValueTask DisposeAsync() => _connection.DisposeAsync();
 
     private void Wake() => _wake.Writer.TryWrite(true);
 
@@ -157,9 +128,7 @@ public sealed class SparkplugEdgeNode : IHostedService, IAsyncDisposable
 
     private async Task RunAsync(CancellationToken cancellationToken)
     {
-        IMqttClient client = _client!;
-        TimeSpan backoff = TimeSpan.Zero;
-        int attempts = 0;
+        IMqttClient client = _connection.Client;
         while (!cancellationToken.IsCancellationRequested)
         {
             try
@@ -168,8 +137,7 @@ public sealed class SparkplugEdgeNode : IHostedService, IAsyncDisposable
                 {
                     IsOnline = false;
                     await ConnectAsync(client, cancellationToken).ConfigureAwait(false);
-                    attempts = 0;
-                    backoff = TimeSpan.Zero;
+                    _connection.Connected();
                     continue;
                 }
 
@@ -189,17 +157,10 @@ public sealed class SparkplugEdgeNode : IHostedService, IAsyncDisposable
             catch (Exception e) when (e is not OutOfMemoryException)
             {
                 IsOnline = false;
-                await MqttGateway.DropConnectionAsync(client).ConfigureAwait(false);
+                (string reason, TimeSpan delay) = await _connection.FailedAsync(e, x => x.Message).ConfigureAwait(false);
                 _node.TakeMessages(connected: false);
-                string reason = _certificateProblem is { } why ? "TLS: " + why : e.Message;
-                _certificateProblem = null;
-                backoff = attempts++ == 0 ? _options.Reconnect.Initial : TimeSpan.FromTicks(Math.Min(backoff.Ticks * 2, _options.Reconnect.Max.Ticks));
-                SparkplugLog.Unreachable(_logger, _broker, reason, backoff.TotalSeconds);
-                try
-                {
-                    await Task.Delay(backoff, _time, cancellationToken).ConfigureAwait(false);
-                }
-                catch (OperationCanceledException)
+                SparkplugLog.Unreachable(_logger, _connection.Broker, reason, delay.TotalSeconds);
+                if (!await _connection.DelayAsync(delay).ConfigureAwait(false))
                 {
                     return;
                 }
@@ -225,7 +186,7 @@ public sealed class SparkplugEdgeNode : IHostedService, IAsyncDisposable
         List<SparkplugMessage> births = _node.Births(_bdSeq);
         await PublishAllAsync(client, births, cancellationToken).ConfigureAwait(false);
         IsOnline = true;
-        SparkplugLog.Online(_logger, _broker, _node.GroupId, _node.EdgeNodeId, _bdSeq, births.Count - 1);
+        SparkplugLog.Online(_logger, _connection.Broker, _node.GroupId, _node.EdgeNodeId, _bdSeq, births.Count - 1);
     }
 
     private async Task PublishPendingAsync(IMqttClient client, CancellationToken cancellationToken)
@@ -247,38 +208,14 @@ public sealed class SparkplugEdgeNode : IHostedService, IAsyncDisposable
             .WithRetainFlag(false)
             .Build();
 
+    /// <summary>MQTT 3.1.1, a clean session and the NDEATH of <paramref name="bdSeq"/> as the will.</summary>
     private MqttClientOptions ClientOptions(ulong bdSeq)
-    {
-        MqttClientOptionsBuilder builder = new MqttClientOptionsBuilder()
-            .WithTcpServer(_options.Host, _options.PortOrDefault)
-            .WithClientId(_options.ClientIdOrDefault)
+        => _connection.ClientOptions()
             .WithProtocolVersion(MqttProtocolVersion.V311)
             .WithCleanSession(true)
-            .WithKeepAlivePeriod(_options.KeepAlive)
-            .WithTimeout(_options.Timeout)
             .WithWillTopic(_node.Topic(SparkplugMessageType.NDEATH).ToString())
             .WithWillPayload(SparkplugPayloads.NodeDeath(bdSeq))
             .WithWillQualityOfServiceLevel(MqttQualityOfServiceLevel.AtLeastOnce)
-            .WithWillRetain(false);
-        if (!string.IsNullOrEmpty(_options.Username))
-        {
-            builder = builder.WithCredentials(_options.Username, _options.Password ?? "");
-        }
-
-        if (_options.Tls.Enabled)
-        {
-            MqttTlsOptions tls = _options.Tls;
-            System.Security.Cryptography.X509Certificates.X509Certificate2Collection? authorities = string.IsNullOrEmpty(tls.CaFile) ? null : MqttClientOptionsFactory.LoadAuthorities(tls.CaFile);
-            builder = builder.WithTlsOptions(o => o.UseTls()
-                .WithTargetHost(string.IsNullOrEmpty(tls.ServerName) ? _options.Host : tls.ServerName)
-                .WithCertificateValidationHandler(e =>
-                {
-                    string? why = MqttClientOptionsFactory.CertificateProblem(e.Certificate, e.Chain, e.SslPolicyErrors, authorities, tls.AllowUntrustedCertificates);
-                    _certificateProblem = why;
-                    return why is null;
-                }));
-        }
-
-        return builder.Build();
-    }
+            .WithWillRetain(false)
+            .Build();
 }

@@ -27,45 +27,7 @@ public sealed class SparkplugOptionsValidator(IConfiguration configuration) : IV
         var failures = new List<string>(ConfigurationSchema.Check(configuration.GetSection(Root), typeof(SparkplugOptions)));
         Id(nameof(SparkplugOptions.GroupId), options.GroupId, "the group the edge node belongs to, such as Plant1", failures);
         Id(nameof(SparkplugOptions.EdgeNodeId), options.EdgeNodeId, "this gateway's name in the group, such as hostlink-gw1", failures);
-        if (string.IsNullOrWhiteSpace(options.Host))
-        {
-            failures.Add($"{Root}:Host is empty; set the broker's host name or address (e.g. 127.0.0.1 or broker.plant.local).");
-        }
-        else if (options.Host.Any(char.IsWhiteSpace) || options.Host.Contains('/', StringComparison.Ordinal) || options.Host.Count(c => c == ':') == 1)
-        {
-            failures.Add($"{Root}:Host '{options.Host}' is not a host name or address (no scheme, no port: the port is {Root}:Port).");
-        }
-        else if (HostSyntax.Problem(options.Host) is { } hostProblem)
-        {
-            failures.Add($"{Root}:Host '{options.Host}' is not a host name or address: {hostProblem}.");
-        }
-
-        if (options.Port is { } port && port is < 1 or > 65535)
-        {
-            failures.Add($"{Root}:Port must be 1-65535; it is {port}.");
-        }
-
-        if (!string.IsNullOrEmpty(options.Password) && string.IsNullOrEmpty(options.Username))
-        {
-            failures.Add($"{Root}:Password is set without {Root}:Username.");
-        }
-
-        if (options.KeepAlive < TimeSpan.FromSeconds(1) || options.KeepAlive > TimeSpan.FromSeconds(ushort.MaxValue) || options.KeepAlive.Ticks % TimeSpan.TicksPerSecond != 0)
-        {
-            failures.Add($"{Root}:KeepAlive must be whole seconds from 1s to 18:12:15; it is {options.KeepAlive}.");
-        }
-
-        if (options.Timeout <= TimeSpan.Zero)
-        {
-            failures.Add($"{Root}:Timeout must be more than 0; it is {options.Timeout}.");
-        }
-
-        if (options.Reconnect is null || options.Reconnect.Initial <= TimeSpan.Zero || options.Reconnect.Max < options.Reconnect.Initial)
-        {
-            failures.Add($"{Root}:Reconnect: Initial must be more than 0 and Max at least Initial; they are {options.Reconnect?.Initial} and {options.Reconnect?.Max}.");
-        }
-
-        MqttOptionsValidator.ValidateTls(options.Tls, failures, Root + ":Tls");
+        MqttBrokerOptionsValidator.Validate(options, Root, failures);
         ValidateTags(failures);
         return failures.Count == 0 ? ValidateOptionsResult.Success : ValidateOptionsResult.Fail(failures);
     }

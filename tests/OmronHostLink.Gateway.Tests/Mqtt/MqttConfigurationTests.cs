@@ -70,6 +70,7 @@ public sealed class MqttConfigurationTests
         { "Mqtt:ClientId=worker/1", "Mqtt:ClientId 'worker/1' names the worker's status topic" },
         { "Mqtt:Password=secret", "Mqtt:Password is set without Mqtt:Username" },
         { "Mqtt:QueueCapacity=0", "Mqtt:QueueCapacity must be 1-10000000; it is 0" },
+        { "Mqtt:KeepAlive=1.5s", "Mqtt:KeepAlive is sent in whole seconds; 00:00:01.5000000 is not" },
         { "Mqtt:Timeout=00:00:00", "Mqtt:Timeout must be more than 0" },
         { "Mqtt:Reconnect:Max=00:00:00.050", "Mqtt:Reconnect:Max (00:00:00.0500000) must be at least Reconnect:Initial" },
         { "Mqtt:Tls:Enabled=true;Mqtt:Tls:CaFile=/nonexistent/ca.pem", "Mqtt:Tls:CaFile '/nonexistent/ca.pem' does not exist" },
