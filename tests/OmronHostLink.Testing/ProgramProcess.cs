@@ -68,6 +68,9 @@ public class ProgramProcess : IAsyncDisposable
     /// <summary>The exit code, once it has exited.</summary>
     public int ExitCode => _process.ExitCode;
 
+    /// <summary>The process itself, for what a launcher of its own does with it.</summary>
+    protected Process Process => _process;
+
     /// <summary>The lines kept so far, standard output and standard error together, in the order they came.</summary>
     public IReadOnlyList<string> Lines
     {
