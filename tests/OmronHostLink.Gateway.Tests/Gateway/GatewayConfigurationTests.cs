@@ -1,4 +1,3 @@
-using Microsoft.Extensions.Configuration;
 using Microsoft.Extensions.Hosting;
 using Microsoft.Extensions.Logging;
 using Microsoft.Extensions.Options;
@@ -89,15 +88,7 @@ public sealed class GatewayConfigurationTests
 
     private static IHost Build(Dictionary<string, string?> config, CapturingLoggerProvider logs)
     {
-        var configuration = new ConfigurationManager();
-        configuration.AddInMemoryCollection(config);
-        HostApplicationBuilder builder = GatewayHost.CreateBuilder(new HostApplicationBuilderSettings
-        {
-            DisableDefaults = true,
-            EnvironmentName = "Test",
-            ContentRootPath = AppContext.BaseDirectory,
-            Configuration = configuration,
-        });
+        HostApplicationBuilder builder = TestGatewayHost.CreateBuilder(config);
         builder.Logging.AddProvider(logs);
         return builder.Build();
     }
