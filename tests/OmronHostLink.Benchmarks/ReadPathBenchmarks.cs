@@ -66,7 +66,7 @@ public class ReadPathBenchmarks
     }
 
     /// <summary>A PLC in a stream: every write is taken as an RD command and answered with a fixed answer of the right size.</summary>
-    private sealed class AnsweringStream : Stream, IThreadPoolWorkItem
+    private sealed class AnsweringStream : PassThroughStream, IThreadPoolWorkItem
     {
         private readonly byte[] _answer;
         private readonly bool _onThreadPool;
@@ -78,6 +78,7 @@ public class ReadPathBenchmarks
         private int _answered = -1;
 
         public AnsweringStream(int words, bool onThreadPool)
+            : base(Null)
         {
             _onThreadPool = onThreadPool;
             var text = new byte[2 + (4 * words)];
@@ -90,20 +91,6 @@ public class ReadPathBenchmarks
             Array.Resize(ref _answer, length);
             _read.RunContinuationsAsynchronously = false;
             _source = new Source(this);
-        }
-
-        public override bool CanRead => true;
-
-        public override bool CanSeek => false;
-
-        public override bool CanWrite => true;
-
-        public override long Length => throw new NotSupportedException();
-
-        public override long Position
-        {
-            get => throw new NotSupportedException();
-            set => throw new NotSupportedException();
         }
 
         public override ValueTask WriteAsync(ReadOnlyMemory<byte> buffer, CancellationToken cancellationToken = default)
@@ -139,18 +126,6 @@ public class ReadPathBenchmarks
             }
         }
 
-        public override Task FlushAsync(CancellationToken cancellationToken) => Task.CompletedTask;
-
-        public override void Flush()
-        {
-        }
-
-        public override int Read(byte[] buffer, int offset, int count) => throw new NotSupportedException();
-
-        public override void Write(byte[] buffer, int offset, int count) => throw new NotSupportedException();
-
-        public override long Seek(long offset, SeekOrigin origin) => throw new NotSupportedException();
-
         /// <summary>Closing ends a pending read with end of stream, as a closed socket does.</summary>
         protected override void Dispose(bool disposing)
         {
@@ -168,8 +143,6 @@ public class ReadPathBenchmarks
 
             base.Dispose(disposing);
         }
-
-        public override void SetLength(long value) => throw new NotSupportedException();
 
         private void Answer()
         {

@@ -1,7 +1,6 @@
 using System.Diagnostics;
 using System.Net;
 using System.Net.Sockets;
-using System.Runtime.InteropServices;
 using System.Text;
 using System.Text.Json;
 using OmronHostLink.Simulator;
@@ -105,19 +104,19 @@ public sealed class CliMonitorTests
     public async Task Ctrl_c_pressed_twice_still_exits_0()
     {
         await using var sim = await SimulatedPlc.StartAsync();
-        using Process process = RealCli.Start("monitor", "D0", "--interval", "50ms", "--tcp", sim.Endpoint);
-        await RealCli.WaitForOutputAsync(process, "D0");
+        await using HostlinkProcess process = HostlinkProcess.Start("monitor", "D0", "--interval", "50ms", "--tcp", sim.Endpoint);
+        await process.ExpectOutputAsync("D0", TimeSpan.FromSeconds(20));
 
         // A user who presses Ctrl+C more than once: the later ones arrive while the first is stopping the watch.
         for (int i = 0; i < 5 && !process.HasExited; i++)
         {
-            RealCli.Signal(process, RealCli.SigInt);
+            process.Signal(ProgramProcess.SigInt);
             await Task.Delay(2);
         }
 
-        await process.WaitForExitAsync().WaitAsync(TimeSpan.FromSeconds(15));
+        await process.WaitForExitAsync(TimeSpan.FromSeconds(15));
 
-        string err = await process.StandardError.ReadToEndAsync();
+        string err = process.Err;
         process.ExitCode.Should().Be(0, err);
         err.Should().NotContain(" at ");
     }
@@ -126,13 +125,13 @@ public sealed class CliMonitorTests
     public async Task Sigterm_exits_0()
     {
         await using var sim = await SimulatedPlc.StartAsync();
-        using Process process = RealCli.Start("monitor", "D0", "--interval", "50ms", "--tcp", sim.Endpoint);
-        await RealCli.WaitForOutputAsync(process, "D0");
+        await using HostlinkProcess process = HostlinkProcess.Start("monitor", "D0", "--interval", "50ms", "--tcp", sim.Endpoint);
+        await process.ExpectOutputAsync("D0", TimeSpan.FromSeconds(20));
 
-        RealCli.Signal(process, RealCli.SigTerm);
-        await process.WaitForExitAsync().WaitAsync(TimeSpan.FromSeconds(15));
+        process.Signal(ProgramProcess.SigTerm);
+        await process.WaitForExitAsync(TimeSpan.FromSeconds(15));
 
-        process.ExitCode.Should().Be(0, await process.StandardError.ReadToEndAsync());
+        process.ExitCode.Should().Be(0, process.Err);
     }
 
     [Fact]
@@ -271,74 +270,4 @@ public sealed class CliMonitorTests
             await Task.Delay(20);
         }
     }
-}
-
-/// <summary>The built <c>hostlink</c> program as its own process, for what only a real process has: signals.</summary>
-internal static class RealCli
-{
-    public const int SigInt = 2;
-    public const int SigTerm = 15;
-
-    public static Process Start(params string[] args)
-    {
-        AllowSigIntInChildren();
-        var start = new ProcessStartInfo("dotnet")
-        {
-            RedirectStandardOutput = true,
-            RedirectStandardError = true,
-            UseShellExecute = false,
-        };
-        start.ArgumentList.Add(Path.Combine(AppContext.BaseDirectory, "hostlink.dll"));
-        foreach (string arg in Cli.WithAllowance(args))
-        {
-            start.ArgumentList.Add(arg);
-        }
-
-        return Process.Start(start)!;
-    }
-
-    /// <summary>Reads stdout until a line contains <paramref name="text"/>.</summary>
-    public static async Task WaitForOutputAsync(Process process, string text)
-    {
-        using var timeout = new CancellationTokenSource(TimeSpan.FromSeconds(20));
-        while (await process.StandardOutput.ReadLineAsync(timeout.Token) is { } line)
-        {
-            if (line.Contains(text, StringComparison.Ordinal))
-            {
-                return;
-            }
-        }
-
-        throw new InvalidOperationException("The program ended before printing " + text + ": " + await process.StandardError.ReadToEndAsync());
-    }
-
-    public static void Signal(Process process, int signal)
-    {
-        const int NoSuchProcess = 3;
-        if (Kill(process.Id, signal) != 0 && Marshal.GetLastPInvokeError() != NoSuchProcess)
-        {
-            throw new InvalidOperationException($"kill({process.Id}, {signal}) failed: errno {Marshal.GetLastPInvokeError()}");
-        }
-    }
-
-    /// <summary>
-    /// A test host started in the background inherits SIGINT ignored, and so would every program it starts (an ignored
-    /// signal stays ignored across exec). Ctrl+C is what is tested here, so children get the default disposition back.
-    /// </summary>
-    private static void AllowSigIntInChildren()
-    {
-        string status = File.ReadAllText("/proc/self/status");
-        string line = status.Split('\n').First(l => l.StartsWith("SigIgn:", StringComparison.Ordinal));
-        ulong ignored = Convert.ToUInt64(line["SigIgn:".Length..].Trim(), 16);
-        if ((ignored & (1UL << (SigInt - 1))) != 0)
-        {
-            SetSignal(SigInt, IntPtr.Zero);
-        }
-    }
-
-    [DllImport("libc", EntryPoint = "kill", SetLastError = true)]
-    private static extern int Kill(int pid, int signal);
-
-    [DllImport("libc", EntryPoint = "signal")]
-    private static extern IntPtr SetSignal(int signal, IntPtr handler);
 }

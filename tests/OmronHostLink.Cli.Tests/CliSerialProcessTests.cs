@@ -30,7 +30,7 @@ public sealed class CliSerialProcessTests
     private static async Task<HostlinkProcess> StartSimulatorAsync(string port, string memory)
     {
         HostlinkProcess sim = HostlinkProcess.Start("simulate", "--port", port, "--memory", memory);
-        await sim.WaitForOutputAsync($"on {port} 9600 7E2. Ctrl+C stops.", ProcessTimeout);
+        await sim.ExpectOutputAsync($"on {port} 9600 7E2. Ctrl+C stops.", ProcessTimeout);
         return sim;
     }
 
@@ -48,7 +48,7 @@ public sealed class CliSerialProcessTests
                 await ReadsD0To4Async(pair.PathA, $"read process {i}");
             }
 
-            await sim.TerminateAsync();
+            sim.Signal(ProgramProcess.SigTerm);
             (await sim.WaitForExitAsync(ProcessTimeout)).Should().Be(0, sim.Err);
             sim.Out.Should().Contain("Simulator stopped.");
         }
@@ -69,7 +69,7 @@ public sealed class CliSerialProcessTests
             // Stopped and started again on the same pty: the second process opens it with the same default settings.
             HostlinkProcess first = await StartSimulatorAsync(pair.PathB, memory);
             await ReadsD0To4Async(pair.PathA, "first simulator");
-            await first.TerminateAsync();
+            first.Signal(ProgramProcess.SigTerm);
             (await first.WaitForExitAsync(ProcessTimeout)).Should().Be(0, first.Err);
             await first.DisposeAsync();
 
@@ -79,7 +79,7 @@ public sealed class CliSerialProcessTests
             // The line goes away under the running simulator and comes back on the same names.
             await pair.CloseAsync();
             again = await pair.RestartAsync();
-            await second.WaitForOutputAsync($"Serving {pair.PathB} 9600 7E2 again.", ProcessTimeout, onStandardError: true);
+            await second.ExpectOutputAsync($"Serving {pair.PathB} 9600 7E2 again.", ProcessTimeout, onStandardError: true);
             second.Err.Should().Contain($"Lost {pair.PathB} 9600 7E2; opening it again when it is back.");
             await ReadsD0To4Async(again.PathA, "after socat restarted under the simulator");
         }

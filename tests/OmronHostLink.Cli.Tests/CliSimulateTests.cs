@@ -61,7 +61,7 @@ public sealed class CliSimulateTests
     public async Task The_ready_file_appears_once_the_simulator_listens_and_goes_when_it_stops()
     {
         string ready = Path.Combine(Path.GetTempPath(), $"hostlink-ready-{Guid.NewGuid():N}");
-        using Process process = RealCli.Start("simulate", "--tcp", "127.0.0.1:0", "--ready-file", ready);
+        await using HostlinkProcess process = HostlinkProcess.Start("simulate", "--tcp", "127.0.0.1:0", "--ready-file", ready);
         try
         {
             var clock = Stopwatch.StartNew();
@@ -69,7 +69,7 @@ public sealed class CliSimulateTests
             {
                 if (process.HasExited)
                 {
-                    throw new InvalidOperationException("The simulator ended before it was ready: " + await process.StandardError.ReadToEndAsync());
+                    throw new InvalidOperationException("The simulator ended before it was ready: " + process.Err);
                 }
 
                 clock.Elapsed.Should().BeLessThan(TimeSpan.FromSeconds(20));
@@ -84,8 +84,8 @@ public sealed class CliSimulateTests
         }
         finally
         {
-            RealCli.Signal(process, RealCli.SigTerm);
-            await process.WaitForExitAsync().WaitAsync(TimeSpan.FromSeconds(15));
+            process.Signal(ProgramProcess.SigTerm);
+            await process.WaitForExitAsync(TimeSpan.FromSeconds(15));
         }
 
         process.ExitCode.Should().Be(0);

@@ -3,7 +3,6 @@ using System.Diagnostics;
 using System.Globalization;
 using System.Net;
 using System.Net.Sockets;
-using System.Runtime.InteropServices;
 using System.Text;
 
 namespace OmronHostLink.Testing;
@@ -170,7 +169,7 @@ public sealed class MosquittoBroker : IAsyncDisposable
         _process = null;
         if (!process.HasExited)
         {
-            _ = Kill(process.Id, 15);
+            ProgramProcess.SendSignal(process.Id, ProgramProcess.SigTerm);
             using var timeout = new CancellationTokenSource(TimeSpan.FromSeconds(10));
             try
             {
@@ -338,7 +337,4 @@ public sealed class MosquittoBroker : IAsyncDisposable
             _log.AppendLine(line);
         }
     }
-
-    [DllImport("libc", EntryPoint = "kill", SetLastError = true)]
-    private static extern int Kill(int pid, int signal);
 }

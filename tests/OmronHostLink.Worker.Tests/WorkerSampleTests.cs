@@ -1,5 +1,4 @@
 using System.Diagnostics;
-using System.Text;
 using OmronHostLink.Simulator;
 using OmronHostLink.Simulator.Hosting;
 
@@ -43,99 +42,34 @@ public sealed class WorkerSampleTests
             .And.NotContain("   at ", "a configuration mistake prints no stack trace");
     }
 
-    private sealed class SampleProcess : IAsyncDisposable
+    /// <summary>The sample's own executable in this test's output folder, with its appsettings.json there.</summary>
+    private sealed class SampleProcess : ProgramProcess
     {
-        private readonly Process _process;
-        private readonly StringBuilder _output = new();
-
-        private SampleProcess(Process process) => _process = process;
-
-        public string Output
+        private SampleProcess(ProcessStartInfo start)
+            : base(start)
         {
-            get
-            {
-                lock (_output)
-                {
-                    return _output.ToString();
-                }
-            }
         }
 
         public static SampleProcess Start(params string[] args)
         {
-            var start = new ProcessStartInfo("dotnet")
-            {
-                RedirectStandardOutput = true,
-                RedirectStandardError = true,
-                WorkingDirectory = AppContext.BaseDirectory,
-            };
-            start.ArgumentList.Add(Path.Combine(AppContext.BaseDirectory, "OmronHostLink.Worker.dll"));
-            start.ArgumentList.Add("--contentRoot");
-            start.ArgumentList.Add(AppContext.BaseDirectory);
-            foreach (string arg in args)
-            {
-                start.ArgumentList.Add(arg);
-            }
+            ProcessStartInfo start = DotnetStart(
+                Path.Combine(AppContext.BaseDirectory, "OmronHostLink.Worker.dll"),
+                ["--contentRoot", AppContext.BaseDirectory, .. args]);
+            start.WorkingDirectory = AppContext.BaseDirectory;
 
             // Plain console lines, one entry a line, so the test reads the message text.
             start.Environment["Logging__Console__FormatterName"] = "simple";
             start.Environment["Logging__Console__FormatterOptions__SingleLine"] = "true";
-            var sample = new SampleProcess(new Process { StartInfo = start });
-            sample._process.OutputDataReceived += (_, e) => sample.Append(e.Data);
-            sample._process.ErrorDataReceived += (_, e) => sample.Append(e.Data);
-            sample._process.Start();
-            sample._process.BeginOutputReadLine();
-            sample._process.BeginErrorReadLine();
+            var sample = new SampleProcess(start);
+            sample.Launch();
             return sample;
         }
 
         public async Task WaitForAsync(string text, TimeSpan timeout)
         {
-            var clock = Stopwatch.StartNew();
-            while (!Output.Contains(text, StringComparison.Ordinal))
+            if (!await WaitForOutputAsync(text, timeout))
             {
-                if (_process.HasExited || clock.Elapsed > timeout)
-                {
-                    throw new Xunit.Sdk.XunitException($"The sample did not log '{text}' within {timeout.TotalSeconds} s. It logged:\n{Output}");
-                }
-
-                await Task.Delay(50);
-            }
-        }
-
-        public async Task<int?> WaitForExitAsync(TimeSpan timeout)
-        {
-            using var cts = new CancellationTokenSource(timeout);
-            try
-            {
-                await _process.WaitForExitAsync(cts.Token);
-                return _process.ExitCode;
-            }
-            catch (OperationCanceledException)
-            {
-                return null;
-            }
-        }
-
-        public async ValueTask DisposeAsync()
-        {
-            if (!_process.HasExited)
-            {
-                _process.Kill(entireProcessTree: true);
-                await _process.WaitForExitAsync();
-            }
-
-            _process.Dispose();
-        }
-
-        private void Append(string? line)
-        {
-            if (line is not null)
-            {
-                lock (_output)
-                {
-                    _output.AppendLine(line);
-                }
+                throw new Xunit.Sdk.XunitException($"The sample did not log '{text}' within {timeout.TotalSeconds} s. It logged:\n{Output}");
             }
         }
     }

@@ -1,5 +1,4 @@
 using System.Diagnostics;
-using System.Runtime.InteropServices;
 
 namespace OmronHostLink.Benchmarks.Scale;
 
@@ -32,38 +31,6 @@ internal static class ChildProcesses
         }
     }
 
-    /// <summary>Asks <paramref name="process"/> to stop (SIGTERM), waits up to <paramref name="patience"/>, then kills it.</summary>
-    /// <returns>Whether it stopped by itself.</returns>
-    public static async Task<bool> StopAsync(Process process, TimeSpan patience)
-    {
-        bool graceful = true;
-        try
-        {
-            if (!process.HasExited)
-            {
-                _ = Kill(process.Id, 15);
-                using var timeout = new CancellationTokenSource(patience);
-                try
-                {
-                    await process.WaitForExitAsync(timeout.Token).ConfigureAwait(false);
-                }
-                catch (OperationCanceledException)
-                {
-                    graceful = false;
-                    process.Kill(entireProcessTree: true);
-                    await process.WaitForExitAsync().WaitAsync(TimeSpan.FromSeconds(5)).ConfigureAwait(ConfigureAwaitOptions.SuppressThrowing);
-                }
-            }
-        }
-        catch (InvalidOperationException)
-        {
-            // Never started or already gone.
-        }
-
-        Remove(process);
-        return graceful;
-    }
-
     private static void KillAll()
     {
         Process[] left;
@@ -87,7 +54,4 @@ internal static class ChildProcesses
             }
         }
     }
-
-    [DllImport("libc", EntryPoint = "kill", SetLastError = true)]
-    private static extern int Kill(int pid, int signal);
 }

@@ -149,12 +149,12 @@ internal static class ScaleBenchmark
             {
                 if (worker.HasExited)
                 {
-                    throw new InvalidOperationException($"The worker exited while starting:\n{worker.Log}");
+                    throw new InvalidOperationException($"The worker exited while starting:\n{worker.Output}");
                 }
 
                 if (clock.Elapsed > patience)
                 {
-                    throw new InvalidOperationException($"Only {ledger.SeenTags} of {tagsTotal} tags arrived within {patience.TotalSeconds} s. Worker:\n{worker.Log}\nBroker:\n{broker.Log}");
+                    throw new InvalidOperationException($"Only {ledger.SeenTags} of {tagsTotal} tags arrived within {patience.TotalSeconds} s. Worker:\n{worker.Output}\nBroker:\n{broker.Log}");
                 }
 
                 await Task.Delay(100, cancellationToken);
@@ -165,7 +165,7 @@ internal static class ScaleBenchmark
 
             // The measured window: the writer's run.
             var plcs = servers.Select(x => x.Plc).ToArray();
-            ProcessSample w0 = ProcessSample.Read(worker.ProcessId) ?? throw new InvalidOperationException($"The worker has exited:\n{worker.Log}");
+            ProcessSample w0 = ProcessSample.Read(worker.Id) ?? throw new InvalidOperationException($"The worker has exited:\n{worker.Output}");
             ProcessSample b0 = ProcessSample.Read(broker.Process!.Id) ?? default;
             ProcessSample self0 = ProcessSample.Read(Environment.ProcessId) ?? default;
             long frames0 = servers.Sum(x => x.AnswerFrames);
@@ -178,12 +178,12 @@ internal static class ScaleBenchmark
             long t0 = Stopwatch.GetTimestamp();
 
             using var sampling = CancellationTokenSource.CreateLinkedTokenSource(cancellationToken);
-            Task<long> rssMax = SampleRssAsync(worker.ProcessId, sampling.Token);
+            Task<long> rssMax = SampleRssAsync(worker.Id, sampling.Token);
             long written = await ChangeWriter.RunAsync(plcs, words, ledger, s.ChangeEvery, TimeSpan.FromSeconds(s.Seconds), cancellationToken);
 
             long t1 = Stopwatch.GetTimestamp();
             double elapsed = (t1 - t0) / (double)Stopwatch.Frequency;
-            ProcessSample w1 = ProcessSample.Read(worker.ProcessId) ?? throw new InvalidOperationException($"The worker has exited:\n{worker.Log}");
+            ProcessSample w1 = ProcessSample.Read(worker.Id) ?? throw new InvalidOperationException($"The worker has exited:\n{worker.Output}");
             ProcessSample b1 = ProcessSample.Read(broker.Process!.Id) ?? default;
             ProcessSample self1 = ProcessSample.Read(Environment.ProcessId) ?? default;
             long frames = servers.Sum(x => x.AnswerFrames) - frames0;

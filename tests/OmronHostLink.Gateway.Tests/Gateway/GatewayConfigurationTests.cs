@@ -1,9 +1,8 @@
-using System.Diagnostics;
-using Microsoft.Extensions.Configuration;
 using Microsoft.Extensions.Hosting;
 using Microsoft.Extensions.Logging;
 using Microsoft.Extensions.Options;
 using OmronHostLink.Gateway;
+using OmronHostLink.Gateway.Tests.Telemetry;
 
 namespace OmronHostLink.Gateway.Tests.Gateway;
 
@@ -70,64 +69,26 @@ public sealed class GatewayConfigurationTests
     [Fact]
     public async Task The_worker_process_prints_one_clear_message_and_exits_2()
     {
-        string dir = Directory.CreateTempSubdirectory("hostlink-worker-").FullName;
-        try
+        await using GatewayProcess process = GatewayProcess.Start(
+        [
+            "--HostLink:Links:plc:Tcp=127.0.0.1:9",
+            "--HostLink:Links:plc:Groups:g:Address=D0",
+            "--HostLink:Links:plc:Groups:g:Interval=abc",
+        ]);
+        if (await process.WaitForExitAsync(TimeSpan.FromSeconds(20)) is null)
         {
-            var start = new ProcessStartInfo("dotnet")
-            {
-                WorkingDirectory = dir,
-                RedirectStandardOutput = true,
-                RedirectStandardError = true,
-                UseShellExecute = false,
-            };
-            start.Environment["DOTNET_ENVIRONMENT"] = "Production";
-            foreach (string arg in new[]
-            {
-                Path.Combine(AppContext.BaseDirectory, "OmronHostLink.Gateway.dll"),
-                "--HostLink:Links:plc:Tcp=127.0.0.1:9",
-                "--HostLink:Links:plc:Groups:g:Address=D0",
-                "--HostLink:Links:plc:Groups:g:Interval=abc",
-            })
-            {
-                start.ArgumentList.Add(arg);
-            }
-
-            using Process process = Process.Start(start)!;
-            Task<string> stdout = process.StandardOutput.ReadToEndAsync();
-            Task<string> stderr = process.StandardError.ReadToEndAsync();
-            using var patience = new CancellationTokenSource(TimeSpan.FromSeconds(20));
-            try
-            {
-                await process.WaitForExitAsync(patience.Token);
-            }
-            catch (OperationCanceledException)
-            {
-                process.Kill(entireProcessTree: true);
-                await process.WaitForExitAsync();
-            }
-
-            string output = await stdout + await stderr;
-            process.ExitCode.Should().Be(2, output);
-            output.Should().Contain("HostLink:Links:plc:Groups:g:Interval 'abc'");
-            output.Should().NotContain("Hosting failed to start").And.NotMatchRegex(@"(?m)^\s+at ", "no framework stack trace: {0}", output);
+            await process.KillAsync();
         }
-        finally
-        {
-            Directory.Delete(dir, recursive: true);
-        }
+
+        string output = process.Output;
+        process.ExitCode.Should().Be(2, output);
+        output.Should().Contain("HostLink:Links:plc:Groups:g:Interval 'abc'");
+        output.Should().NotContain("Hosting failed to start").And.NotMatchRegex(@"(?m)^\s+at ", "no framework stack trace: {0}", output);
     }
 
     private static IHost Build(Dictionary<string, string?> config, CapturingLoggerProvider logs)
     {
-        var configuration = new ConfigurationManager();
-        configuration.AddInMemoryCollection(config);
-        HostApplicationBuilder builder = GatewayHost.CreateBuilder(new HostApplicationBuilderSettings
-        {
-            DisableDefaults = true,
-            EnvironmentName = "Test",
-            ContentRootPath = AppContext.BaseDirectory,
-            Configuration = configuration,
-        });
+        HostApplicationBuilder builder = TestGatewayHost.CreateBuilder(config);
         builder.Logging.AddProvider(logs);
         return builder.Build();
     }

@@ -1,4 +1,3 @@
-using Microsoft.Extensions.Configuration;
 using Microsoft.Extensions.DependencyInjection;
 using Microsoft.Extensions.Hosting;
 using Microsoft.Extensions.Options;
@@ -13,19 +12,11 @@ public sealed class GatewayDurationTests
     [MemberData(nameof(DurationTexts.All), MemberType = typeof(DurationTexts))]
     public async Task The_gateway_configuration_reads_durations_as_the_core_grammar_does(string text, long? ticks)
     {
-        var configuration = new ConfigurationManager();
-        configuration.AddInMemoryCollection(new Dictionary<string, string?>
+        using IHost host = TestGatewayHost.CreateBuilder(new Dictionary<string, string?>
         {
             ["HostLink:Links:plc:Tcp"] = "127.0.0.1:9",
             ["HostLink:Links:plc:Groups:g:Address"] = "D0",
             ["HostLink:Links:plc:Groups:g:Interval"] = text,
-        });
-        using IHost host = GatewayHost.CreateBuilder(new HostApplicationBuilderSettings
-        {
-            DisableDefaults = true,
-            EnvironmentName = "Test",
-            ContentRootPath = AppContext.BaseDirectory,
-            Configuration = configuration,
         }).Build();
 
         if (ticks is { } t)

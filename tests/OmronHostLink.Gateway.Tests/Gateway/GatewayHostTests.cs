@@ -1,7 +1,6 @@
 using System.Diagnostics;
 using System.Net;
 using System.Net.Sockets;
-using Microsoft.Extensions.Configuration;
 using Microsoft.Extensions.DependencyInjection;
 using Microsoft.Extensions.Hosting;
 using Microsoft.Extensions.Logging;
@@ -58,19 +57,7 @@ public sealed class GatewayHostTests(ITestOutputHelper output) : IDisposable
     private IHost BuildHost(Dictionary<string, string?> config, CapturingLoggerProvider logs)
     {
         _logs.Add(logs);
-        var configuration = new ConfigurationManager();
-        configuration.AddInMemoryCollection(config);
-        HostApplicationBuilder builder = GatewayHost.CreateBuilder(new HostApplicationBuilderSettings
-        {
-            DisableDefaults = true,
-            EnvironmentName = "Test",
-            ContentRootPath = AppContext.BaseDirectory,
-            Configuration = configuration,
-        });
-        builder.Logging.SetMinimumLevel(LogLevel.Debug);
-        builder.Logging.AddProvider(logs);
-        builder.Services.Configure<HostOptions>(o => o.ShutdownTimeout = TimeSpan.FromSeconds(5));
-        return builder.Build();
+        return TestGatewayHost.Build(config, logs, TimeSpan.FromSeconds(5));
     }
 
     /// <summary>Waits until <paramref name="condition"/> (about the log) holds, looking again at each new log entry.</summary>

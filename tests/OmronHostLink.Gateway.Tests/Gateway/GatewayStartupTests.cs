@@ -1,8 +1,8 @@
-using System.Diagnostics;
 using System.Net;
 using System.Net.Sockets;
 using System.Reflection;
 using OmronHostLink.Gateway.Mqtt;
+using OmronHostLink.Gateway.Tests.Telemetry;
 
 namespace OmronHostLink.Gateway.Tests.Gateway;
 
@@ -129,48 +129,24 @@ public sealed class GatewayStartupTests
         using var taken = new TcpListener(IPAddress.Loopback, 0);
         taken.Start();
         int port = ((IPEndPoint)taken.LocalEndpoint).Port;
-        string dir = Directory.CreateTempSubdirectory("hostlink-gateway-").FullName;
-        try
+        await using GatewayProcess process = GatewayProcess.Start(
+        [
+            "--Simulator:Enabled=true",
+            $"--Simulator:Port={port}",
+            $"--HostLink:Links:plc:Tcp=127.0.0.1:{port}",
+            "--HostLink:Links:plc:Groups:g:Address=D0",
+            "--Logging:LogLevel:Default=Warning",
+        ]);
+        if (await process.WaitForExitAsync(TimeSpan.FromSeconds(30)) is null)
         {
-            var start = new ProcessStartInfo("dotnet") { WorkingDirectory = dir, RedirectStandardOutput = true, RedirectStandardError = true };
-            start.Environment["DOTNET_ENVIRONMENT"] = "Production";
-            foreach (string arg in new[]
-            {
-                Path.Combine(AppContext.BaseDirectory, "OmronHostLink.Gateway.dll"),
-                "--Simulator:Enabled=true",
-                $"--Simulator:Port={port}",
-                $"--HostLink:Links:plc:Tcp=127.0.0.1:{port}",
-                "--HostLink:Links:plc:Groups:g:Address=D0",
-                "--Logging:LogLevel:Default=Warning",
-            })
-            {
-                start.ArgumentList.Add(arg);
-            }
-
-            using Process process = Process.Start(start)!;
-            Task<string> stdout = process.StandardOutput.ReadToEndAsync();
-            Task<string> stderr = process.StandardError.ReadToEndAsync();
-            using var patience = new CancellationTokenSource(TimeSpan.FromSeconds(30));
-            try
-            {
-                await process.WaitForExitAsync(patience.Token);
-            }
-            catch (OperationCanceledException)
-            {
-                process.Kill(entireProcessTree: true);
-                await process.WaitForExitAsync();
-            }
-
-            string output = await stdout + await stderr;
-            process.ExitCode.Should().Be(2, output);
-            output.Should().Contain($"Simulator:Port {port} on 127.0.0.1 is in use by another program");
-            output.Split('\n').Where(l => l.Contains("in use", StringComparison.Ordinal)).Should().ContainSingle("one line says it: {0}", output);
-            output.Should().NotMatchRegex(@"(?m)^\s+at ", "no stack trace: {0}", output).And.NotContain("Exception");
+            await process.KillAsync();
         }
-        finally
-        {
-            Directory.Delete(dir, recursive: true);
-        }
+
+        string output = process.Output;
+        process.ExitCode.Should().Be(2, output);
+        output.Should().Contain($"Simulator:Port {port} on 127.0.0.1 is in use by another program");
+        output.Split('\n').Where(l => l.Contains("in use", StringComparison.Ordinal)).Should().ContainSingle("one line says it: {0}", output);
+        output.Should().NotMatchRegex(@"(?m)^\s+at ", "no stack trace: {0}", output).And.NotContain("Exception");
     }
 
     /// <summary>The configuration keys of an options class, nested sections included.</summary>

@@ -134,14 +134,6 @@ public sealed class LinkClientsTests
 
     private static IHost Build(Dictionary<string, string?> config)
     {
-        var configuration = new ConfigurationManager();
-        configuration.AddInMemoryCollection(config);
-        return GatewayHost.CreateBuilder(new HostApplicationBuilderSettings
-        {
-            DisableDefaults = true,
-            EnvironmentName = "Test",
-            ContentRootPath = AppContext.BaseDirectory,
-            Configuration = configuration,
-        }).Build();
+        return TestGatewayHost.CreateBuilder(config).Build();
     }
 }

@@ -1,9 +1,6 @@
 using System.Diagnostics;
 using System.Globalization;
-using Microsoft.Extensions.Configuration;
-using Microsoft.Extensions.DependencyInjection;
 using Microsoft.Extensions.Hosting;
-using Microsoft.Extensions.Logging;
 using OmronHostLink.Simulator;
 using OmronHostLink.Gateway.Tests.Mqtt;
 using OmronHostLink.Gateway;
@@ -140,19 +137,7 @@ public sealed class LinkSchedulingTests(ITestOutputHelper output) : IAsyncLifeti
     {
         var logs = new CapturingLoggerProvider();
         _logs.Add(logs);
-        var configuration = new ConfigurationManager();
-        configuration.AddInMemoryCollection(config);
-        HostApplicationBuilder builder = GatewayHost.CreateBuilder(new HostApplicationBuilderSettings
-        {
-            DisableDefaults = true,
-            EnvironmentName = "Test",
-            ContentRootPath = AppContext.BaseDirectory,
-            Configuration = configuration,
-        });
-        builder.Logging.SetMinimumLevel(LogLevel.Debug);
-        builder.Logging.AddProvider(logs);
-        builder.Services.Configure<HostOptions>(o => o.ShutdownTimeout = TimeSpan.FromSeconds(5));
-        using IHost host = builder.Build();
+        using IHost host = TestGatewayHost.Build(config, logs, TimeSpan.FromSeconds(5));
         var clock = Stopwatch.StartNew();
         await host.StartAsync();
         try

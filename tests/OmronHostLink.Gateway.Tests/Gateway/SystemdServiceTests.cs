@@ -52,13 +52,13 @@ public sealed class SystemdServiceTests(ITestOutputHelper output)
             value.Should().StartWith("<6>", "under systemd the console log uses the journal's format (syslog priority prefix)");
             notify.Available.Should().Be(0, "nothing but READY=1 is sent while the worker runs");
 
-            worker.Signal("TERM");
+            worker.Signal(ProgramProcess.SigTerm);
 
             string? stopping = await notify.ReceiveAsync(StopPatience);
             stopping.Should().Be("STOPPING=1", "SIGTERM starts a graceful stop that is reported to systemd; {0}", worker);
             int? exitCode = await worker.WaitForExitAsync(StopPatience);
             exitCode.Should().Be(0, "a graceful stop exits 0 (systemd would count anything else as a failure); {0}", worker);
-            worker.Output.Should().Contain(l => l.Contains("link sim: stopped after", StringComparison.Ordinal), "the link closes cleanly");
+            worker.Lines.Should().Contain(l => l.Contains("link sim: stopped after", StringComparison.Ordinal), "the link closes cleanly");
         }
         finally
         {

@@ -1,4 +1,3 @@
-using Microsoft.Extensions.Configuration;
 using Microsoft.Extensions.DependencyInjection;
 using Microsoft.Extensions.Hosting;
 using Microsoft.Extensions.Options;
@@ -33,19 +32,11 @@ public sealed class TelemetryExportTests
 
     private static IHost Build(string? exporter)
     {
-        var configuration = new ConfigurationManager();
-        configuration.AddInMemoryCollection(new Dictionary<string, string?>
+        return TestGatewayHost.CreateBuilder(new Dictionary<string, string?>
         {
             ["HostLink:Links:plc:Tcp"] = "127.0.0.1:1",
             ["HostLink:Links:plc:Groups:g:Address"] = "D0",
             ["OpenTelemetry:Exporter"] = exporter,
-        });
-        return GatewayHost.CreateBuilder(new HostApplicationBuilderSettings
-        {
-            DisableDefaults = true,
-            EnvironmentName = "Test",
-            ContentRootPath = AppContext.BaseDirectory,
-            Configuration = configuration,
         }).Build();
     }
 }

@@ -1,9 +1,7 @@
 using System.Diagnostics;
 using System.Globalization;
-using Microsoft.Extensions.Configuration;
 using Microsoft.Extensions.DependencyInjection;
 using Microsoft.Extensions.Hosting;
-using Microsoft.Extensions.Logging;
 using OmronHostLink.Gateway;
 
 namespace OmronHostLink.Gateway.Tests.Mqtt;
@@ -61,22 +59,7 @@ public static class MqttGatewayConfig
 
     /// <summary>Builds the worker's host as Program.cs does, from in-memory configuration, logging to <paramref name="logs"/>; <paramref name="services"/> may add to it.</summary>
     public static IHost Build(Dictionary<string, string?> config, CapturingLoggerProvider logs, Action<IServiceCollection>? services = null)
-    {
-        var configuration = new ConfigurationManager();
-        configuration.AddInMemoryCollection(config);
-        HostApplicationBuilder builder = GatewayHost.CreateBuilder(new HostApplicationBuilderSettings
-        {
-            DisableDefaults = true,
-            EnvironmentName = "Test",
-            ContentRootPath = AppContext.BaseDirectory,
-            Configuration = configuration,
-        });
-        builder.Logging.SetMinimumLevel(LogLevel.Debug);
-        builder.Logging.AddProvider(logs);
-        builder.Services.Configure<HostOptions>(o => o.ShutdownTimeout = TimeSpan.FromSeconds(10));
-        services?.Invoke(builder.Services);
-        return builder.Build();
-    }
+        => TestGatewayHost.Build(config, logs, TimeSpan.FromSeconds(10), services);
 
     /// <summary>Waits until <paramref name="condition"/> holds, checking every 20 ms, at most <paramref name="patience"/> (default 20 s).</summary>
     public static async Task Eventually(Func<bool> condition, string what, CapturingLoggerProvider logs, TimeSpan? patience = null)

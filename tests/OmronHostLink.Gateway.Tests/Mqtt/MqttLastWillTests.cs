@@ -1,6 +1,4 @@
-using System.Diagnostics;
-using System.Globalization;
-using System.Text;
+using OmronHostLink.Gateway.Tests.Telemetry;
 using OmronHostLink.Simulator;
 using Xunit.Abstractions;
 
@@ -22,15 +20,12 @@ public sealed class MqttLastWillTests(ITestOutputHelper output)
 
         Dictionary<string, string?> config = MqttGatewayConfig.Create(simulator.Port, broker, clientId: "worker-kill");
         MqttGatewayConfig.Group(config, "level", "D100", intervalMs: 50);
-        var log = new StringBuilder();
-        DirectoryInfo empty = Directory.CreateTempSubdirectory("ohl-worker-");
-        using Process worker = StartWorkerProcess(config, empty.FullName, log);
+        await using GatewayProcess worker = GatewayProcess.Start(config.Select(c => $"--{c.Key}={c.Value}"));
         try
         {
             await subscriber.WaitUntilAsync(ms => ms.Any(m => m.Topic == status && m.Payload == "online") && ms.Any(m => m.Topic == MqttGatewayConfig.Topic("level")), "the worker process is online and publishing");
 
-            worker.Kill(); // SIGKILL: no clean disconnect, no "offline" of its own
-            await worker.WaitForExitAsync();
+            await worker.KillAsync(); // SIGKILL: no clean disconnect, no "offline" of its own
 
             await subscriber.WaitUntilAsync(ms => ms.Any(m => m.Topic == status && m.Payload == "offline"), "the broker publishes the last will");
             subscriber.PayloadsOn(status).Should().Equal("online", "offline");
@@ -41,59 +36,8 @@ public sealed class MqttLastWillTests(ITestOutputHelper output)
         }
         finally
         {
-            if (!worker.HasExited)
-            {
-                worker.Kill();
-            }
-
-            lock (log)
-            {
-                output.WriteLine("worker process:" + Environment.NewLine + log);
-            }
-
+            output.WriteLine("worker process:" + Environment.NewLine + worker.Output);
             output.WriteLine("mosquitto:" + Environment.NewLine + broker.Log);
-            empty.Delete(recursive: true);
         }
-    }
-
-    /// <summary>Runs the worker's own executable with the configuration on its command line, in an empty directory.</summary>
-    private static Process StartWorkerProcess(Dictionary<string, string?> config, string directory, StringBuilder log)
-    {
-        string dll = Path.Combine(AppContext.BaseDirectory, "OmronHostLink.Gateway.dll");
-        string dotnet = Environment.GetEnvironmentVariable("DOTNET_HOST_PATH") is { Length: > 0 } host && File.Exists(host)
-            ? host
-            : MosquittoBroker.Find("dotnet", "/usr/bin/dotnet", "/usr/share/dotnet/dotnet", "/usr/lib/dotnet/dotnet") ?? "dotnet";
-        var startInfo = new ProcessStartInfo(dotnet)
-        {
-            RedirectStandardError = true,
-            RedirectStandardOutput = true,
-            UseShellExecute = false,
-            // No appsettings.json there: the command line is the whole configuration.
-            WorkingDirectory = directory,
-        };
-        startInfo.Environment["DOTNET_ENVIRONMENT"] = "Production";
-        startInfo.ArgumentList.Add(dll);
-        foreach ((string key, string? value) in config)
-        {
-            startInfo.ArgumentList.Add(string.Create(CultureInfo.InvariantCulture, $"--{key}={value}"));
-        }
-
-        var process = new Process { StartInfo = startInfo };
-        DataReceivedEventHandler append = (_, e) =>
-        {
-            if (e.Data is not null)
-            {
-                lock (log)
-                {
-                    log.AppendLine(e.Data);
-                }
-            }
-        };
-        process.OutputDataReceived += append;
-        process.ErrorDataReceived += append;
-        process.Start();
-        process.BeginOutputReadLine();
-        process.BeginErrorReadLine();
-        return process;
     }
 }

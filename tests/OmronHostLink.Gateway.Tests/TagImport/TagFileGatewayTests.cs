@@ -1,9 +1,6 @@
 using System.Diagnostics;
 using System.Net;
-using Microsoft.Extensions.Configuration;
-using Microsoft.Extensions.DependencyInjection;
 using Microsoft.Extensions.Hosting;
-using Microsoft.Extensions.Logging;
 using OmronHostLink.Simulator;
 using OmronHostLink.Simulator.Hosting;
 
@@ -38,19 +35,7 @@ public sealed class TagFileGatewayTests : IDisposable
     private IHost BuildHost(Dictionary<string, string?> config, CapturingLoggerProvider logs)
     {
         _logs.Add(logs);
-        var configuration = new ConfigurationManager();
-        configuration.AddInMemoryCollection(config);
-        HostApplicationBuilder builder = GatewayHost.CreateBuilder(new HostApplicationBuilderSettings
-        {
-            DisableDefaults = true,
-            EnvironmentName = "Test",
-            ContentRootPath = AppContext.BaseDirectory,
-            Configuration = configuration,
-        });
-        builder.Logging.SetMinimumLevel(LogLevel.Debug);
-        builder.Logging.AddProvider(logs);
-        builder.Services.Configure<HostOptions>(o => o.ShutdownTimeout = TimeSpan.FromSeconds(5));
-        return builder.Build();
+        return TestGatewayHost.Build(config, logs, TimeSpan.FromSeconds(5));
     }
 
     private static string? LastValue(CapturingLoggerProvider logs, string group)

@@ -146,9 +146,9 @@ public sealed class BlockingCallTests
         await ui.Run(
             () =>
             {
-                direct = Catch(() => line.Client.WriteWordAsync("D0", 1).GetAwaiter().GetResult());
-                wrapped = Catch(() => line.Client.WriteWordAsync("D0", 1).Wait());
-                fromResult = Catch(() => _ = line.Client.Unit(9).ReadWordsAsync("D0", 1).Result);
+                direct = Record.Exception(() => line.Client.WriteWordAsync("D0", 1).GetAwaiter().GetResult());
+                wrapped = Record.Exception(() => line.Client.WriteWordAsync("D0", 1).Wait());
+                fromResult = Record.Exception(() => _ = line.Client.Unit(9).ReadWordsAsync("D0", 1).Result);
             },
             Limit);
 
@@ -214,19 +214,6 @@ public sealed class BlockingCallTests
                 }
 
                 break;
-        }
-    }
-
-    private static Exception? Catch(Action action)
-    {
-        try
-        {
-            action();
-            return null;
-        }
-        catch (Exception e)
-        {
-            return e;
         }
     }
 }

@@ -87,10 +87,10 @@ public sealed class SynchronousCallTests
         await ui.Run(
             () =>
             {
-                refused = Catch(() => line.Client.WriteWord("D0", 1));
-                silent = Catch(() => line.Client.Unit(9).ReadWords("D0", 1));
-                badAddress = Catch(() => line.Client.ReadWords("Q12", 1));
-                cModeBit = Catch(() => line.Client.WriteBit("W400.07", true));
+                refused = Record.Exception(() => line.Client.WriteWord("D0", 1));
+                silent = Record.Exception(() => line.Client.Unit(9).ReadWords("D0", 1));
+                badAddress = Record.Exception(() => line.Client.ReadWords("Q12", 1));
+                cModeBit = Record.Exception(() => line.Client.WriteBit("W400.07", true));
             },
             Limit);
 
@@ -135,18 +135,5 @@ public sealed class SynchronousCallTests
 
         plc.Received(1).ReadWordsAsync("D100", 2, Arg.Any<CancellationToken>());
         plc.Received(1).WriteBitAsync("CIO 1.02", true, Arg.Any<CancellationToken>());
-    }
-
-    private static Exception? Catch(Action action)
-    {
-        try
-        {
-            action();
-            return null;
-        }
-        catch (Exception e)
-        {
-            return e;
-        }
     }
 }

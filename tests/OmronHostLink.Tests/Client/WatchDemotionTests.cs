@@ -2,6 +2,7 @@ using OmronHostLink.Planning;
 using OmronHostLink.Simulator;
 using OmronHostLink.Simulator.Faults;
 using OmronHostLink.Tests.Infrastructure;
+using static OmronHostLink.Tests.Infrastructure.WatchSteps;
 
 namespace OmronHostLink.Tests.Client;
 
@@ -15,7 +16,6 @@ public sealed class WatchDemotionTests
 {
     private static readonly TimeSpan Second = TimeSpan.FromSeconds(1);
     private static readonly TimeSpan Period = TimeSpan.FromSeconds(10);
-    private static readonly TimeSpan Patience = TimeSpan.FromSeconds(30);
 
     [Fact]
     public async Task A_unit_silent_for_DemoteAfter_cycles_is_demoted_left_alone_for_the_period_then_probed_once_and_read_when_it_answers()
@@ -126,15 +126,5 @@ public sealed class WatchDemotionTests
         FluentActions.Invoking(() => line.Client.WatchAsync(tags, new WatchOptions { DemoteAfter = 3, DemotionPeriod = TimeSpan.Zero }))
             .Should().Throw<ArgumentOutOfRangeException>().WithParameterName("DemotionPeriod");
         line.FramesSent.Should().Be(0);
-    }
-
-    private static async Task<WatchEvent> Next(IAsyncEnumerator<WatchEvent> watch)
-        => await Completed(watch.MoveNextAsync(), watch);
-
-    private static async Task<WatchEvent> Completed(ValueTask<bool> pending, IAsyncEnumerator<WatchEvent> watch)
-    {
-        bool more = await pending.AsTask().WaitAsync(Patience);
-        more.Should().BeTrue("a watch never ends by itself");
-        return watch.Current;
     }
 }

@@ -5,6 +5,7 @@ using OmronHostLink.Simulator.Hosting;
 using OmronHostLink.Simulator;
 using OmronHostLink.Tests.Infrastructure;
 using OmronHostLink.Transports;
+using static OmronHostLink.Tests.Infrastructure.WatchSteps;
 
 namespace OmronHostLink.Tests.Client;
 
@@ -410,15 +411,5 @@ public sealed class WatchTests
         FluentActions.Invoking(() => plc.WatchAsync(new[] { PlcTag.Parse("W0") }, Second)).Should().Throw<ArgumentException>("C-mode cannot read the work area");
 
         line.FramesSent.Should().Be(0);
-    }
-
-    private static async Task<WatchEvent> Next(IAsyncEnumerator<WatchEvent> watch)
-        => await Completed(watch.MoveNextAsync(), watch);
-
-    private static async Task<WatchEvent> Completed(ValueTask<bool> pending, IAsyncEnumerator<WatchEvent> watch)
-    {
-        bool more = await pending.AsTask().WaitAsync(Patience);
-        more.Should().BeTrue("a watch never ends by itself");
-        return watch.Current;
     }
 }

@@ -507,37 +507,12 @@ public sealed class FuzzTests(ITestOutputHelper output)
         }
     }
 
-    /// <summary>A stream that never ends: every read returns a full buffer of one byte value; writes are swallowed.</summary>
-    private sealed class FloodStream(byte value) : Stream
+    /// <summary>A stream that never ends: every read returns a full buffer of one byte value; writes go to <see cref="Stream.Null"/>.</summary>
+    private sealed class FloodStream(byte value) : PassThroughStream(Null)
     {
         private long _served;
 
         public long Served => Interlocked.Read(ref _served);
-
-        public override bool CanRead => true;
-
-        public override bool CanSeek => false;
-
-        public override bool CanWrite => true;
-
-        public override long Length => throw new NotSupportedException();
-
-        public override long Position
-        {
-            get => throw new NotSupportedException();
-            set => throw new NotSupportedException();
-        }
-
-        public override void Flush()
-        {
-        }
-
-        public override int Read(byte[] buffer, int offset, int count)
-        {
-            buffer.AsSpan(offset, count).Fill(value);
-            Interlocked.Add(ref _served, count);
-            return count;
-        }
 
         public override async ValueTask<int> ReadAsync(Memory<byte> buffer, CancellationToken cancellationToken = default)
         {
@@ -545,14 +520,6 @@ public sealed class FuzzTests(ITestOutputHelper output)
             buffer.Span.Fill(value);
             Interlocked.Add(ref _served, buffer.Length);
             return buffer.Length;
-        }
-
-        public override long Seek(long offset, SeekOrigin origin) => throw new NotSupportedException();
-
-        public override void SetLength(long value) => throw new NotSupportedException();
-
-        public override void Write(byte[] buffer, int offset, int count)
-        {
         }
     }
 

@@ -71,27 +71,13 @@ public sealed class SerialDeadlineTests
     }
 
     /// <summary>A stream whose reads, like Windows serial reads, go on whatever their token says.</summary>
-    private sealed class CancellationIgnoringStream(Stream inner) : Stream
+    private sealed class CancellationIgnoringStream(Stream inner) : PassThroughStream(inner)
     {
         private int _ignored;
 
         public int IgnoredTokens => Volatile.Read(ref _ignored);
 
         public Task<int>? LastRead { get; private set; }
-
-        public override bool CanRead => inner.CanRead;
-
-        public override bool CanSeek => false;
-
-        public override bool CanWrite => inner.CanWrite;
-
-        public override long Length => throw new NotSupportedException();
-
-        public override long Position
-        {
-            get => throw new NotSupportedException();
-            set => throw new NotSupportedException();
-        }
 
         public override ValueTask<int> ReadAsync(Memory<byte> buffer, CancellationToken cancellationToken = default)
         {
@@ -100,40 +86,9 @@ public sealed class SerialDeadlineTests
                 Interlocked.Increment(ref _ignored);
             }
 
-            Task<int> read = inner.ReadAsync(buffer, CancellationToken.None).AsTask();
+            Task<int> read = Inner.ReadAsync(buffer, CancellationToken.None).AsTask();
             LastRead = read;
             return new ValueTask<int>(read);
-        }
-
-        public override Task<int> ReadAsync(byte[] buffer, int offset, int count, CancellationToken cancellationToken)
-            => ReadAsync(buffer.AsMemory(offset, count), cancellationToken).AsTask();
-
-        public override ValueTask WriteAsync(ReadOnlyMemory<byte> buffer, CancellationToken cancellationToken = default)
-            => inner.WriteAsync(buffer, cancellationToken);
-
-        public override Task WriteAsync(byte[] buffer, int offset, int count, CancellationToken cancellationToken)
-            => inner.WriteAsync(buffer, offset, count, cancellationToken);
-
-        public override int Read(byte[] buffer, int offset, int count) => inner.Read(buffer, offset, count);
-
-        public override void Write(byte[] buffer, int offset, int count) => inner.Write(buffer, offset, count);
-
-        public override void Flush() => inner.Flush();
-
-        public override Task FlushAsync(CancellationToken cancellationToken) => inner.FlushAsync(cancellationToken);
-
-        public override long Seek(long offset, SeekOrigin origin) => throw new NotSupportedException();
-
-        public override void SetLength(long value) => throw new NotSupportedException();
-
-        protected override void Dispose(bool disposing)
-        {
-            if (disposing)
-            {
-                inner.Dispose();
-            }
-
-            base.Dispose(disposing);
         }
     }
 }
