@@ -12,7 +12,7 @@ namespace OmronHostLink.Gateway.Configuration;
 /// <summary>
 /// The checks that no options validator can make, run before the host is built: a configuration file that cannot be
 /// read (a JSON syntax error, a key given twice, also in another case), a misspelt or unknown section, a log level
-/// that does not exist. Each problem names its file and line, or its key.
+/// that does not exist, a misspelt key of a disabled output. Each problem names its file and line, or its key.
 /// </summary>
 public static class ConfigurationPreflight
 {
@@ -80,7 +80,22 @@ public static class ConfigurationPreflight
         CheckLogLevels(configuration, failures);
         failures.AddRange(ConfigurationSchema.Check(configuration.GetSection(TelemetryExport.SectionName), typeof(TelemetryExport.Settings)));
         failures.AddRange(TelemetryExport.EndpointProblems(configuration));
+        CheckDisabledOutput(configuration.GetSection(MqttOptions.SectionName), typeof(MqttOptions), failures);
+        CheckDisabledOutput(configuration.GetSection(SparkplugOptions.SectionName), typeof(SparkplugOptions), failures);
         return failures;
+    }
+
+    /// <summary>
+    /// An output section with <c>Enabled: false</c> is never bound or validated, yet a misspelt key or a wrong type in it
+    /// is still a mistake that would surface only when the output is switched on: its keys and types are checked here.
+    /// An enabled section is checked by its own validator.
+    /// </summary>
+    private static void CheckDisabledOutput(IConfigurationSection section, Type options, List<string> failures)
+    {
+        if (section.Exists() && bool.TryParse(section["Enabled"], out bool enabled) && !enabled)
+        {
+            failures.AddRange(ConfigurationSchema.Check(section, options));
+        }
     }
 
     private static void CheckSections(IConfiguration configuration, List<string> failures)

@@ -63,6 +63,9 @@ public sealed class GatewayStartupTests
             { "broker host as a URL", "--Mqtt:Host=mqtt://127.0.0.1", "Mqtt:Host 'mqtt://127.0.0.1' is not a host name or address" },
             { "misspelt log level", "--Logging:LogLevel:Default=Informaton", "Logging:LogLevel:Default 'Informaton' is not a log level" },
             { "misspelt log level of a provider", "--Logging:Console:LogLevel:OmronHostLink=Verbose", "Logging:Console:LogLevel:OmronHostLink 'Verbose' is not a log level" },
+            { "misspelt key of a disabled Mqtt section", "--Mqtt:Enabled=false --Mqtt:TopicPrefx=plant", "Mqtt:TopicPrefx is not a setting here" },
+            { "wrong type in a disabled Mqtt section", "--Mqtt:Enabled=false --Mqtt:Port=abc", "Mqtt:Port 'abc' is not a whole number" },
+            { "misspelt key of a disabled Sparkplug section", "--Sparkplug:Enabled=false --Sparkplug:EdgeNodId=line1", "Sparkplug:EdgeNodId is not a setting here" },
             { "misspelt telemetry key", "--OpenTelemetry:Exportr=Console", "OpenTelemetry:Exportr is not a setting here" },
             { "HostLink and Mqtt together", "--HostLink:Links:plc:Groups:levels:Intervall=1s --Mqtt:Port=abc", "HostLink:Links:plc:Groups:levels:Intervall is not a setting|Mqtt:Port 'abc' is not a whole number" },
         };
