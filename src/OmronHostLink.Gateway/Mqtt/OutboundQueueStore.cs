@@ -6,7 +6,8 @@ namespace OmronHostLink.Gateway.Mqtt;
 /// <summary>
 /// What the outbound queue keeps outside the process, in <see cref="MqttOptions.StateDirectory"/>: the count of unsent
 /// messages always (<c>{ClientId}.unsent</c>, <see cref="UnsentRecord"/>) and, with <c>Mqtt:DurableQueue:Enabled</c>, the
-/// messages themselves (<c>{ClientId}.queue.db</c>, <see cref="SqliteOutboundJournal"/>). It makes the queue: the
+/// messages themselves (<c>{ClientId}.queue.db</c>, <see cref="SqliteOutboundJournal"/>; then the count holds only the
+/// messages the database could not take). It makes the queue: the
 /// previous run's messages first, and an announcement of what the previous run may have lost.
 /// </summary>
 public sealed class OutboundQueueStore : IDisposable
@@ -36,7 +37,7 @@ public sealed class OutboundQueueStore : IDisposable
 
         if (options.DurableQueue.Enabled)
         {
-            _journal = SqliteOutboundJournal.Open(JournalPath(options, contentRoot), logger);
+            _journal = SqliteOutboundJournal.Open(JournalPath(options, contentRoot), logger, atRisk: _record);
         }
     }
 
@@ -110,7 +111,7 @@ public sealed class OutboundQueueStore : IDisposable
             QueueStoreLog.PreviousLoss(Logger, record.PreviousLoss, topics.WorkerLost);
             record.Announcing(report);
             queue.Enqueue(report);
-            if (_journal is not null)
+            if (_journal is not null && _journal.Holds(report))
             {
                 // Now in the durable queue: it is sent even if this run ends first.
                 record.Announced();

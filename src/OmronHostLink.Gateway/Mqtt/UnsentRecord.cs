@@ -7,7 +7,8 @@ namespace OmronHostLink.Gateway.Mqtt;
 /// store to memory the operating system owns, so the count outlives the process (SIGKILL, a crash) at no cost to the
 /// queue. The next run reads it and announces how many changes may have been lost (<see cref="PreviousLoss"/>); that
 /// count stays recorded until the announcement itself is acknowledged. A power cut may cost the last changes of the
-/// count. As the queue's journal it stands for a queue kept in memory only (no durable queue).
+/// count. As the queue's journal it stands for a queue kept in memory only (no durable queue); beside a durable queue it
+/// counts the messages the database could not take.
 /// </summary>
 public sealed class UnsentRecord : IOutboundJournal, IDisposable
 {

@@ -172,6 +172,50 @@ public sealed class DurableQueueTests : IDisposable
     }
 
     [Fact]
+    public void Messages_a_full_database_cannot_take_are_counted_as_at_risk_and_go_into_it_once_there_is_room()
+    {
+        string recordPath = Path.Combine(_directory, "gateway.unsent");
+        int atRiskAtEnd;
+        using (UnsentRecord record = UnsentRecord.Open(recordPath))
+        using (SqliteOutboundJournal journal = SqliteOutboundJournal.Open(DatabasePath, NullLogger.Instance, record, maxDatabaseBytes: 64 * 1024))
+        {
+            // 64 KB hold fewer than 60 messages of 2 KB: the database is full, as on a full disk.
+            OutboundQueue queue = Queue(journal);
+            for (int i = 0; i < 60; i++)
+            {
+                queue.Enqueue(new OutboundMessage("t", Encoding.ASCII.GetBytes(i.ToString(System.Globalization.CultureInfo.InvariantCulture).PadRight(2000)), Retain: true));
+            }
+
+            queue.Count.Should().Be(60, "the queue keeps every message in memory");
+            int atRisk = journal.MemoryOnly;
+            atRisk.Should().BeInRange(1, 59);
+            record.Pending.Should().Be(atRisk, "each message the database could not take is counted");
+
+            // The broker acknowledges ten: their rows make room, and the held messages go into the database.
+            for (int i = 0; i < 10; i++)
+            {
+                queue.TryPeek(out OutboundMessage? head).Should().BeTrue();
+                queue.Remove(head!);
+            }
+
+            journal.MemoryOnly.Should().BeLessThan(atRisk);
+            record.Pending.Should().Be(journal.MemoryOnly);
+            atRiskAtEnd = journal.MemoryOnly;
+            atRiskAtEnd.Should().BeGreaterThan(0, "ten rows do not make room for all");
+        }
+
+        // The run ends (as a crash would): the next one sends what the database holds and announces the rest as lost.
+        using (UnsentRecord record = UnsentRecord.Open(recordPath))
+        using (SqliteOutboundJournal journal = Open())
+        {
+            record.PreviousLoss.Should().Be(atRiskAtEnd);
+            List<int> sent = Drain(Queue(journal)).Select(m => int.Parse(Text(m.Payload).Trim(), System.Globalization.CultureInfo.InvariantCulture)).ToList();
+            sent.Should().HaveCount(50 - atRiskAtEnd).And.BeInAscendingOrder().And.OnlyHaveUniqueItems();
+            sent.Should().OnlyContain(n => n >= 10, "the acknowledged ones are gone");
+        }
+    }
+
+    [Fact]
     public void The_store_announces_the_previous_loss_first_and_a_durable_queue_sends_the_previous_messages_before_it()
     {
         var options = new MqttOptions { ClientId = "gw", TopicPrefix = "p", StateDirectory = _directory };
