@@ -83,16 +83,25 @@ internal sealed class MqttBrokerConnection : IAsyncDisposable
 
     /// <summary>
     /// After a failed attempt or a lost connection: closes what is left of the connection, counts the failure and says
-    /// why it failed (a refused certificate's reason, otherwise <paramref name="describe"/>'s) and how long to wait:
-    /// Reconnect:Initial after the first failure, doubling up to Reconnect:Max.
+    /// why it failed (a refused certificate's reason, otherwise <paramref name="describe"/>'s) and how long to wait
+    /// (<see cref="Backoff"/>).
     /// </summary>
     public async Task<(string Reason, TimeSpan Delay)> FailedAsync(Exception error, Func<Exception, string> describe)
     {
         await DropAsync().ConfigureAwait(false);
         string reason = _certificateProblem is { } why ? "TLS: " + why : describe(error);
         _certificateProblem = null;
+        return (reason, Backoff());
+    }
+
+    /// <summary>
+    /// Counts a connection that ended (failed, lost, or closed by the output) and says how long to wait before the next
+    /// attempt: Reconnect:Initial the first time since the last connection, doubling up to Reconnect:Max.
+    /// </summary>
+    public TimeSpan Backoff()
+    {
         _backoff = FailedAttempts++ == 0 ? _options.Reconnect.Initial : TimeSpan.FromTicks(Math.Min(_backoff.Ticks * 2, _options.Reconnect.Max.Ticks));
-        return (reason, _backoff);
+        return _backoff;
     }
 
     /// <summary>Waits <paramref name="delay"/>; false when the loops are told to stop meanwhile.</summary>

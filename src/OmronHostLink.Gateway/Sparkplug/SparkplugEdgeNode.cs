@@ -18,6 +18,10 @@ namespace OmronHostLink.Gateway.Sparkplug;
 /// When the broker goes away it reconnects with capped exponential backoff (a new <c>bdSeq</c>, new births; data meanwhile
 /// is not kept, a host application reads the state from the births). On a clean stop it publishes NDEATH itself.
 /// Births and data go out at QoS 0, not retained; NDEATH at QoS 1, as the specification asks.
+/// With <see cref="SparkplugOptions.PrimaryHostId"/> it also subscribes to the primary host application's STATE before
+/// anything else, and publishes the births only once a STATE on that connection says the host is online; a STATE saying
+/// it is offline ends the session (NDEATH, disconnect) and the node reconnects after the backoff and waits again.
+/// Meanwhile the node keeps the latest values, and the births that follow carry them.
 /// </summary>
 public sealed class SparkplugEdgeNode : IHostedService, IAsyncDisposable
 {
@@ -27,6 +31,7 @@ public sealed class SparkplugEdgeNode : IHostedService, IAsyncDisposable
     private readonly MqttClientFactory _factory = new();
     private readonly MqttBrokerConnection _connection;
     private readonly ILogger _logger;
+    private readonly SparkplugPrimaryHost? _primaryHost;
     private readonly Channel<bool> _wake = Channel.CreateBounded<bool>(new BoundedChannelOptions(1) { FullMode = BoundedChannelFullMode.DropWrite });
     private ulong _bdSeq;
     private int _connections;
@@ -40,6 +45,7 @@ public sealed class SparkplugEdgeNode : IHostedService, IAsyncDisposable
         _commands = commands;
         _logger = logger;
         _connection = new MqttBrokerConnection(_options, SparkplugOptions.SectionName, _factory, timeProvider);
+        _primaryHost = string.IsNullOrEmpty(_options.PrimaryHostId) ? null : new SparkplugPrimaryHost(_options.PrimaryHostId);
     }
 
     /// <summary>Whether the session is up (connected, births sent).</summary>
@@ -87,7 +93,7 @@ public sealed class SparkplugEdgeNode : IHostedService, IAsyncDisposable
             await _connection.CloseAsync(async (client, ct) =>
             {
                 await PublishPendingAsync(client, ct).ConfigureAwait(false);
-                await client.PublishAsync(Message(_node.Topic(SparkplugMessageType.NDEATH), SparkplugPayloads.NodeDeath(_bdSeq), MqttQualityOfServiceLevel.AtLeastOnce), ct).ConfigureAwait(false);
+                await client.PublishAsync(NodeDeath(), ct).ConfigureAwait(false);
             }).ConfigureAwait(false);
         }
 
@@ -102,6 +108,17 @@ public sealed class SparkplugEdgeNode : IHostedService, IAsyncDisposable
 
     private void Received(MqttApplicationMessage message)
     {
+        if (_primaryHost is not null && message.Topic == _primaryHost.Topic)
+        {
+            if (_primaryHost.Take(message.Payload.ToArray()) is { } why)
+            {
+                SparkplugLog.StateIgnored(_logger, message.Topic, why);
+            }
+
+            Wake();
+            return;
+        }
+
         if (!SparkplugTopic.TryParse(message.Topic, out SparkplugTopic? topic) || topic!.GroupId != _node.GroupId || topic.EdgeNodeId != _node.EdgeNodeId)
         {
             return;
@@ -137,8 +154,46 @@ public sealed class SparkplugEdgeNode : IHostedService, IAsyncDisposable
                 {
                     IsOnline = false;
                     await ConnectAsync(client, cancellationToken).ConfigureAwait(false);
+                    if (_primaryHost is null)
+                    {
+                        await BirthAsync(client, cancellationToken).ConfigureAwait(false);
+                    }
+                    else
+                    {
+                        SparkplugLog.WaitingForPrimaryHost(_logger, _connection.Broker, _bdSeq, _primaryHost.HostId, _primaryHost.Topic);
+                    }
+
                     _connection.Connected();
                     continue;
+                }
+
+                if (_primaryHost is not null)
+                {
+                    if (IsOnline && !_primaryHost.IsOnline)
+                    {
+                        if (!await EndSessionAsync(_primaryHost).ConfigureAwait(false))
+                        {
+                            return;
+                        }
+
+                        continue;
+                    }
+
+                    if (!IsOnline)
+                    {
+                        if (_primaryHost.IsOnline)
+                        {
+                            SparkplugLog.PrimaryHostOnline(_logger, _primaryHost.HostId, _primaryHost.Timestamp);
+                            await BirthAsync(client, cancellationToken).ConfigureAwait(false);
+                        }
+                        else
+                        {
+                            // Waiting: the node keeps taking values; the births that follow carry the latest.
+                            await _wake.Reader.ReadAsync(cancellationToken).ConfigureAwait(false);
+                        }
+
+                        continue;
+                    }
                 }
 
                 if (_node.RebirthRequested)
@@ -168,25 +223,51 @@ public sealed class SparkplugEdgeNode : IHostedService, IAsyncDisposable
         }
     }
 
+    /// <summary>Connects with the will of a new bdSeq and subscribes to the commands (and the primary host's STATE).</summary>
     private async Task ConnectAsync(IMqttClient client, CancellationToken cancellationToken)
     {
         // A new bdSeq for every connection: the will registered now carries it, and so does the NBIRTH that follows.
         _bdSeq = (ulong)(_connections++ % 256);
+        _primaryHost?.Connecting();
         MqttClientConnectResult result = await client.ConnectAsync(ClientOptions(_bdSeq), cancellationToken).ConfigureAwait(false);
         if (result.ResultCode != MqttClientConnectResultCode.Success)
         {
             throw new InvalidOperationException($"the broker refused the connection: {result.ResultCode}");
         }
 
-        MqttClientSubscribeOptions subscribe = _factory.CreateSubscribeOptionsBuilder()
+        MqttClientSubscribeOptionsBuilder subscribe = _factory.CreateSubscribeOptionsBuilder()
             .WithTopicFilter(f => f.WithTopic(_node.Topic(SparkplugMessageType.NCMD).ToString()).WithQualityOfServiceLevel(MqttQualityOfServiceLevel.AtLeastOnce))
-            .WithTopicFilter(f => f.WithTopic(_node.Topic(SparkplugMessageType.DCMD, "+").ToString()).WithQualityOfServiceLevel(MqttQualityOfServiceLevel.AtLeastOnce))
-            .Build();
-        await client.SubscribeAsync(subscribe, cancellationToken).ConfigureAwait(false);
+            .WithTopicFilter(f => f.WithTopic(_node.Topic(SparkplugMessageType.DCMD, "+").ToString()).WithQualityOfServiceLevel(MqttQualityOfServiceLevel.AtLeastOnce));
+        if (_primaryHost is not null)
+        {
+            // The broker answers with the retained STATE: the host's state for this connection.
+            subscribe = subscribe.WithTopicFilter(f => f.WithTopic(_primaryHost.Topic).WithQualityOfServiceLevel(MqttQualityOfServiceLevel.AtLeastOnce));
+        }
+
+        await client.SubscribeAsync(subscribe.Build(), cancellationToken).ConfigureAwait(false);
+    }
+
+    /// <summary>Publishes NBIRTH and the DBIRTH of every answering unit: the session begins.</summary>
+    private async Task BirthAsync(IMqttClient client, CancellationToken cancellationToken)
+    {
         List<SparkplugMessage> births = _node.Births(_bdSeq);
         await PublishAllAsync(client, births, cancellationToken).ConfigureAwait(false);
         IsOnline = true;
         SparkplugLog.Online(_logger, _connection.Broker, _node.GroupId, _node.EdgeNodeId, _bdSeq, births.Count - 1);
+    }
+
+    /// <summary>
+    /// The primary host went offline: NDEATH of the session's bdSeq, then a clean disconnect (so the broker drops the
+    /// will), then the backoff before the next connection. False when the node is stopped meanwhile.
+    /// </summary>
+    private async Task<bool> EndSessionAsync(SparkplugPrimaryHost host)
+    {
+        await _connection.CloseAsync((client, ct) => client.PublishAsync(NodeDeath(), ct)).ConfigureAwait(false);
+        IsOnline = false;
+        _node.TakeMessages(connected: false);
+        TimeSpan delay = _connection.Backoff();
+        SparkplugLog.PrimaryHostOffline(_logger, host.HostId, host.Timestamp, _bdSeq, _connection.Broker, delay.TotalSeconds);
+        return await _connection.DelayAsync(delay).ConfigureAwait(false);
     }
 
     private async Task PublishPendingAsync(IMqttClient client, CancellationToken cancellationToken)
@@ -199,6 +280,10 @@ public sealed class SparkplugEdgeNode : IHostedService, IAsyncDisposable
             await client.PublishAsync(Message(message.Topic, message.Payload, MqttQualityOfServiceLevel.AtMostOnce), cancellationToken).ConfigureAwait(false);
         }
     }
+
+    /// <summary>The session's NDEATH, sent by the node itself (QoS 1).</summary>
+    private MqttApplicationMessage NodeDeath()
+        => Message(_node.Topic(SparkplugMessageType.NDEATH), SparkplugPayloads.NodeDeath(_bdSeq), MqttQualityOfServiceLevel.AtLeastOnce);
 
     private MqttApplicationMessage Message(SparkplugTopic topic, byte[] payload, MqttQualityOfServiceLevel qos)
         => _factory.CreateApplicationMessageBuilder()

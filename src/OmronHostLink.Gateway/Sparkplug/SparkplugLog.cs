@@ -31,4 +31,16 @@ internal static partial class SparkplugLog
 
     [LoggerMessage(EventId = 1309, Level = LogLevel.Warning, Message = "Sparkplug: TLS certificate checks are off for {Broker} (Sparkplug:Tls:AllowUntrustedCertificates); anyone on the path can read and change the data")]
     public static partial void UntrustedCertificates(ILogger logger, string broker);
+
+    [LoggerMessage(EventId = 1310, Level = LogLevel.Information, Message = "Sparkplug: connected to {Broker} (bdSeq {BdSeq}); waiting for the primary host application {HostId} to be online ({Topic}) before the births")]
+    public static partial void WaitingForPrimaryHost(ILogger logger, string broker, ulong bdSeq, string hostId, string topic);
+
+    [LoggerMessage(EventId = 1311, Level = LogLevel.Information, Message = "Sparkplug: primary host application {HostId} online (STATE timestamp {Timestamp}); publishing the births")]
+    public static partial void PrimaryHostOnline(ILogger logger, string hostId, long? timestamp);
+
+    [LoggerMessage(EventId = 1312, Level = LogLevel.Warning, Message = "Sparkplug: primary host application {HostId} offline (STATE timestamp {Timestamp}); session ended (NDEATH, bdSeq {BdSeq}), reconnecting to {Broker} in {RetryInSeconds:0.###} s")]
+    public static partial void PrimaryHostOffline(ILogger logger, string hostId, long? timestamp, ulong bdSeq, string broker, double retryInSeconds);
+
+    [LoggerMessage(EventId = 1313, Level = LogLevel.Warning, Message = "Sparkplug: STATE on {Topic} ignored: {Why}")]
+    public static partial void StateIgnored(ILogger logger, string topic, string why);
 }

@@ -22,6 +22,13 @@ public sealed class SparkplugOptions : MqttBrokerOptions
     /// <summary>The edge node's id (the fourth topic level): this gateway. Required.</summary>
     public string EdgeNodeId { get; set; } = "";
 
+    /// <summary>
+    /// The primary host application's id (its <c>spBv1.0/STATE/{id}</c> topic; Ignition's MQTT Engine shows it as the
+    /// primary host id). When set, the edge node publishes its births only while that host says it is online, and
+    /// ends its session when the host goes offline. Default none: births at once on every connection.
+    /// </summary>
+    public string? PrimaryHostId { get; set; }
+
     /// <summary>Device commands (DCMD) that write tags.</summary>
     public SparkplugWriteOptions Writes { get; set; } = new();
 

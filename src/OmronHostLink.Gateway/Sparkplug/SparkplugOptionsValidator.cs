@@ -27,6 +27,11 @@ public sealed class SparkplugOptionsValidator(IConfiguration configuration) : IV
         var failures = new List<string>(ConfigurationSchema.Check(configuration.GetSection(Root), typeof(SparkplugOptions)));
         Id(nameof(SparkplugOptions.GroupId), options.GroupId, "the group the edge node belongs to, such as Plant1", failures);
         Id(nameof(SparkplugOptions.EdgeNodeId), options.EdgeNodeId, "this gateway's name in the group, such as hostlink-gw1", failures);
+        if (!string.IsNullOrEmpty(options.PrimaryHostId))
+        {
+            Id(nameof(SparkplugOptions.PrimaryHostId), options.PrimaryHostId, "the primary host application's id (MQTT Engine's primary host id), such as IamHost", failures);
+        }
+
         MqttBrokerOptionsValidator.Validate(options, Root, failures);
         ValidateTags(failures);
         return failures.Count == 0 ? ValidateOptionsResult.Success : ValidateOptionsResult.Fail(failures);

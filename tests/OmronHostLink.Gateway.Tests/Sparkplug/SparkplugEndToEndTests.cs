@@ -16,17 +16,18 @@ namespace OmronHostLink.Gateway.Tests.Sparkplug;
 [Collection(MosquittoCollection.Name)]
 public sealed class SparkplugEndToEndTests(ITestOutputHelper output, TahuCodecFixture fixture) : IClassFixture<TahuCodecFixture>
 {
-    private const string Group = "Plant1";
-    private const string Node = "gw1";
-    private const string Namespace = "spBv1.0/" + Group;
-    private static readonly string NBirth = $"{Namespace}/NBIRTH/{Node}";
-    private static readonly string NDeath = $"{Namespace}/NDEATH/{Node}";
+    internal const string Group = "Plant1";
+    internal const string Node = "gw1";
+    internal const string Namespace = "spBv1.0/" + Group;
+    internal static readonly string NBirth = $"{Namespace}/NBIRTH/{Node}";
+    internal static readonly string NDeath = $"{Namespace}/NDEATH/{Node}";
 
     private readonly TahuCodec _tahu = fixture.Codec;
 
-    private static string Device(string type, string device) => $"{Namespace}/{type}/{Node}/{device}";
+    internal static string Device(string type, string device) => $"{Namespace}/{type}/{Node}/{device}";
 
-    private static Dictionary<string, string?> Config(int plcPort, MosquittoBroker broker)
+    /// <summary>A gateway with Sparkplug alone (no JSON output) on <paramref name="broker"/>, polling the simulator at <paramref name="plcPort"/>.</summary>
+    internal static Dictionary<string, string?> Config(int plcPort, MosquittoBroker broker)
     {
         // The MQTT tests' link, without the JSON output: Sparkplug alone.
         Dictionary<string, string?> config = MqttGatewayConfig.Create(plcPort, broker)
@@ -198,7 +199,7 @@ public sealed class SparkplugEndToEndTests(ITestOutputHelper output, TahuCodecFi
         }
     }
 
-    private static bool Has(IReadOnlyList<ReceivedMessage> messages, string topic) => messages.Any(m => m.Topic == topic);
+    internal static bool Has(IReadOnlyList<ReceivedMessage> messages, string topic) => messages.Any(m => m.Topic == topic);
 
     private async Task<JsonObject> Decode(TestSubscriber app, string topic)
         => await _tahu.DecodeAsync(app.Messages.Last(m => m.Topic == topic).Bytes!);
@@ -226,17 +227,17 @@ public sealed class SparkplugEndToEndTests(ITestOutputHelper output, TahuCodecFi
         throw new Xunit.Sdk.XunitException($"No matching message on {topic}. Received:{Environment.NewLine}{app.Dump()}");
     }
 
-    private static long Seq(JsonObject payload) => long.Parse((string)payload["seq"]!, CultureInfo.InvariantCulture);
+    internal static long Seq(JsonObject payload) => long.Parse((string)payload["seq"]!, CultureInfo.InvariantCulture);
 
-    private static JsonObject[] Metrics(JsonObject payload) => payload["metrics"]!.AsArray().Select(m => m!.AsObject()).ToArray();
+    internal static JsonObject[] Metrics(JsonObject payload) => payload["metrics"]!.AsArray().Select(m => m!.AsObject()).ToArray();
 
-    private static JsonObject Metric(JsonObject payload, string name) => Metrics(payload).Single(m => (string?)m["name"] == name);
+    internal static JsonObject Metric(JsonObject payload, string name) => Metrics(payload).Single(m => (string?)m["name"] == name);
 
     private static IEnumerable<string> Names(JsonObject payload) => Metrics(payload).Select(m => (string)m["name"]!);
 
     private static IEnumerable<string> Types(JsonObject payload) => Metrics(payload).Select(m => (string)m["type"]!);
 
-    private static string Value(JsonObject payload, string name) => ValueText(Metric(payload, name));
+    internal static string Value(JsonObject payload, string name) => ValueText(Metric(payload, name));
 
-    private static string ValueText(JsonObject metric) => metric["value"]!.ToJsonString().Trim('"');
+    internal static string ValueText(JsonObject metric) => metric["value"]!.ToJsonString().Trim('"');
 }
