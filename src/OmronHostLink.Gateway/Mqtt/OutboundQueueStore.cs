@@ -7,8 +7,8 @@ namespace OmronHostLink.Gateway.Mqtt;
 /// What the outbound queue keeps outside the process, in <see cref="MqttOptions.StateDirectory"/>: the count of unsent
 /// messages always (<c>{ClientId}.unsent</c>, <see cref="UnsentRecord"/>) and, with <c>Mqtt:DurableQueue:Enabled</c>, the
 /// messages themselves (<c>{ClientId}.queue.db</c>, <see cref="SqliteOutboundJournal"/>; then the count holds only the
-/// messages the database could not take). It makes the queue: the
-/// previous run's messages first, and an announcement of what the previous run may have lost.
+/// messages the database could not take). It makes the queue: the previous run's messages first, and an announcement
+/// of what the previous run may have lost.
 /// </summary>
 public sealed class OutboundQueueStore : IDisposable
 {
