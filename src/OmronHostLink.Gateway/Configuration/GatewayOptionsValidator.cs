@@ -1,7 +1,6 @@
 using Microsoft.Extensions.Configuration;
 using Microsoft.Extensions.Options;
 using OmronHostLink.Transports;
-using OmronHostLink.Gateway.Polling;
 
 namespace OmronHostLink.Gateway.Configuration;
 

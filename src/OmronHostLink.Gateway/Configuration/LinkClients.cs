@@ -47,7 +47,7 @@ public static class LinkClients
         foreach ((string name, LinkOptions link) in options.Links)
         {
             link.Client.Read(ClientKeys(section.GetSection($"Links:{name}")));
-            TagImport.TagFiles.AddGroups(link);
+            TagFiles.AddGroups(link);
         }
     }
 

@@ -1,4 +1,5 @@
 using System.Diagnostics.Metrics;
+using OmronHostLink.Gateway.Queue;
 
 namespace OmronHostLink.Gateway.Mqtt;
 

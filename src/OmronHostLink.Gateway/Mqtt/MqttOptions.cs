@@ -1,3 +1,6 @@
+using OmronHostLink.Gateway.Broker;
+using OmronHostLink.Gateway.Queue;
+
 namespace OmronHostLink.Gateway.Mqtt;
 
 /// <summary>

@@ -1,6 +1,8 @@
 using Microsoft.Extensions.Configuration;
 using Microsoft.Extensions.Options;
+using OmronHostLink.Gateway.Broker;
 using OmronHostLink.Gateway.Configuration;
+using OmronHostLink.Gateway.Queue;
 
 namespace OmronHostLink.Gateway.Mqtt;
 

@@ -6,6 +6,7 @@ using Microsoft.Extensions.Options;
 using MQTTnet;
 using OmronHostLink.Gateway.Configuration;
 using OmronHostLink.Gateway.Outputs;
+using OmronHostLink.Gateway.Queue;
 
 namespace OmronHostLink.Gateway.Mqtt;
 

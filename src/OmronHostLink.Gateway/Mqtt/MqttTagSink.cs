@@ -1,6 +1,7 @@
 using System.Text;
 using System.Text.Json;
 using OmronHostLink.Gateway.Outputs;
+using OmronHostLink.Gateway.Queue;
 
 namespace OmronHostLink.Gateway.Mqtt;
 

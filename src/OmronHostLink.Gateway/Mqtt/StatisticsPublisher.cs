@@ -2,6 +2,7 @@ using System.Globalization;
 using System.Text.Json;
 using Microsoft.Extensions.Hosting;
 using Microsoft.Extensions.Options;
+using OmronHostLink.Gateway.Queue;
 using OmronHostLink.Gateway.Statistics;
 
 namespace OmronHostLink.Gateway.Mqtt;

@@ -4,6 +4,8 @@ using System.Threading.Channels;
 using Microsoft.Extensions.Logging;
 using MQTTnet;
 using OmronHostLink.Gateway.Outputs;
+using OmronHostLink.Gateway.Queue;
+using OmronHostLink.Gateway.Writes;
 
 namespace OmronHostLink.Gateway.Mqtt;
 

@@ -3,6 +3,7 @@ using System.Net.Sockets;
 using Microsoft.Extensions.Hosting;
 using Microsoft.Extensions.Logging;
 using Microsoft.Extensions.Options;
+using OmronHostLink.Gateway.Polling;
 using OmronHostLink.Simulator;
 using OmronHostLink.Simulator.Hosting;
 

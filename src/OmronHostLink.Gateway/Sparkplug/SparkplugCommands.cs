@@ -4,6 +4,7 @@ using System.Threading.Channels;
 using Microsoft.Extensions.Logging;
 using OmronHostLink.Gateway.Mqtt;
 using OmronHostLink.Gateway.Outputs;
+using OmronHostLink.Gateway.Writes;
 
 namespace OmronHostLink.Gateway.Sparkplug;
 

@@ -6,7 +6,7 @@ using Microsoft.Extensions.Options;
 using MQTTnet;
 using MQTTnet.Formatter;
 using MQTTnet.Protocol;
-using OmronHostLink.Gateway.Mqtt;
+using OmronHostLink.Gateway.Broker;
 
 namespace OmronHostLink.Gateway.Sparkplug;
 

@@ -1,4 +1,5 @@
-using OmronHostLink.Gateway.Mqtt;
+using OmronHostLink.Gateway.Broker;
+
 
 namespace OmronHostLink.Gateway.Sparkplug;
 

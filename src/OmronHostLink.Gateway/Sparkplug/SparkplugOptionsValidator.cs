@@ -1,5 +1,6 @@
 using Microsoft.Extensions.Configuration;
 using Microsoft.Extensions.Options;
+using OmronHostLink.Gateway.Broker;
 using OmronHostLink.Gateway.Configuration;
 using OmronHostLink.Gateway.Mqtt;
 

@@ -3,6 +3,7 @@ using System.Text.Json;
 using Microsoft.Extensions.Logging.Abstractions;
 using Microsoft.Extensions.Time.Testing;
 using OmronHostLink.Gateway.Mqtt;
+using OmronHostLink.Gateway.Queue;
 
 namespace OmronHostLink.Gateway.Tests.Mqtt;
 

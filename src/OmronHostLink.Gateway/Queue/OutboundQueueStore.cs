@@ -1,7 +1,8 @@
 using System.Text.Json;
 using Microsoft.Extensions.Logging;
+using OmronHostLink.Gateway.Mqtt;
 
-namespace OmronHostLink.Gateway.Mqtt;
+namespace OmronHostLink.Gateway.Queue;
 
 /// <summary>
 /// What the outbound queue keeps outside the process, in <see cref="MqttOptions.StateDirectory"/>: the count of unsent

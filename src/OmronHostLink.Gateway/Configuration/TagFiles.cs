@@ -1,6 +1,7 @@
-using OmronHostLink.Gateway.Configuration;
+using OmronHostLink.Gateway.TagImport;
 
-namespace OmronHostLink.Gateway.TagImport;
+
+namespace OmronHostLink.Gateway.Configuration;
 
 /// <summary>Adds the tags of a link's tag files to its poll groups when the configuration is bound.</summary>
 internal static class TagFiles

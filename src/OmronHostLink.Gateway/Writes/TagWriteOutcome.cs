@@ -1,6 +1,6 @@
 using OmronHostLink.Gateway.Mqtt;
 
-namespace OmronHostLink.Gateway.Outputs;
+namespace OmronHostLink.Gateway.Writes;
 
 /// <summary>What became of a write: done (end code 00), refused before anything was sent, or failed on the line or in the PLC.</summary>
 /// <param name="Status"><see cref="WriteResultPayload.Done"/>, <see cref="WriteResultPayload.Refused"/> or <see cref="WriteResultPayload.Failed"/>.</param>

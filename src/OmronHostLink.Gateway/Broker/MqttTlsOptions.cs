@@ -1,4 +1,4 @@
-namespace OmronHostLink.Gateway.Mqtt;
+namespace OmronHostLink.Gateway.Broker;
 
 /// <summary>The <c>Tls</c> section of a broker connection (<c>Mqtt:Tls</c>, <c>Sparkplug:Tls</c>).</summary>
 public sealed class MqttTlsOptions

@@ -1,6 +1,6 @@
 using OmronHostLink.Gateway.Configuration;
 
-namespace OmronHostLink.Gateway.Mqtt;
+namespace OmronHostLink.Gateway.Broker;
 
 /// <summary>
 /// The broker connection of a section that publishes over MQTT (<c>Mqtt</c>, <c>Sparkplug</c>): the same keys, defaults

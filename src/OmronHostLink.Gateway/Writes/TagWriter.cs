@@ -1,7 +1,8 @@
 using System.Text.Json;
 using OmronHostLink.Gateway.Mqtt;
+using OmronHostLink.Gateway.Outputs;
 
-namespace OmronHostLink.Gateway.Outputs;
+namespace OmronHostLink.Gateway.Writes;
 
 /// <summary>
 /// The one path of every write from outside (MQTT JSON commands, Sparkplug B DCMD): the allowlist (only tags configured

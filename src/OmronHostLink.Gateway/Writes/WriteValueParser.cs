@@ -1,7 +1,7 @@
 using System.Globalization;
 using System.Text.Json;
 
-namespace OmronHostLink.Gateway.Mqtt;
+namespace OmronHostLink.Gateway.Writes;
 
 /// <summary>
 /// The value of a write command, JSON, as the words to write: the JSON is read here (a number, a string, true/false,

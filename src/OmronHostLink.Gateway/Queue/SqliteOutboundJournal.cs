@@ -1,7 +1,7 @@
 using Microsoft.Data.Sqlite;
 using Microsoft.Extensions.Logging;
 
-namespace OmronHostLink.Gateway.Mqtt;
+namespace OmronHostLink.Gateway.Queue;
 
 /// <summary>
 /// The durable outage queue: every queued message is a row of a SQLite database until the broker has acknowledged it

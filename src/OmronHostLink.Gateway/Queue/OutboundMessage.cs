@@ -1,4 +1,4 @@
-namespace OmronHostLink.Gateway.Mqtt;
+namespace OmronHostLink.Gateway.Queue;
 
 /// <summary>A message waiting for the broker.</summary>
 /// <param name="Topic">Where it goes.</param>

@@ -1,6 +1,6 @@
 using Microsoft.Extensions.Logging;
 
-namespace OmronHostLink.Gateway;
+namespace OmronHostLink.Gateway.Polling;
 
 /// <summary>The worker's log messages (source-generated), with structured fields: Link, Group, Unit, Address, Values.</summary>
 public static partial class GatewayLog

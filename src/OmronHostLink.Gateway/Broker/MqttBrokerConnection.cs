@@ -1,7 +1,7 @@
 using MQTTnet;
 using OmronHostLink.Gateway.Configuration;
 
-namespace OmronHostLink.Gateway.Mqtt;
+namespace OmronHostLink.Gateway.Broker;
 
 /// <summary>
 /// What every MQTT output keeps of its broker connection (<see cref="MqttBrokerOptions"/>): the client, the loops that

@@ -1,4 +1,6 @@
-namespace OmronHostLink.Gateway.Mqtt;
+using OmronHostLink.Gateway.Mqtt;
+
+namespace OmronHostLink.Gateway.Queue;
 
 /// <summary>
 /// The <c>Mqtt:DurableQueue</c> section: keep the outage queue on disk (SQLite, in <see cref="MqttOptions.StateDirectory"/>)

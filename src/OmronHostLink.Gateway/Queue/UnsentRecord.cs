@@ -1,6 +1,6 @@
 using System.IO.MemoryMappedFiles;
 
-namespace OmronHostLink.Gateway.Mqtt;
+namespace OmronHostLink.Gateway.Queue;
 
 /// <summary>
 /// How many queued messages the broker has not acknowledged, kept in a small memory-mapped file: each change is one

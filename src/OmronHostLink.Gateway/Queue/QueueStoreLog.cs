@@ -1,6 +1,6 @@
 using Microsoft.Extensions.Logging;
 
-namespace OmronHostLink.Gateway.Mqtt;
+namespace OmronHostLink.Gateway.Queue;
 
 /// <summary>The log messages of what the outage queue keeps outside the process (event ids 1130-1139).</summary>
 internal static partial class QueueStoreLog

@@ -3,7 +3,7 @@ using System.Security.Cryptography.X509Certificates;
 using MQTTnet;
 using MQTTnet.Protocol;
 
-namespace OmronHostLink.Gateway.Mqtt;
+namespace OmronHostLink.Gateway.Broker;
 
 /// <summary>
 /// Turns a broker connection (<see cref="MqttBrokerOptions"/>) into MQTTnet's client options: server, client id,

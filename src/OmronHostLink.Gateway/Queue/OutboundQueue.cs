@@ -1,6 +1,6 @@
 using System.Threading.Channels;
 
-namespace OmronHostLink.Gateway.Mqtt;
+namespace OmronHostLink.Gateway.Queue;
 
 /// <summary>
 /// The bounded, in-order queue between the tag sink and the one publisher loop. Adding never blocks: when the queue is

@@ -1,7 +1,7 @@
 using System.Globalization;
 using System.Text;
 
-namespace OmronHostLink.Gateway.Polling;
+namespace OmronHostLink.Gateway.Configuration;
 
 /// <summary>Parsing, sizes and formatting of a poll group's <see cref="PlcValueType"/>.</summary>
 public static class PollValueTypes

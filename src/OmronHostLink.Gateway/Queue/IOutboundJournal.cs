@@ -1,4 +1,4 @@
-namespace OmronHostLink.Gateway.Mqtt;
+namespace OmronHostLink.Gateway.Queue;
 
 /// <summary>
 /// What the outbound queue keeps outside the process, told of every message it takes and lets go, in the queue's order

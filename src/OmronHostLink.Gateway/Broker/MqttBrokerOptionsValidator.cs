@@ -1,6 +1,6 @@
 using OmronHostLink.Gateway.Configuration;
 
-namespace OmronHostLink.Gateway.Mqtt;
+namespace OmronHostLink.Gateway.Broker;
 
 /// <summary>
 /// The rules of a broker connection (<see cref="MqttBrokerOptions"/>), the same in every section that has one; each
