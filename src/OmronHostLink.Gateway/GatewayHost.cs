@@ -17,9 +17,6 @@ namespace OmronHostLink.Gateway;
 /// <summary>Builds the worker's generic host: options, validation, a client per link, the optional simulator and the link pollers.</summary>
 public static class GatewayHost
 {
-    /// <summary>The Windows service name (deploy/install-service.ps1 registers the service under it).</summary>
-    public const string ServiceName = "OmronHostLink.Gateway";
-
     /// <summary>A builder with the usual defaults (appsettings.json, appsettings.{Environment}.json, environment variables, command line, console logging).</summary>
     public static HostApplicationBuilder CreateBuilder(string[] args)
         => Configure(Host.CreateApplicationBuilder(args));
@@ -76,7 +73,7 @@ public static class GatewayHost
         // the service control manager, turns a service stop into a graceful shutdown and logs to the event log.
         // systemd: sd_notify READY=1 once every hosted service has started and STOPPING=1 on SIGTERM (Type=notify),
         // and journald-style console logs.
-        services.AddWindowsService(o => o.ServiceName = ServiceName);
+        services.AddWindowsService(o => o.ServiceName = GatewayNames.Service);
         services.AddSystemd();
         return builder;
     }

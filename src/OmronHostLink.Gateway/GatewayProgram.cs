@@ -12,9 +12,6 @@ namespace OmronHostLink.Gateway;
 /// </summary>
 public static class GatewayProgram
 {
-    /// <summary>The exit code of a configuration that is not valid (a service manager should not restart on it).</summary>
-    public const int InvalidConfiguration = 2;
-
     /// <summary>Runs the gateway until it is stopped (Ctrl+C, SIGTERM, a Windows service stop).</summary>
     /// <param name="args">The command line: configuration overrides such as <c>--Mqtt:Host=broker</c>.</param>
     /// <param name="error">Where configuration problems are written (the console's error stream).</param>
@@ -81,7 +78,7 @@ public static class GatewayProgram
             error.WriteLine("  - " + problem);
         }
 
-        return InvalidConfiguration;
+        return ExitCodes.InvalidConfiguration;
     }
 
     private static List<string> Failures(Exception e) => e switch

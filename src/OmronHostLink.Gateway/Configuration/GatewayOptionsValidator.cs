@@ -178,7 +178,7 @@ public sealed class GatewayOptionsValidator : IValidateOptions<GatewayOptions>
         }
         catch (ArgumentException e)
         {
-            failures.Add($"{path}: {group.Count} × {type.ToString().ToLowerInvariant()} from {address}: {StripParamName(e)}");
+            failures.Add($"{path}: {group.Count} × {type.ToString().ToLowerInvariant()} from {address}: {ErrorText.Of(e)}");
         }
     }
 
@@ -193,13 +193,5 @@ public sealed class GatewayOptionsValidator : IValidateOptions<GatewayOptions>
         {
             return e.Message;
         }
-    }
-
-    // ArgumentException.Message appends " (Parameter 'x')"; the path already names the field.
-    private static string StripParamName(ArgumentException e)
-    {
-        string message = e.Message;
-        int at = e.ParamName is null ? -1 : message.LastIndexOf(" (Parameter '", StringComparison.Ordinal);
-        return at >= 0 ? message.Substring(0, at) : message;
     }
 }

@@ -1,4 +1,5 @@
 using System.Text.Json.Serialization;
+using OmronHostLink.Gateway.Outputs;
 
 namespace OmronHostLink.Gateway.Mqtt;
 

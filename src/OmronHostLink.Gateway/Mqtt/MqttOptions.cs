@@ -32,7 +32,7 @@ public sealed class MqttOptions : MqttBrokerOptions
     public string? StateDirectory { get; set; }
 
     /// <summary>The outage queue on disk (off by default).</summary>
-    public MqttDurableQueueOptions DurableQueue { get; set; } = new();
+    public DurableQueueOptions DurableQueue { get; set; } = new();
 
     /// <summary>How often the statistics of every link and unit are published (and at once when a unit's state changes). Default 10 s; 1 s to 1 h.</summary>
     public TimeSpan StatisticsInterval { get; set; } = TimeSpan.FromSeconds(10);

@@ -3,6 +3,7 @@ using Microsoft.Extensions.Options;
 using OmronHostLink.Gateway.Broker;
 using OmronHostLink.Gateway.Configuration;
 using OmronHostLink.Gateway.Queue;
+using OmronHostLink.Gateway.Writes;
 
 namespace OmronHostLink.Gateway.Mqtt;
 
@@ -62,7 +63,7 @@ public sealed class MqttOptionsValidator : IValidateOptions<MqttOptions>
     private void ValidateDurableQueue(MqttOptions options, List<string> failures)
     {
         const string key = MqttOptions.SectionName + ":DurableQueue";
-        MqttDurableQueueOptions? durable = options.DurableQueue;
+        DurableQueueOptions? durable = options.DurableQueue;
         if (durable is null)
         {
             return;
@@ -81,7 +82,7 @@ public sealed class MqttOptionsValidator : IValidateOptions<MqttOptions>
         if (durable.Enabled && failures.Count == 0)
         {
             // Opened now, so that a directory the service may not write is one line at start, not a crash later.
-            string path = OutboundQueueStore.JournalPath(options, _contentRoot);
+            string path = options.JournalPath(_contentRoot);
             if (SqliteOutboundJournal.Problem(path) is { } problem)
             {
                 failures.Add($"{key}:Enabled: the queue's database {path} cannot be opened: {problem}. Set {MqttOptions.SectionName}:StateDirectory to a directory the gateway may write.");
@@ -184,56 +185,9 @@ public sealed class MqttOptionsValidator : IValidateOptions<MqttOptions>
 
                 if (group.Writable)
                 {
-                    ValidateWritable(groupPath, group, link.CommandSet, failures);
+                    WritableRule.Validate(groupPath, group, link.CommandSet, failures);
                 }
             }
         }
-    }
-
-    internal static void ValidateWritable(string path, PollGroupOptions group, HostLinkCommandSet protocol, List<string> failures)
-    {
-        // The HostLink validator reports bad addresses and types; only what writing adds is checked here.
-        if (!PlcAddress.TryParse(group.Address, out PlcAddress address) || !PlcValueTypes.TryParse(group.Type, out PlcValueType type) || group.Count < 1)
-        {
-            return;
-        }
-
-        if (type == PlcValueType.Bit)
-        {
-            if (address.Area is PlcArea.Timer or PlcArea.Counter)
-            {
-                failures.Add($"{path}:Writable: {address} is a timer/counter completion flag, which the PLC sets itself; it cannot be written.");
-                return;
-            }
-
-            if (group.Count != 1)
-            {
-                failures.Add($"{path}:Writable: a writable bit group must have Count 1 (one bit, written on its own); it has {group.Count}.");
-                return;
-            }
-        }
-
-        try
-        {
-            int words = type switch
-            {
-                PlcValueType.Bit => 1,
-                PlcValueType.String => PlcWords.WordsForString(group.Count),
-                _ => type.WordsPerValue() * group.Count,
-            };
-            // A bit is written with FINS MEMORY AREA WRITE whatever the link's protocol.
-            address.AsWord().EnsureRange(words, type == PlcValueType.Bit ? HostLinkCommandSet.Fins : protocol, forWrite: true);
-        }
-        catch (ArgumentException e)
-        {
-            failures.Add($"{path}:Writable: {address} cannot be written: {StripParamName(e)}");
-        }
-    }
-
-    private static string StripParamName(ArgumentException e)
-    {
-        string message = e.Message;
-        int at = e.ParamName is null ? -1 : message.LastIndexOf(" (Parameter '", StringComparison.Ordinal);
-        return at >= 0 ? message.Substring(0, at) : message;
     }
 }

@@ -36,7 +36,7 @@ public static class MqttServiceCollectionExtensions
             MqttOptions o = sp.GetRequiredService<IOptions<MqttOptions>>().Value;
             return new MqttTopics(o.TopicPrefix, o.ClientIdOrDefault);
         });
-        services.AddSingleton(sp => new OutboundQueueStore(
+        services.AddSingleton(sp => MqttOutboundQueue.OpenStore(
             sp.GetRequiredService<IOptions<MqttOptions>>().Value,
             sp.GetRequiredService<IHostEnvironment>().ContentRootPath,
             sp.GetRequiredService<ILogger<OutboundQueue>>()));

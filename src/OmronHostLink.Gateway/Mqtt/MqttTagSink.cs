@@ -25,14 +25,6 @@ public sealed class MqttTagSink : ITagOutput
         _topics = topics;
     }
 
-    /// <summary>The state names as the link status topics carry them.</summary>
-    public static string LinkStateName(LinkState state) => state switch
-    {
-        LinkState.Online => "online",
-        LinkState.CommError => "comm-error",
-        _ => "offline",
-    };
-
     /// <inheritdoc/>
     public void LinkOpened(string link, HostLinkUnit client) => LinkChanged(link, LinkState.Online);
 
@@ -114,7 +106,7 @@ public sealed class MqttTagSink : ITagOutput
     }
 
     private OutboundMessage LinkMessage(string link, LinkState state)
-        => new(_topics.LinkStatus(link), Encoding.UTF8.GetBytes(LinkStateName(state)), Retain: true);
+        => new(_topics.LinkStatus(link), Encoding.UTF8.GetBytes(state.Name()), Retain: true);
 
     private sealed class TagState(string type, string address)
     {
@@ -135,7 +127,7 @@ public sealed class MqttTagSink : ITagOutput
             {
                 Value = Value,
                 Type = type,
-                Quality = TagPayload.QualityName(Quality),
+                Quality = Quality.Name(),
                 Time = ReadTime,
                 Address = address,
                 Error = Error,

@@ -29,12 +29,4 @@ public sealed class TagPayload
 
     /// <summary>Why the value is not good; absent when it is.</summary>
     public string? Error { get; init; }
-
-    /// <summary>The quality as the payload spells it.</summary>
-    public static string QualityName(TagQuality quality) => quality switch
-    {
-        TagQuality.Good => "good",
-        TagQuality.Stale => "stale",
-        _ => "comm-error",
-    };
 }

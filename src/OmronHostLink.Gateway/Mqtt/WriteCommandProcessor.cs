@@ -162,7 +162,7 @@ public sealed class WriteCommandProcessor
 
         string valueText = Shorten(value.GetRawText());
         TagWriteOutcome outcome = await _writer.WriteAsync(tag, value, element: null, cancellationToken).ConfigureAwait(false);
-        if (outcome.Status == WriteResultPayload.Refused)
+        if (outcome.Status == TagWriteStatus.Refused)
         {
             return Refuse(command, tagTopic, outcome.Error!);
         }
@@ -170,17 +170,17 @@ public sealed class WriteCommandProcessor
         if (outcome.IsDone)
         {
             MqttLog.WriteDone(_logger, tagTopic, tag.Address.ToString(), valueText);
-            return Reply(command, new WriteResultPayload { Status = WriteResultPayload.Done, Tag = tagTopic, Time = _time.GetUtcNow() });
+            return Reply(command, new WriteResultPayload { Status = TagWriteStatus.Done.Name(), Tag = tagTopic, Time = _time.GetUtcNow() });
         }
 
         MqttLog.WriteFailed(_logger, tagTopic, tag.Address.ToString(), valueText, outcome.Error!);
-        return Reply(command, new WriteResultPayload { Status = WriteResultPayload.Failed, Tag = tagTopic, Error = outcome.Error, EndCode = outcome.EndCode, Time = _time.GetUtcNow() });
+        return Reply(command, new WriteResultPayload { Status = TagWriteStatus.Failed.Name(), Tag = tagTopic, Error = outcome.Error, EndCode = outcome.EndCode, Time = _time.GetUtcNow() });
     }
 
     private WriteResultPayload Refuse(WriteCommand command, string tagTopic, string reason)
     {
         MqttLog.WriteRefused(_logger, command.Topic, reason);
-        return Reply(command, new WriteResultPayload { Status = WriteResultPayload.Refused, Tag = tagTopic, Error = reason, Time = _time.GetUtcNow() });
+        return Reply(command, new WriteResultPayload { Status = TagWriteStatus.Refused.Name(), Tag = tagTopic, Error = reason, Time = _time.GetUtcNow() });
     }
 
     private WriteResultPayload Reply(WriteCommand command, WriteResultPayload result)

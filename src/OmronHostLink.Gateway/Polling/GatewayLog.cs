@@ -2,7 +2,7 @@ using Microsoft.Extensions.Logging;
 
 namespace OmronHostLink.Gateway.Polling;
 
-/// <summary>The worker's log messages (source-generated), with structured fields: Link, Group, Unit, Address, Values.</summary>
+/// <summary>The polling's log messages (source-generated), with structured fields: Link, Group, Unit, Address, Values.</summary>
 public static partial class GatewayLog
 {
     /// <summary>Event ids, for filters and tests.</summary>
@@ -46,15 +46,6 @@ public static partial class GatewayLog
 
         /// <summary>A link could not be set up.</summary>
         public const int LinkFailed = 1012;
-
-        /// <summary>The in-process simulator listens.</summary>
-        public const int SimulatorStarted = 1020;
-
-        /// <summary>The in-process simulator stopped.</summary>
-        public const int SimulatorStopped = 1021;
-
-        /// <summary>The in-process simulator's port is taken: the gateway stops with exit code 2.</summary>
-        public const int SimulatorPortInUse = 1022;
     }
 
     [LoggerMessage(EventId = Events.Values, Level = LogLevel.Information, Message = "{Link}/{Group}: unit {Unit} {Address} = {Values}")]
@@ -95,13 +86,4 @@ public static partial class GatewayLog
 
     [LoggerMessage(EventId = Events.LinkFailed, Level = LogLevel.Critical, Message = "link {Link}: cannot be set up; it will not be polled")]
     internal static partial void LinkFailed(ILogger logger, Exception exception, string link);
-
-    [LoggerMessage(EventId = Events.SimulatorStarted, Level = LogLevel.Information, Message = "Simulator: virtual PLC (units {Units}) listening on {EndPoint}{FaultNote}")]
-    internal static partial void SimulatorStarted(ILogger logger, string units, string endPoint, string faultNote);
-
-    [LoggerMessage(EventId = Events.SimulatorStopped, Level = LogLevel.Information, Message = "Simulator: stopped ({Faults})")]
-    internal static partial void SimulatorStopped(ILogger logger, string faults);
-
-    [LoggerMessage(EventId = Events.SimulatorPortInUse, Level = LogLevel.Critical, Message = "Simulator:Port {Port} on 127.0.0.1 is in use by another program (a second gateway?); choose another port or stop that program. Stopping.")]
-    internal static partial void SimulatorPortInUse(ILogger logger, int port);
 }

@@ -1,32 +1,33 @@
-using System.Text.Json;
 using Microsoft.Extensions.Logging;
-using OmronHostLink.Gateway.Mqtt;
+using OmronHostLink.Gateway.Configuration;
 
 namespace OmronHostLink.Gateway.Queue;
 
 /// <summary>
-/// What the outbound queue keeps outside the process, in <see cref="MqttOptions.StateDirectory"/>: the count of unsent
-/// messages always (<c>{ClientId}.unsent</c>, <see cref="UnsentRecord"/>) and, with <c>Mqtt:DurableQueue:Enabled</c>, the
-/// messages themselves (<c>{ClientId}.queue.db</c>, <see cref="SqliteOutboundJournal"/>; then the count holds only the
-/// messages the database could not take). It makes the queue: the previous run's messages first, and an announcement
-/// of what the previous run may have lost.
+/// What the outbound queue keeps outside the process, in the state directory: the count of unsent messages always
+/// (<c>{ClientId}.unsent</c>, <see cref="UnsentRecord"/>) and, with a durable queue, the messages themselves
+/// (<c>{ClientId}.queue.db</c>, <see cref="SqliteOutboundJournal"/>; then the count holds only the messages the database
+/// could not take). It makes the queue: the previous run's messages first, and an announcement of what the previous run
+/// may have lost.
 /// </summary>
 public sealed class OutboundQueueStore : IDisposable
 {
     private readonly UnsentRecord? _record;
     private readonly SqliteOutboundJournal? _journal;
+    private readonly DurableQueueOptions _durable;
 
-    /// <summary>Opens the files for <paramref name="options"/>; a count that cannot be kept is logged, not fatal.</summary>
-    /// <param name="options">The MQTT options (validated: a durable queue's database can be opened).</param>
-    /// <param name="contentRoot">The host's content root, below which the default state directory lies.</param>
+    /// <summary>Opens the files in <paramref name="directory"/>; a count that cannot be kept is logged, not fatal.</summary>
+    /// <param name="directory">The state directory (<see cref="StateDirectory"/>).</param>
+    /// <param name="clientId">The client id the files are named after.</param>
+    /// <param name="durable">The durable queue's options (validated: its database can be opened).</param>
     /// <param name="logger">Where the queue's own events go.</param>
-    public OutboundQueueStore(MqttOptions options, string contentRoot, ILogger logger)
+    public OutboundQueueStore(string directory, string clientId, DurableQueueOptions durable, ILogger logger)
     {
-        ArgumentNullException.ThrowIfNull(options);
+        ArgumentNullException.ThrowIfNull(durable);
         Logger = logger;
-        Directory = StateDirectory(options, contentRoot);
-        string name = FileName(options.ClientIdOrDefault);
-        string recordPath = Path.Combine(Directory, name + ".unsent");
+        Directory = directory;
+        _durable = durable;
+        string recordPath = Path.Combine(Directory, FileName(clientId) + ".unsent");
         try
         {
             _record = UnsentRecord.Open(recordPath);
@@ -36,9 +37,9 @@ public sealed class OutboundQueueStore : IDisposable
             QueueStoreLog.RecordUnavailable(logger, recordPath, e.Message);
         }
 
-        if (options.DurableQueue.Enabled)
+        if (durable.Enabled)
         {
-            _journal = SqliteOutboundJournal.Open(JournalPath(options, contentRoot), logger, atRisk: _record);
+            _journal = SqliteOutboundJournal.Open(JournalPath(directory, clientId), logger, atRisk: _record);
         }
     }
 
@@ -48,16 +49,15 @@ public sealed class OutboundQueueStore : IDisposable
     private ILogger Logger { get; }
 
     /// <summary>
-    /// The state directory for <paramref name="options"/>: <c>Mqtt:StateDirectory</c> (relative to the content root),
+    /// The state directory: <paramref name="configured"/> (<c>Mqtt:StateDirectory</c>, relative to the content root),
     /// else systemd's <c>STATE_DIRECTORY</c>, else <c>%ProgramData%\OmronHostLink.Gateway</c> on Windows, else
     /// <c>state</c> below the content root.
     /// </summary>
-    public static string StateDirectory(MqttOptions options, string contentRoot)
+    public static string StateDirectory(string? configured, string contentRoot)
     {
-        ArgumentNullException.ThrowIfNull(options);
-        if (!string.IsNullOrWhiteSpace(options.StateDirectory))
+        if (!string.IsNullOrWhiteSpace(configured))
         {
-            return Path.GetFullPath(options.StateDirectory, contentRoot);
+            return Path.GetFullPath(configured, contentRoot);
         }
 
         // systemd passes the directories of StateDirectory= separated by ':'; the first is the service's own.
@@ -67,31 +67,29 @@ public sealed class OutboundQueueStore : IDisposable
         }
 
         return OperatingSystem.IsWindows()
-            ? Path.Combine(Environment.GetFolderPath(Environment.SpecialFolder.CommonApplicationData), GatewayHost.ServiceName)
+            ? Path.Combine(Environment.GetFolderPath(Environment.SpecialFolder.CommonApplicationData), GatewayNames.Service)
             : Path.Combine(contentRoot, "state");
     }
 
-    /// <summary>The durable queue's database for <paramref name="options"/>.</summary>
-    public static string JournalPath(MqttOptions options, string contentRoot)
-    {
-        ArgumentNullException.ThrowIfNull(options);
-        return Path.Combine(StateDirectory(options, contentRoot), FileName(options.ClientIdOrDefault) + ".queue.db");
-    }
+    /// <summary>The durable queue's database in <paramref name="directory"/> for <paramref name="clientId"/>.</summary>
+    public static string JournalPath(string directory, string clientId) => Path.Combine(directory, FileName(clientId) + ".queue.db");
 
     /// <summary>
-    /// The queue: bounded by <c>Mqtt:QueueCapacity</c>, and with the durable queue by its size and age too; what the
-    /// previous run left comes first, then the announcement of what it may have lost (on <see cref="MqttTopics.WorkerLost"/>).
+    /// The queue: bounded by <paramref name="capacity"/> messages, and with the durable queue by its size and age too;
+    /// what the previous run left comes first, then the announcement of what it may have lost.
     /// </summary>
-    public OutboundQueue CreateQueue(MqttOptions options, MqttTopics topics, TimeProvider timeProvider)
+    /// <param name="capacity">How many messages may wait (<c>Mqtt:QueueCapacity</c>).</param>
+    /// <param name="timeProvider">The clock of the queue's ages.</param>
+    /// <param name="lossReport">The message that announces how many messages the previous run may have lost.</param>
+    public OutboundQueue CreateQueue(int capacity, TimeProvider timeProvider, Func<long, OutboundMessage> lossReport)
     {
-        ArgumentNullException.ThrowIfNull(options);
-        ArgumentNullException.ThrowIfNull(topics);
         ArgumentNullException.ThrowIfNull(timeProvider);
+        ArgumentNullException.ThrowIfNull(lossReport);
         OutboundQueue queue;
         if (_journal is not null)
         {
-            MqttDurableQueueOptions durable = options.DurableQueue;
-            queue = new OutboundQueue(options.QueueCapacity, _journal, durable.MaxMegabytes * 1024L * 1024L, durable.MaxAge, timeProvider);
+            DurableQueueOptions durable = _durable;
+            queue = new OutboundQueue(capacity, _journal, durable.MaxMegabytes * 1024L * 1024L, durable.MaxAge, timeProvider);
             QueueStoreLog.DurableQueueOpened(Logger, _journal.Path, queue.Restored);
             if (queue.RestoredDropped + queue.RestoredExpired > 0)
             {
@@ -102,14 +100,13 @@ public sealed class OutboundQueueStore : IDisposable
         }
         else
         {
-            queue = new OutboundQueue(options.QueueCapacity, _record, long.MaxValue, null, timeProvider);
+            queue = new OutboundQueue(capacity, _record, long.MaxValue, null, timeProvider);
         }
 
         if (_record is { PreviousLoss: > 0 } record)
         {
-            var payload = new LostMessagesPayload { Lost = record.PreviousLoss, Time = timeProvider.GetUtcNow() };
-            var report = new OutboundMessage(topics.WorkerLost, JsonSerializer.SerializeToUtf8Bytes(payload, MqttJson.Context.LostMessagesPayload), Retain: false);
-            QueueStoreLog.PreviousLoss(Logger, record.PreviousLoss, topics.WorkerLost);
+            OutboundMessage report = lossReport(record.PreviousLoss);
+            QueueStoreLog.PreviousLoss(Logger, record.PreviousLoss, report.Topic);
             record.Announcing(report);
             queue.Enqueue(report);
             if (_journal is not null && _journal.Holds(report))

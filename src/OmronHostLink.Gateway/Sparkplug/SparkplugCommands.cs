@@ -2,7 +2,7 @@ using System.Diagnostics.Metrics;
 using System.Text.Json;
 using System.Threading.Channels;
 using Microsoft.Extensions.Logging;
-using OmronHostLink.Gateway.Mqtt;
+using OmronHostLink.Gateway.Configuration;
 using OmronHostLink.Gateway.Outputs;
 using OmronHostLink.Gateway.Writes;
 
@@ -36,7 +36,7 @@ public sealed class SparkplugCommands
         _node = node;
         _writer = new TagWriter(links);
         _logger = logger;
-        _writes = meterFactory.Create(MqttMetrics.MeterName).CreateCounter<long>("hostlink.gateway.sparkplug.writes", "{metric}", "DCMD metric writes by result: done, refused, failed.");
+        _writes = meterFactory.Create(GatewayNames.Meter).CreateCounter<long>("hostlink.gateway.sparkplug.writes", "{metric}", "DCMD metric writes by result: done, refused, failed.");
     }
 
     /// <summary>Takes a DCMD from the MQTT client's receive path; never blocks it.</summary>
@@ -107,18 +107,18 @@ public sealed class SparkplugCommands
             {
                 TagDefinition tag = device.Tags[metric.Tag];
                 outcome = await _writer.WriteAsync(tag, value, metric.Element < 0 ? null : metric.Element, cancellationToken).ConfigureAwait(false);
-                if (outcome.Status == WriteResultPayload.Refused)
+                if (outcome.Status == TagWriteStatus.Refused)
                 {
                     Refused(deviceId, label, outcome.Error!);
                 }
                 else if (outcome.IsDone)
                 {
-                    _writes.Add(1, new KeyValuePair<string, object?>("result", outcome.Status));
+                    _writes.Add(1, new KeyValuePair<string, object?>("result", outcome.Status.Name()));
                     SparkplugLog.WriteDone(_logger, deviceId, label, tag.Address.ToString(), value.GetRawText());
                 }
                 else
                 {
-                    _writes.Add(1, new KeyValuePair<string, object?>("result", outcome.Status));
+                    _writes.Add(1, new KeyValuePair<string, object?>("result", outcome.Status.Name()));
                     SparkplugLog.WriteFailed(_logger, deviceId, label, tag.Address.ToString(), value.GetRawText(), outcome.Error!);
                 }
             }
@@ -131,7 +131,7 @@ public sealed class SparkplugCommands
 
     private TagWriteOutcome Refused(string device, string metric, string reason)
     {
-        _writes.Add(1, new KeyValuePair<string, object?>("result", WriteResultPayload.Refused));
+        _writes.Add(1, new KeyValuePair<string, object?>("result", TagWriteStatus.Refused.Name()));
         SparkplugLog.WriteRefused(_logger, device, metric, reason);
         return TagWriteOutcome.Refused(reason);
     }

@@ -2,7 +2,7 @@ using Microsoft.Extensions.Configuration;
 using Microsoft.Extensions.Options;
 using OmronHostLink.Gateway.Broker;
 using OmronHostLink.Gateway.Configuration;
-using OmronHostLink.Gateway.Mqtt;
+using OmronHostLink.Gateway.Writes;
 
 namespace OmronHostLink.Gateway.Sparkplug;
 
@@ -78,7 +78,7 @@ public sealed class SparkplugOptionsValidator(IConfiguration configuration) : IV
 
                 if (group.Writable)
                 {
-                    MqttOptionsValidator.ValidateWritable(groupPath, group, link.CommandSet, failures);
+                    WritableRule.Validate(groupPath, group, link.CommandSet, failures);
                 }
             }
         }

@@ -1,5 +1,5 @@
 using System.Text.Json.Serialization;
-using OmronHostLink.Gateway.Mqtt;
+using OmronHostLink.Gateway.Outputs;
 
 namespace OmronHostLink.Gateway.Statistics;
 

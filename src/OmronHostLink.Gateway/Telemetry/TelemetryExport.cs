@@ -1,6 +1,7 @@
 using Microsoft.Extensions.Configuration;
 using Microsoft.Extensions.DependencyInjection;
 using Microsoft.Extensions.Options;
+using OmronHostLink.Gateway.Configuration;
 using OpenTelemetry.Metrics;
 using OpenTelemetry.Resources;
 using OpenTelemetry.Trace;
@@ -18,7 +19,7 @@ public static class TelemetryExport
     public const string SectionName = "OpenTelemetry";
 
     /// <summary>The meters exported: the library's and the worker's.</summary>
-    public static readonly string[] Meters = [HostLinkTelemetry.MeterName, Mqtt.MqttMetrics.MeterName];
+    public static readonly string[] Meters = [HostLinkTelemetry.MeterName, GatewayNames.Meter];
 
     /// <summary>Adds the exporter <c>OpenTelemetry:Exporter</c> names, if any; an unknown name fails at start, naming the key.</summary>
     public static IServiceCollection AddTelemetryExport(this IServiceCollection services, IConfiguration configuration)
@@ -39,7 +40,7 @@ public static class TelemetryExport
         }
 
         services.AddOpenTelemetry()
-            .ConfigureResource(r => r.AddService(GatewayHost.ServiceName))
+            .ConfigureResource(r => r.AddService(GatewayNames.Service))
             .WithMetrics(m =>
             {
                 m.AddMeter(Meters);
@@ -80,7 +81,7 @@ public static class TelemetryExport
             {
                 yield return $"{key} '{value}' is not an http:// or https:// URL (such as http://collector.plant.local:4317).";
             }
-            else if (Configuration.HostSyntax.Problem(uri.IdnHost.Trim('[', ']')) is { } problem)
+            else if (HostSyntax.Problem(uri.IdnHost.Trim('[', ']')) is { } problem)
             {
                 yield return $"{key} '{value}': '{uri.Host}' is not a host name or address: {problem}.";
             }

@@ -1,5 +1,4 @@
 using System.Text.Json;
-using OmronHostLink.Gateway.Mqtt;
 using OmronHostLink.Gateway.Outputs;
 
 namespace OmronHostLink.Gateway.Writes;
@@ -62,15 +61,15 @@ public sealed class TagWriter(OpenLinks links)
                 await client.Unit(tag.Unit).WriteWordsAsync(address.AsWord(), words, cancellationToken).ConfigureAwait(false);
             }
 
-            return new TagWriteOutcome(WriteResultPayload.Done);
+            return new TagWriteOutcome(TagWriteStatus.Done);
         }
         catch (HostLinkEndCodeException e)
         {
-            return new TagWriteOutcome(WriteResultPayload.Failed, e.Message, e.EndCode.ToCode());
+            return new TagWriteOutcome(TagWriteStatus.Failed, e.Message, e.EndCode.ToCode());
         }
         catch (FinsEndCodeException e)
         {
-            return new TagWriteOutcome(WriteResultPayload.Failed, e.Message, e.EndCode.ToString());
+            return new TagWriteOutcome(TagWriteStatus.Failed, e.Message, e.EndCode.ToString());
         }
         catch (ArgumentException e)
         {
@@ -79,7 +78,7 @@ public sealed class TagWriter(OpenLinks links)
         }
         catch (Exception e) when (e is HostLinkException or ObjectDisposedException)
         {
-            return new TagWriteOutcome(WriteResultPayload.Failed, e.Message);
+            return new TagWriteOutcome(TagWriteStatus.Failed, e.Message);
         }
     }
 }

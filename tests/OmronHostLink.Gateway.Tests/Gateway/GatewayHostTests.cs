@@ -382,7 +382,7 @@ public sealed class GatewayHostTests(ITestOutputHelper output) : IDisposable
             await host.StopAsync();
         }
 
-        logs.WithEvent(GatewayLog.Events.SimulatorStarted).Should().ContainSingle();
+        logs.WithEvent(OmronHostLink.Gateway.Simulation.SimulatorLog.Events.Started).Should().ContainSingle();
     }
 
     public static TheoryData<string, string?, string> BadSettings => new()

@@ -1,12 +1,10 @@
-using OmronHostLink.Gateway.Mqtt;
-
 namespace OmronHostLink.Gateway.Queue;
 
 /// <summary>
-/// The <c>Mqtt:DurableQueue</c> section: keep the outage queue on disk (SQLite, in <see cref="MqttOptions.StateDirectory"/>)
-/// so that what waits for the broker survives the gateway's own crash or restart, and is sent in order on its next run.
+/// The durable outage queue (<c>Mqtt:DurableQueue</c>): keep the queue on disk (SQLite, in the state directory) so that
+/// what waits for the broker survives the gateway's own crash or restart, and is sent in order on its next run.
 /// </summary>
-public sealed class MqttDurableQueueOptions
+public sealed class DurableQueueOptions
 {
     /// <summary>Keep the queue on disk. Default false: the queue is in memory and a crash loses it (the next run announces how many).</summary>
     public bool Enabled { get; set; }

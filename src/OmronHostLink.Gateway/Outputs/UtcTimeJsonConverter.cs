@@ -2,7 +2,7 @@ using System.Globalization;
 using System.Text.Json;
 using System.Text.Json.Serialization;
 
-namespace OmronHostLink.Gateway.Mqtt;
+namespace OmronHostLink.Gateway.Outputs;
 
 /// <summary>Writes times as ISO 8601 UTC with milliseconds (<c>2025-01-31T08:00:00.125Z</c>): one fixed width for every consumer.</summary>
 public sealed class UtcTimeJsonConverter : JsonConverter<DateTimeOffset?>
