@@ -29,7 +29,7 @@ public static class GatewayProgram
             return Invalid(error, [problem]);
         }
 
-        List<string> problems = ConfigurationPreflight.Check(builder.Configuration);
+        List<string> problems = ConfigurationPreflight.Check(builder.Configuration, GatewayHost.Sections);
         if (ConfigurationPreflight.BadLogLevels(builder.Configuration) is { Count: > 0 } badLevels)
         {
             // Reported above; a valid level in their place lets the host be built and every other section be checked.

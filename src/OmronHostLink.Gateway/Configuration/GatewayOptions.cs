@@ -78,8 +78,14 @@ public sealed class PollGroupOptions
     /// <summary>EveryPoll (default) or OnChange (only values that differ from the last ones logged).</summary>
     public string Log { get; set; } = nameof(PollLogMode.EveryPoll);
 
-    /// <summary>Allow writes to this group from MQTT (with <c>Mqtt:Writes:Enabled</c>). Default false.</summary>
+    /// <summary>Allow writes to this group from MQTT and Sparkplug B (with their <c>Writes:Enabled</c>). Default false.</summary>
     public bool Writable { get; set; }
+
+    /// <summary>
+    /// For a group made from a row of a tag file: the file and line (<c>TagFiles:0:Path /etc/tags.csv, line 3</c>), which
+    /// messages name instead of a key under <c>Groups</c>; null for a group under <c>Groups</c>.
+    /// </summary>
+    internal string? Row { get; init; }
 }
 
 /// <summary>When a poll group's values are logged.</summary>

@@ -22,6 +22,28 @@ internal static class TagFiles
                 continue;
             }
 
+            // The file's own settings apply to every row: a bad one is named once, by its key, and the file adds nothing.
+            int before = link.TagFileProblems.Count;
+            if (GatewayOptionsValidator.UnitProblem(file.Unit) is { } unitProblem)
+            {
+                link.TagFileProblems.Add($"{key}:Unit {unitProblem}");
+            }
+
+            if (GatewayOptionsValidator.IntervalProblem(file.Interval) is { } intervalProblem)
+            {
+                link.TagFileProblems.Add($"{key}:Interval {intervalProblem}");
+            }
+
+            if (GatewayOptionsValidator.LogProblem(file.Log) is { } logProblem)
+            {
+                link.TagFileProblems.Add($"{key}:Log {logProblem}");
+            }
+
+            if (link.TagFileProblems.Count > before)
+            {
+                continue;
+            }
+
             bool kepware = file.Format.Equals("Kepware", StringComparison.OrdinalIgnoreCase);
             if (!kepware && !file.Format.Equals("Plain", StringComparison.OrdinalIgnoreCase))
             {
@@ -65,6 +87,7 @@ internal static class TagFiles
                     Interval = tag.Interval ?? file.Interval,
                     Log = file.Log,
                     Writable = tag.Writable,
+                    Row = $"{key}:Path {path}, line {tag.Line}",
                 };
             }
         }

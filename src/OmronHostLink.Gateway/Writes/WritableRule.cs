@@ -7,20 +7,20 @@ namespace OmronHostLink.Gateway.Writes;
 /// only within what the command set writes. The start-up check applies it to every group marked <c>Writable</c>, and
 /// every write applies it again before the wire.
 /// </summary>
-internal static class WritableRule
+internal sealed class WritableRule : IGroupRule
 {
-    /// <summary>Adds why the writable group <paramref name="group"/> (at <paramref name="path"/>) cannot be written to <paramref name="failures"/>.</summary>
-    public static void Validate(string path, PollGroupOptions group, HostLinkCommandSet commandSet, List<string> failures)
+    /// <inheritdoc/>
+    public void CheckGroup(ConfiguredGroup group, LinkOptions link, List<string> failures)
     {
-        // The HostLink validator reports bad addresses and types; only what writing adds is checked here.
-        if (!PlcAddress.TryParse(group.Address, out PlcAddress address) || !PlcValueTypes.TryParse(group.Type, out PlcValueType type) || group.Count < 1)
-        {
-            return;
-        }
+        PollGroupOptions options = group.Options;
 
-        if (Problem(address, type, group.Count, commandSet) is { } problem)
+        if (options.Writable
+            && PlcAddress.TryParse(options.Address, out PlcAddress address)
+            && PlcValueTypes.TryParse(options.Type, out PlcValueType type)
+            && options.Count >= 1
+            && Problem(address, type, options.Count, link.CommandSet) is { } problem)
         {
-            failures.Add($"{path}:Writable: {problem}");
+            failures.Add($"{group.KeyOf("Writable")}: {problem}");
         }
     }
 
