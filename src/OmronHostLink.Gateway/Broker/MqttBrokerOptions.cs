@@ -6,7 +6,7 @@ namespace OmronHostLink.Gateway.Broker;
 /// The broker connection of a section that publishes over MQTT (<c>Mqtt</c>, <c>Sparkplug</c>): the same keys, defaults
 /// and rules (<see cref="MqttBrokerOptionsValidator"/>) in each.
 /// </summary>
-public abstract class MqttBrokerOptions
+internal abstract class MqttBrokerOptions
 {
     /// <summary>The broker's host name or address. Required.</summary>
     public string Host { get; set; } = "";

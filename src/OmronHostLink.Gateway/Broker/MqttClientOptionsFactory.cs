@@ -9,7 +9,7 @@ namespace OmronHostLink.Gateway.Broker;
 /// Turns a broker connection (<see cref="MqttBrokerOptions"/>) into MQTTnet's client options: server, client id,
 /// keep-alive, timeout, credentials and TLS. Each output adds its protocol version, session and last will.
 /// </summary>
-public static class MqttClientOptionsFactory
+internal static class MqttClientOptionsFactory
 {
     /// <summary>Starts the client options of a broker connection; the CA file is read here.</summary>
     /// <param name="options">The validated options.</param>

@@ -1,7 +1,7 @@
 namespace OmronHostLink.Gateway.Broker;
 
 /// <summary>The <c>Tls</c> section of a broker connection (<c>Mqtt:Tls</c>, <c>Sparkplug:Tls</c>).</summary>
-public sealed class MqttTlsOptions
+internal sealed class MqttTlsOptions
 {
     /// <summary>Connect with TLS. Default false.</summary>
     public bool Enabled { get; set; }

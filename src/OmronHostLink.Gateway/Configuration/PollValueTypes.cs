@@ -4,7 +4,7 @@ using System.Text;
 namespace OmronHostLink.Gateway.Configuration;
 
 /// <summary>Parsing, sizes and formatting of a poll group's <see cref="PlcValueType"/>.</summary>
-public static class PollValueTypes
+internal static class PollValueTypes
 {
     /// <summary>The names accepted in configuration, as the console spells them.</summary>
     public static string Names => string.Join(", ", PlcValueTypes.Names);

@@ -18,7 +18,7 @@ namespace OmronHostLink.Gateway.Mqtt;
 /// reconnects with capped exponential backoff, and the queue keeps filling meanwhile. On a clean stop it sends what is
 /// queued (for a few seconds at most), publishes <c>offline</c> and disconnects.
 /// </summary>
-public sealed class MqttGateway : IHostedService, IAsyncDisposable
+internal sealed class MqttGateway : IHostedService, IAsyncDisposable
 {
     /// <summary>The worker's status while connected (the birth message).</summary>
     public const string Online = "online";

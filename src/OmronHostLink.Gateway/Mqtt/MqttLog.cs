@@ -3,7 +3,7 @@ using Microsoft.Extensions.Logging;
 namespace OmronHostLink.Gateway.Mqtt;
 
 /// <summary>The MQTT output's log messages (source-generated), with structured fields: Broker, Topic, Queued, Reason.</summary>
-public static partial class MqttLog
+internal static partial class MqttLog
 {
     /// <summary>Event ids, for filters and tests.</summary>
     public static class Events

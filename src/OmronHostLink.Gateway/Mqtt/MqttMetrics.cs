@@ -7,7 +7,7 @@ namespace OmronHostLink.Gateway.Mqtt;
 /// <summary>
 /// The MQTT output's instruments on the gateway's meter (<see cref="GatewayNames.Meter"/>).
 /// </summary>
-public sealed class MqttMetrics
+internal sealed class MqttMetrics
 {
     private readonly Counter<long> _dropped;
     private readonly Counter<long> _published;

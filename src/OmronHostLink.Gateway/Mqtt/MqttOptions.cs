@@ -7,7 +7,7 @@ namespace OmronHostLink.Gateway.Mqtt;
 /// The <c>Mqtt</c> section: publish tag values to an MQTT broker and, if allowed, accept writes. Without the section
 /// (or with <c>Enabled: false</c>) the worker only logs.
 /// </summary>
-public sealed class MqttOptions : MqttBrokerOptions
+internal sealed class MqttOptions : MqttBrokerOptions
 {
     /// <summary>The configuration section these options bind to.</summary>
     public const string SectionName = "Mqtt";
@@ -55,7 +55,7 @@ public sealed class MqttOptions : MqttBrokerOptions
 }
 
 /// <summary>The <c>Mqtt:Writes</c> section.</summary>
-public sealed class MqttWriteOptions
+internal sealed class MqttWriteOptions
 {
     /// <summary>
     /// Accept write commands on <c>{prefix}/{link}/{unit}/{tag}/set</c> for the poll groups marked <c>Writable</c>.

@@ -10,7 +10,7 @@ namespace OmronHostLink.Gateway.Mqtt;
 /// into a retained message on the tag's topic, a change of a link's state into one on the link's status topic, and
 /// queues them in the order they happened. Returns at once; the publisher loop sends the queue.
 /// </summary>
-public sealed class MqttTagSink : ITagOutput
+internal sealed class MqttTagSink : ITagOutput
 {
     private readonly object _gate = new();
     private readonly Dictionary<string, TagState> _tags = new(StringComparer.Ordinal);

@@ -16,7 +16,7 @@ namespace OmronHostLink.Gateway.Mqtt;
 /// logged, and nothing reaches the PLC for it. Every command gets a reply: on the MQTT 5 response topic with the
 /// correlation data when the command carries them, otherwise on <c>{command topic}/result</c>.
 /// </summary>
-public sealed class WriteCommandProcessor
+internal sealed class WriteCommandProcessor
 {
     /// <summary>How many commands may wait; more are refused at once.</summary>
     public const int Backlog = 256;

@@ -8,7 +8,7 @@ namespace OmronHostLink.Gateway.Mqtt;
 /// <c>"refused"</c> (nothing was sent to the PLC) or <c>"failed"</c> (the PLC or the line failed it) with an error and,
 /// for a PLC end code, the code.
 /// </summary>
-public sealed class WriteResultPayload
+internal sealed class WriteResultPayload
 {
     /// <summary><c>done</c>, <c>refused</c> or <c>failed</c>.</summary>
     public required string Status { get; init; }

@@ -3,7 +3,7 @@ using OmronHostLink.Gateway.Configuration;
 namespace OmronHostLink.Gateway.Outputs;
 
 /// <summary>The tags of the enabled links, from the validated <c>HostLink</c> section, looked up as topics name them.</summary>
-public sealed class TagCatalog
+internal sealed class TagCatalog
 {
     private readonly Dictionary<(string Link, int Unit, string Name), TagDefinition> _tags = new();
 

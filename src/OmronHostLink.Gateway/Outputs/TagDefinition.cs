@@ -9,4 +9,4 @@ namespace OmronHostLink.Gateway.Outputs;
 /// <param name="Count">How many values (characters for <c>string</c>, bits for <c>bit</c>).</param>
 /// <param name="WordOrder">Word order of 32-bit values on the link.</param>
 /// <param name="Writable">Listed as writable in configuration.</param>
-public sealed record TagDefinition(string Link, int Unit, string Name, PlcAddress Address, PlcValueType Type, int Count, WordOrder WordOrder, bool Writable);
+internal sealed record TagDefinition(string Link, int Unit, string Name, PlcAddress Address, PlcValueType Type, int Count, WordOrder WordOrder, bool Writable);

@@ -5,7 +5,7 @@ using System.Text.Json.Serialization;
 namespace OmronHostLink.Gateway.Outputs;
 
 /// <summary>Writes times as ISO 8601 UTC with milliseconds (<c>2025-01-31T08:00:00.125Z</c>): one fixed width for every consumer.</summary>
-public sealed class UtcTimeJsonConverter : JsonConverter<DateTimeOffset?>
+internal sealed class UtcTimeJsonConverter : JsonConverter<DateTimeOffset?>
 {
     /// <summary>The format written.</summary>
     public const string Format = "yyyy-MM-dd'T'HH:mm:ss.fff'Z'";

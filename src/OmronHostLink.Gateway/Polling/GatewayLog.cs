@@ -3,7 +3,7 @@ using Microsoft.Extensions.Logging;
 namespace OmronHostLink.Gateway.Polling;
 
 /// <summary>The polling's log messages (source-generated), with structured fields: Link, Group, Unit, Address, Values.</summary>
-public static partial class GatewayLog
+internal static partial class GatewayLog
 {
     /// <summary>Event ids, for filters and tests.</summary>
     public static class Events

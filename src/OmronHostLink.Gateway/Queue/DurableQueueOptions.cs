@@ -4,7 +4,7 @@ namespace OmronHostLink.Gateway.Queue;
 /// The durable outage queue (<c>Mqtt:DurableQueue</c>): keep the queue on disk (SQLite, in the state directory) so that
 /// what waits for the broker survives the gateway's own crash or restart, and is sent in order on its next run.
 /// </summary>
-public sealed class DurableQueueOptions
+internal sealed class DurableQueueOptions
 {
     /// <summary>Keep the queue on disk. Default false: the queue is in memory and a crash loses it (the next run announces how many).</summary>
     public bool Enabled { get; set; }

@@ -5,7 +5,7 @@ namespace OmronHostLink.Gateway.Queue;
 /// and under its lock: a durable copy of the messages (<see cref="SqliteOutboundJournal"/>) or only how many wait
 /// (<see cref="UnsentRecord"/>). A journal never throws: a store it cannot write costs durability, never a value.
 /// </summary>
-public interface IOutboundJournal
+internal interface IOutboundJournal
 {
     /// <summary>The messages a previous run left, oldest first, with their <see cref="OutboundMessage.Sequence"/> and <see cref="OutboundMessage.QueuedAt"/>.</summary>
     IReadOnlyList<OutboundMessage> Load();

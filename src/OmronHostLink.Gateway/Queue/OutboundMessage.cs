@@ -5,7 +5,7 @@ namespace OmronHostLink.Gateway.Queue;
 /// <param name="Payload">UTF-8 JSON, or plain text for the status topics.</param>
 /// <param name="Retain">Whether the broker keeps it as the topic's last value.</param>
 /// <param name="CorrelationData">MQTT 5 correlation data of a reply; null otherwise.</param>
-public sealed record OutboundMessage(string Topic, byte[] Payload, bool Retain, byte[]? CorrelationData = null)
+internal sealed record OutboundMessage(string Topic, byte[] Payload, bool Retain, byte[]? CorrelationData = null)
 {
     /// <summary>The order in which it was queued (set by the queue).</summary>
     public long Sequence { get; internal set; }

@@ -9,7 +9,7 @@ namespace OmronHostLink.Gateway.Queue;
 /// journal, every message taken and let go is also recorded outside the process (<see cref="IOutboundJournal"/>), and
 /// what a previous run left is queued first; a size and an age then bound the queue as well as the count.
 /// </summary>
-public sealed class OutboundQueue
+internal sealed class OutboundQueue
 {
     private readonly Queue<OutboundMessage> _messages = new();
     private readonly Dictionary<string, int> _pendingByTopic = new(StringComparer.Ordinal);

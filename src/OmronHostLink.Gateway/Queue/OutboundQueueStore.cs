@@ -10,7 +10,7 @@ namespace OmronHostLink.Gateway.Queue;
 /// could not take). It makes the queue: the previous run's messages first, and an announcement of what the previous run
 /// may have lost.
 /// </summary>
-public sealed class OutboundQueueStore : IDisposable
+internal sealed class OutboundQueueStore : IDisposable
 {
     private readonly UnsentRecord? _record;
     private readonly SqliteOutboundJournal? _journal;

@@ -12,7 +12,7 @@ namespace OmronHostLink.Gateway.Queue;
 /// disk) is held in memory and counted as at risk until it is written after all (once there is room again) or leaves
 /// the queue, so a run that ends meanwhile leaves its loss to be announced.
 /// </summary>
-public sealed class SqliteOutboundJournal : IOutboundJournal, IDisposable
+internal sealed class SqliteOutboundJournal : IOutboundJournal, IDisposable
 {
     private readonly object _gate = new();
     private readonly SqliteConnection _connection;

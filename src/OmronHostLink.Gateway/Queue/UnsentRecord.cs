@@ -10,7 +10,7 @@ namespace OmronHostLink.Gateway.Queue;
 /// count. As the queue's journal it stands for a queue kept in memory only (no durable queue); beside a durable queue it
 /// counts the messages the database could not take.
 /// </summary>
-public sealed class UnsentRecord : IOutboundJournal, IDisposable
+internal sealed class UnsentRecord : IOutboundJournal, IDisposable
 {
     /// <summary>"OHLUNSN1" read as a little-endian number: a file this class wrote.</summary>
     private const long Magic = 0x314E534E554C484F;

@@ -13,7 +13,7 @@ namespace OmronHostLink.Gateway.Simulation;
 /// Runs a <see cref="VirtualPlc"/> on 127.0.0.1 inside the worker when <c>Simulator:Enabled</c> is true. Registered
 /// before the polling service, so it listens before the first link connects, and stops after the links.
 /// </summary>
-public sealed class SimulatorHostedService : IHostedService, IAsyncDisposable
+internal sealed class SimulatorHostedService : IHostedService, IAsyncDisposable
 {
     private readonly IOptions<SimulatorOptions> _options;
     private readonly ILogger _logger;

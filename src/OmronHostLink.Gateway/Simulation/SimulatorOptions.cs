@@ -4,7 +4,7 @@ using OmronHostLink.Simulator.Faults;
 namespace OmronHostLink.Gateway.Simulation;
 
 /// <summary>The <c>Simulator</c> section: an in-process virtual PLC on 127.0.0.1 for trying the worker without a PLC.</summary>
-public sealed class SimulatorOptions
+internal sealed class SimulatorOptions
 {
     /// <summary>The configuration section these options bind to.</summary>
     public const string SectionName = "Simulator";
@@ -41,7 +41,7 @@ public sealed class SimulatorOptions
 }
 
 /// <summary>A word the simulator increments every <see cref="Interval"/>.</summary>
-public sealed class AnimateOptions
+internal sealed class AnimateOptions
 {
     /// <summary>The word address. Empty for none.</summary>
     public string Address { get; set; } = "";

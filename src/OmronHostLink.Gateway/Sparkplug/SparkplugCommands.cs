@@ -15,7 +15,7 @@ namespace OmronHostLink.Gateway.Sparkplug;
 /// refused and logged, and nothing reaches the PLC for it. Sparkplug has no reply to a command: the value written comes
 /// back in the next DDATA, read from the PLC.
 /// </summary>
-public sealed class SparkplugCommands
+internal sealed class SparkplugCommands
 {
     /// <summary>How many commands may wait; more are refused at once.</summary>
     public const int Backlog = 256;

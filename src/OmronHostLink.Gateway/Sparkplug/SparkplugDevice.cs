@@ -7,7 +7,7 @@ namespace OmronHostLink.Gateway.Sparkplug;
 /// A PLC unit as a Sparkplug device (<c>{link}-{unit}</c>): its metrics, one per tag of one value and one per value of a
 /// tag of several (<c>name/0</c>, <c>name/1</c>…), in the catalogue's order.
 /// </summary>
-public sealed class SparkplugDevice
+internal sealed class SparkplugDevice
 {
     internal SparkplugDevice(string link, int unit, IReadOnlyList<SparkplugMetric> metrics, IReadOnlyDictionary<string, TagDefinition> tags)
     {

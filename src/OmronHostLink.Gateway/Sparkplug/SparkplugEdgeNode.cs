@@ -23,7 +23,7 @@ namespace OmronHostLink.Gateway.Sparkplug;
 /// it is offline ends the session (NDEATH, disconnect) and the node reconnects after the backoff and waits again.
 /// Meanwhile the node keeps the latest values, and the births that follow carry them.
 /// </summary>
-public sealed class SparkplugEdgeNode : IHostedService, IAsyncDisposable
+internal sealed class SparkplugEdgeNode : IHostedService, IAsyncDisposable
 {
     private readonly SparkplugOptions _options;
     private readonly SparkplugNode _node;

@@ -11,7 +11,7 @@ namespace OmronHostLink.Gateway.Sparkplug;
 /// changed, and <see cref="Changed"/> wakes the publisher, which takes the messages (<see cref="TakeMessages"/>) and
 /// numbers them in the order it publishes them.
 /// </summary>
-public sealed class SparkplugNode : ITagOutput
+internal sealed class SparkplugNode : ITagOutput
 {
     private readonly object _gate = new();
     private readonly Dictionary<(string Link, int Unit), DeviceState> _devices = new();

@@ -14,7 +14,7 @@ namespace OmronHostLink.Gateway.Statistics;
 /// polling (this is an output). The demotions are instruments of the gateway's meter:
 /// <c>hostlink.gateway.unit.demoted</c> and <c>hostlink.gateway.unit.demotions</c>.
 /// </summary>
-public sealed class LinkStatistics : ITagOutput, IDisposable
+internal sealed class LinkStatistics : ITagOutput, IDisposable
 {
     /// <summary>Gauge: 1 for a demoted unit, 0 for the others (attributes <c>hostlink.link.name</c>, <c>hostlink.unit</c>).</summary>
     public const string DemotedName = "hostlink.gateway.unit.demoted";

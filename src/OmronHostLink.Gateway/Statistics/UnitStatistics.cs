@@ -7,7 +7,7 @@ namespace OmronHostLink.Gateway.Statistics;
 /// What a technician reads about a link or one PLC unit on it, counted since the gateway started: the payload of the
 /// retained statistics topics.
 /// </summary>
-public sealed class UnitStatistics
+internal sealed class UnitStatistics
 {
     /// <summary>The link's configured name.</summary>
     [JsonPropertyName("link")]

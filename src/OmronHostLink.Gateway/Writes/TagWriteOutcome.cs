@@ -4,7 +4,7 @@ namespace OmronHostLink.Gateway.Writes;
 /// <param name="Status">Done, refused or failed.</param>
 /// <param name="Error">Why it was refused or failed; null when done.</param>
 /// <param name="EndCode">The PLC's end code when it refused the write (C-mode: two hex digits; FINS: four).</param>
-public sealed record TagWriteOutcome(TagWriteStatus Status, string? Error = null, string? EndCode = null)
+internal sealed record TagWriteOutcome(TagWriteStatus Status, string? Error = null, string? EndCode = null)
 {
     /// <summary>Whether the PLC took the value.</summary>
     public bool IsDone => Status == TagWriteStatus.Done;

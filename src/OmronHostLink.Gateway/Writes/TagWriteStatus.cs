@@ -1,7 +1,7 @@
 namespace OmronHostLink.Gateway.Writes;
 
 /// <summary>What became of a write.</summary>
-public enum TagWriteStatus
+internal enum TagWriteStatus
 {
     /// <summary>The PLC took the value (end code 00).</summary>
     Done,

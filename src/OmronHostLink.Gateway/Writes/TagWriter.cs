@@ -10,7 +10,7 @@ namespace OmronHostLink.Gateway.Writes;
 /// value or tag this refuses.
 /// </summary>
 /// <param name="links">The clients of the links being polled.</param>
-public sealed class TagWriter(OpenLinks links)
+internal sealed class TagWriter(OpenLinks links)
 {
     /// <summary>Writes <paramref name="value"/> (JSON) to <paramref name="tag"/>, or to one of its values.</summary>
     /// <param name="tag">The tag, as the catalogue knows it.</param>

@@ -7,7 +7,7 @@ namespace OmronHostLink.Gateway.Writes;
 /// The value of a write command, JSON, as the words to write: the JSON is read here (a number, a string, true/false,
 /// or an array of them for a tag of several values) and the words are laid out by the core's <see cref="PlcValueCodec"/>.
 /// </summary>
-public static class WriteValueParser
+internal static class WriteValueParser
 {
     /// <summary>The smallest positive normal IEEE 754 single (2^-126); below it a REAL loses significant digits.</summary>
     private const float SmallestNormalSingle = 1.17549435E-38f;

@@ -52,6 +52,22 @@ public sealed partial class GatewayArchitectureTests(ITestOutputHelper output)
     }
 
     [Fact]
+    public void The_application_makes_public_only_its_entry_points_and_the_seam_its_outputs_plug_into()
+    {
+        // Everything else is internal: the tests and benchmarks reach it through InternalsVisibleTo.
+        typeof(GatewayHost).Assembly.GetExportedTypes().Select(t => t.FullName).Should().BeEquivalentTo(
+        [
+            "OmronHostLink.Gateway.GatewayHost",
+            "OmronHostLink.Gateway.GatewayProgram",
+            "OmronHostLink.Gateway.Outputs.ITagOutput",
+            "OmronHostLink.Gateway.Outputs.TagChange",
+            "OmronHostLink.Gateway.Outputs.TagQuality",
+            "OmronHostLink.Gateway.Outputs.LinkState",
+            "OmronHostLink.Gateway.Outputs.UnitState",
+        ]);
+    }
+
+    [Fact]
     public void The_dependency_reader_sees_usings_qualified_names_documentation_and_root_types()
     {
         // The reader itself: it must find what a folder names, and nothing in comments or text.
