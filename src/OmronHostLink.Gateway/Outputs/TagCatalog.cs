@@ -22,7 +22,7 @@ internal sealed class TagCatalog
             foreach ((string name, PollGroupOptions g) in linkOptions.Groups)
             {
                 PlcValueTypes.TryParse(g.Type, out PlcValueType type);
-                var tag = new TagDefinition(link, g.Unit, name, PlcAddress.Parse(g.Address), type, g.Count, linkOptions.WordOrder, g.Writable);
+                var tag = new TagDefinition(link, g.Unit, name, PlcAddress.Parse(g.Address), type, g.Count, linkOptions.WordOrder, g.Writable, linkOptions.CommandSet);
                 _tags[(link, g.Unit, name)] = tag;
             }
         }

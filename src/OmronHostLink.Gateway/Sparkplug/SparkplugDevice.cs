@@ -9,6 +9,9 @@ namespace OmronHostLink.Gateway.Sparkplug;
 /// </summary>
 internal sealed class SparkplugDevice
 {
+    private readonly Dictionary<string, SparkplugMetric> _byName;
+    private readonly Dictionary<ulong, SparkplugMetric> _byAlias;
+
     internal SparkplugDevice(string link, int unit, IReadOnlyList<SparkplugMetric> metrics, IReadOnlyDictionary<string, TagDefinition> tags)
     {
         Link = link;
@@ -16,6 +19,8 @@ internal sealed class SparkplugDevice
         Id = DeviceId(link, unit);
         Metrics = metrics;
         Tags = tags;
+        _byName = metrics.ToDictionary(m => m.Name, StringComparer.Ordinal);
+        _byAlias = metrics.ToDictionary(m => m.Alias);
     }
 
     /// <summary>The link's configured name.</summary>
@@ -32,6 +37,12 @@ internal sealed class SparkplugDevice
 
     /// <summary>The tags behind the metrics, by tag name.</summary>
     public IReadOnlyDictionary<string, TagDefinition> Tags { get; }
+
+    /// <summary>The metric named <paramref name="name"/>; null when the device has none.</summary>
+    public SparkplugMetric? Metric(string name) => _byName.GetValueOrDefault(name);
+
+    /// <summary>The metric of alias <paramref name="alias"/>; null when the device has none.</summary>
+    public SparkplugMetric? Metric(ulong alias) => _byAlias.GetValueOrDefault(alias);
 
     /// <summary>The device id of a unit: <c>{link}-{unit}</c>.</summary>
     public static string DeviceId(string link, int unit) => $"{link}-{unit.ToString(CultureInfo.InvariantCulture)}";

@@ -1,4 +1,5 @@
 using System.Text.Json;
+using OmronHostLink.Gateway.Configuration;
 using OmronHostLink.Gateway.Outputs;
 
 namespace OmronHostLink.Gateway.Writes;
@@ -23,6 +24,12 @@ internal sealed class TagWriter(OpenLinks links)
         if (!tag.Writable)
         {
             return TagWriteOutcome.Refused($"{tag.Link}/{tag.Unit}/{tag.Name} is not writable; only tags with Writable: true (HostLink:Links:{tag.Link}:Groups:{tag.Name}:Writable) take writes.");
+        }
+
+        if (WritableRule.Problem(tag.Address, tag.Type, tag.Count, tag.CommandSet) is { } notWritable)
+        {
+            // Refused at start too; checked again here so that no write of such a tag can reach the wire.
+            return TagWriteOutcome.Refused($"{tag.Link}/{tag.Unit}/{tag.Name}: {notWritable}");
         }
 
         PlcAddress address = tag.Address;
@@ -74,7 +81,7 @@ internal sealed class TagWriter(OpenLinks links)
         catch (ArgumentException e)
         {
             // The library refused it before the wire.
-            return TagWriteOutcome.Refused(e.Message);
+            return TagWriteOutcome.Refused($"{address}: {ErrorText.Of(e)}");
         }
         catch (Exception e) when (e is HostLinkException or ObjectDisposedException)
         {

@@ -75,7 +75,7 @@ internal static class WriteValueParser
         }
 
         int per = PlcValueCodec.WordCount(type);
-        var result = new ushort[type == PlcValueType.Bit ? 1 : per * count];
+        var result = new ushort[per * count];
         for (int i = 0; i < items.Length; i++)
         {
             string at = count == 1 ? "" : $"item {i}: ";
