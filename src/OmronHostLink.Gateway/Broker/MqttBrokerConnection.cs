@@ -83,15 +83,44 @@ internal sealed class MqttBrokerConnection : IAsyncDisposable
 
     /// <summary>
     /// After a failed attempt or a lost connection: closes what is left of the connection, counts the failure and says
-    /// why it failed (a refused certificate's reason, otherwise <paramref name="describe"/>'s) and how long to wait
+    /// why it failed (a refused certificate's reason, otherwise <see cref="Describe"/>'s) and how long to wait
     /// (<see cref="Backoff"/>).
     /// </summary>
-    public async Task<(string Reason, TimeSpan Delay)> FailedAsync(Exception error, Func<Exception, string> describe)
+    public async Task<(string Reason, TimeSpan Delay)> FailedAsync(Exception error)
     {
         await DropAsync().ConfigureAwait(false);
-        string reason = _certificateProblem is { } why ? "TLS: " + why : describe(error);
+        string reason = _certificateProblem is { } why ? "TLS: " + why : Describe(error);
         _certificateProblem = null;
         return (reason, Backoff());
+    }
+
+    /// <summary>
+    /// Why a connection failed, in a few words: the socket's own (<c>Connection refused</c>) when there is one — the log
+    /// names the broker already, and MQTTnet's wrapper would name it again as a DnsEndPoint
+    /// (<c>Unspecified/127.0.0.1:1883</c>) — otherwise the messages of the exception and its causes, each once.
+    /// </summary>
+    public static string Describe(Exception error)
+    {
+        ArgumentNullException.ThrowIfNull(error);
+        for (Exception? x = error; x is not null; x = x.InnerException)
+        {
+            if (x is System.Net.Sockets.SocketException socket)
+            {
+                return socket.Message;
+            }
+        }
+
+        var parts = new List<string>();
+        for (Exception? x = error; x is not null; x = x.InnerException)
+        {
+            string text = x.Message.TrimEnd('.');
+            if (text.Length > 0 && !parts.Any(p => p.Contains(text, StringComparison.Ordinal)))
+            {
+                parts.Add(text);
+            }
+        }
+
+        return parts.Count == 0 ? error.GetType().Name : string.Join(": ", parts).Replace("Unspecified/", "", StringComparison.Ordinal);
     }
 
     /// <summary>

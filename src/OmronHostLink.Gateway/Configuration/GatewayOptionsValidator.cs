@@ -58,6 +58,11 @@ internal sealed class GatewayOptionsValidator(GatewayConfiguration gateway) : Se
             failures.Add($"{path}:Tcp '{host}' does not name a host: {problem}.");
         }
 
+        if (link.CommandSet == HostLinkCommandSet.Fins && link.Client.HostLinkCompatibleMode is { } mode)
+        {
+            failures.Add($"{path}:HostLinkCompatibleMode {mode} checks how a unit frames C-mode answers; with CommandSet Fins it would be ignored. Remove it, or set CommandSet CMode.");
+        }
+
         if (link.Backoff is null)
         {
             failures.Add($"{path}:Backoff is missing.");

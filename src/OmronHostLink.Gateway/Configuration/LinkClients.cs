@@ -37,6 +37,14 @@ internal static class LinkClients
         ArgumentNullException.ThrowIfNull(section);
         ArgumentNullException.ThrowIfNull(options);
         ConfigurationSchema.Bind(section, options);
+
+        // A link whose keys are all its client's (Tcp, Serial…) binds no worker key, and the binder would leave it out:
+        // it is a link all the same, and the check says what it lacks rather than that there is none.
+        foreach (IConfigurationSection link in section.GetSection(nameof(GatewayOptions.Links)).GetChildren())
+        {
+            options.Links.TryAdd(link.Key, new LinkOptions());
+        }
+
         foreach ((string name, LinkOptions link) in options.Links)
         {
             link.Client.Read(ClientKeys(section.GetSection($"Links:{name}")));

@@ -5,7 +5,7 @@ namespace OmronHostLink.Gateway.Sparkplug;
 
 /// <summary>
 /// A PLC unit as a Sparkplug device (<c>{link}-{unit}</c>): its metrics, one per tag of one value and one per value of a
-/// tag of several (<c>name/0</c>, <c>name/1</c>…), in the catalogue's order.
+/// tag of several (<c>name/0</c>, <c>name/1</c>…), in alias order (<see cref="FromCatalog"/>).
 /// </summary>
 internal sealed class SparkplugDevice
 {
@@ -47,7 +47,12 @@ internal sealed class SparkplugDevice
     /// <summary>The device id of a unit: <c>{link}-{unit}</c>.</summary>
     public static string DeviceId(string link, int unit) => $"{link}-{unit.ToString(CultureInfo.InvariantCulture)}";
 
-    /// <summary>The metrics of the catalogue's tags, one device per unit, with aliases from 1 in that order.</summary>
+    /// <summary>
+    /// The metrics of the catalogue's tags, one device per unit. Aliases are numbered from 1: devices by link name
+    /// (ordinal) and unit number, within a device the tags by name (ordinal), the values of a tag of several in order.
+    /// The order is the names', not the configuration file's: .NET's configuration gives a section's keys sorted, and
+    /// tag files add their rows beside them.
+    /// </summary>
     public static IReadOnlyList<SparkplugDevice> FromCatalog(TagCatalog catalog)
     {
         ArgumentNullException.ThrowIfNull(catalog);
@@ -57,7 +62,7 @@ internal sealed class SparkplugDevice
         {
             var metrics = new List<SparkplugMetric>();
             var tags = new Dictionary<string, TagDefinition>(StringComparer.Ordinal);
-            foreach (TagDefinition tag in unit)
+            foreach (TagDefinition tag in unit.OrderBy(t => t.Name, StringComparer.Ordinal))
             {
                 tags[tag.Name] = tag;
                 SparkplugDataType type = SparkplugValues.DataTypeOf(tag.Type);

@@ -212,7 +212,7 @@ internal sealed class SparkplugEdgeNode : IHostedService, IAsyncDisposable
             catch (Exception e) when (e is not OutOfMemoryException)
             {
                 IsOnline = false;
-                (string reason, TimeSpan delay) = await _connection.FailedAsync(e, x => x.Message).ConfigureAwait(false);
+                (string reason, TimeSpan delay) = await _connection.FailedAsync(e).ConfigureAwait(false);
                 _node.TakeMessages(connected: false);
                 SparkplugLog.Unreachable(_logger, _connection.Broker, reason, delay.TotalSeconds);
                 if (!await _connection.DelayAsync(delay).ConfigureAwait(false))
