@@ -75,36 +75,10 @@ public sealed class WriteFailureTests : IDisposable
         logs.WithEvent(MqttLog.Events.WriteCrashed).Should().ContainSingle().Which.Level.Should().Be(LogLevel.Error);
     }
 
-    /// <summary>A line whose every write fails in a way no part of the gateway expects.</summary>
-    private sealed class FailingStream : Stream
+    /// <summary>A line whose every read and write fails in a way no part of the gateway expects.</summary>
+    private sealed class FailingStream() : PassThroughStream(Stream.Null)
     {
         public const string Secret = "an internal detail";
-
-        public override bool CanRead => true;
-
-        public override bool CanSeek => false;
-
-        public override bool CanWrite => true;
-
-        public override long Length => throw new NotSupportedException();
-
-        public override long Position
-        {
-            get => throw new NotSupportedException();
-            set => throw new NotSupportedException();
-        }
-
-        public override void Flush()
-        {
-        }
-
-        public override int Read(byte[] buffer, int offset, int count) => throw new NotSupportedException(Secret);
-
-        public override long Seek(long offset, SeekOrigin origin) => throw new NotSupportedException();
-
-        public override void SetLength(long value) => throw new NotSupportedException();
-
-        public override void Write(byte[] buffer, int offset, int count) => throw new NotSupportedException(Secret);
 
         public override ValueTask WriteAsync(ReadOnlyMemory<byte> buffer, CancellationToken cancellationToken = default)
             => throw new NotSupportedException(Secret);
