@@ -8,7 +8,7 @@ namespace OmronHostLink.Cli;
 
 /// <summary>
 /// Decodes captured frames without a PLC, with the library's own parsers: <see cref="FrameCheck"/> for shape, FCS and
-/// unit, <see cref="CModeHeaders"/> for header names, <see cref="CModeCommand.Parse"/> and <see cref="CModeResponse"/>
+/// unit, <see cref="CModeCommandTable"/> for header names, <see cref="CModeCommand.Parse"/> and <see cref="CModeResponse"/>
 /// for C-mode fields, <see cref="FinsMessage"/> and <see cref="FinsResponse"/> for FINS (parameters and answer data in
 /// <see cref="FinsExplainFields"/>). Without a direction from the user, <see cref="FrameDirection"/> tells it.
 /// </summary>
@@ -60,8 +60,8 @@ internal static class FrameExplainer
                 x.DirectionFrom = FrameExplanation.FromShape;
             }
 
-            x.Header = CModeHeaders.Initialize;
-            x.Name = CModeHeaders.Name(CModeHeaders.Initialize);
+            x.Header = CModeCommands.Initialize.Header;
+            x.Name = CModeCommands.Initialize.Name;
             x.Notes.Add("INITIALIZE carries no unit number and no FCS; no unit answers it.");
             return x;
         }
@@ -117,8 +117,8 @@ internal static class FrameExplainer
             FrameDirection.Recognise(x, header, text, table);
         }
 
-        CheckLength(x, frame.Length, first: true, fins: header == CModeHeaders.Fins);
-        switch ((header == CModeHeaders.Fins, x.IsResponse))
+        CheckLength(x, frame.Length, first: true, fins: header == CModeCommands.Fins.Header);
+        switch ((header == CModeCommands.Fins.Header, x.IsResponse))
         {
             case (true, true):
                 ExplainFinsResponse(x, text, check.Unit);
@@ -255,26 +255,31 @@ internal static class FrameExplainer
 
     private static void ExplainResponse(FrameExplanation x, string header, ReadOnlySpan<byte> text, CModeCommandTable table)
     {
-        switch (header)
+        if (header == CModeCommands.Test.Header)
         {
-            case CModeHeaders.Test:
-                x.Data = x.Text;
-                x.Field("echo", x.Text);
-                x.Notes.Add("A TS answer carries no end code: success is the text echoed unchanged.");
-                return;
-            case CModeHeaders.UndefinedCommand:
-                x.EndCodeMeaning = EndCode.UndefinedHeader.Meaning();
-                if (text.Length != 0)
-                {
-                    x.Problems.Add("An IC answer carries no text.");
-                }
+            x.Data = x.Text;
+            x.Field("echo", x.Text);
+            x.Notes.Add("A TS answer carries no end code: success is the text echoed unchanged.");
+            return;
+        }
 
-                return;
-            case CModeHeaders.Txd:
-                x.Data = x.Text;
-                x.Field("message", x.Text);
-                x.Notes.Add("EX is sent by the PLC (TXD in Host Link mode) and carries no end code.");
-                return;
+        if (header == CModeCommands.UndefinedCommand.Header)
+        {
+            x.EndCodeMeaning = EndCode.UndefinedHeader.Meaning();
+            if (text.Length != 0)
+            {
+                x.Problems.Add("An IC answer carries no text.");
+            }
+
+            return;
+        }
+
+        if (header == CModeCommands.Txd.Header)
+        {
+            x.Data = x.Text;
+            x.Field("message", x.Text);
+            x.Notes.Add("EX is sent by the PLC (TXD in Host Link mode) and carries no end code.");
+            return;
         }
 
         // A command with a sub-header (QQMR, QQIR) has it echoed before the end code.

@@ -66,7 +66,7 @@ public sealed class HostLinkResponder
         if (code == EndCode.UndefinedHeader)
         {
             var ic = new byte[CModeCommand.PrefixLength];
-            CModeResponse.WriteMessageWithoutEndCode(ic, unit, CModeHeaders.UndefinedCommand, default);
+            CModeResponse.WriteMessageWithoutEndCode(ic, unit, CModeCommands.UndefinedCommand.Header, default);
             return new SimResponse(ic, CModeCommand.PrefixLength, 1);
         }
 
@@ -110,7 +110,7 @@ public sealed class HostLinkResponder
             return EndCodeOnly(unit, header, EndCode.UndefinedHeader);
         }
 
-        if (CModeHeaders.Is(header, CModeHeaders.Fins))
+        if (CModeHeaders.Is(header, CModeCommands.Fins.Header))
         {
             return _fins.Respond(unit, text);
         }
@@ -157,12 +157,12 @@ public sealed class HostLinkResponder
     // FA only with FINS; the rest from the model's C-mode list (TS is answered by every model).
     private static bool Accepts(PlcModelProfile model, ReadOnlySpan<byte> header)
     {
-        if (CModeHeaders.Is(header, CModeHeaders.Fins))
+        if (CModeHeaders.Is(header, CModeCommands.Fins.Header))
         {
             return model.SupportsFins;
         }
 
-        return CModeHeaders.Is(header, CModeHeaders.Test) || model.AcceptsCMode(HeaderString(header));
+        return CModeHeaders.Is(header, CModeCommands.Test.Header) || model.AcceptsCMode(HeaderString(header));
     }
 
     // What the emulated model refuses of a command it has: memory it lacks (15, the manuals' "entry number data error"),
@@ -171,7 +171,7 @@ public sealed class HostLinkResponder
     {
         AreaReadCommand read when !ModelHas(model, read.Area, read.Begin, read.Count, read.Bank, forWrite: false) => EndCode.EntryNumberDataError,
         AreaWriteCommand write when !ModelHas(model, write.Area, write.Begin, write.Words.Length, write.Bank, forWrite: true) => EndCode.EntryNumberDataError,
-        _ when command.Header == CModeHeaders.ModelRead && model.ModelCode is null => EndCode.UndefinedHeader,
+        _ when command.Row == CModeCommands.ModelRead && model.ModelCode is null => EndCode.UndefinedHeader,
         _ => null,
     };
 

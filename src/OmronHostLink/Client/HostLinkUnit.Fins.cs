@@ -133,7 +133,7 @@ public partial class HostLinkUnit
         FinsHeader header = FinsHeader.Direct(Connection.NextSid(), Options.FinsResponseWait);
         var message = new byte[FinsMessage.GetCommandLength(header, command)];
         FinsMessage.WriteCommand(message, UnitNumber, header, command);
-        var request = new HostLinkRequest(UnitNumber, CModeHeaders.Fins, message, FinsMessage.GetExchange(message.Length, header, command.MaxResponseDataLength));
+        var request = new HostLinkRequest(UnitNumber, CModeCommands.Fins.Header, message, FinsMessage.GetExchange(message.Length, header, command.MaxResponseDataLength));
         return Connection.ExecuteAsync(
             request,
             RetriesFor(command.Effect),
