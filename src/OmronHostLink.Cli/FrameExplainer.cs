@@ -9,8 +9,8 @@ namespace OmronHostLink.Cli;
 /// <summary>
 /// Decodes captured frames without a PLC, with the library's own parsers: <see cref="FrameCheck"/> for shape, FCS and
 /// unit, <see cref="CModeCommandTable"/> for header names, <see cref="CModeCommand.Parse"/> and <see cref="CModeResponse"/>
-/// for C-mode fields, <see cref="FinsMessage"/> and <see cref="FinsResponse"/> for FINS (parameters and answer data in
-/// <see cref="FinsExplainFields"/>). Without a direction from the user, <see cref="FrameDirection"/> tells it.
+/// for C-mode fields, <see cref="FinsMessage"/> and <see cref="FinsResponse"/> for FINS (parameters and answer data from
+/// the rows of <see cref="FinsCommandTable"/>). Without a direction from the user, <see cref="FrameDirection"/> tells it.
 /// </summary>
 internal static class FrameExplainer
 {
@@ -43,9 +43,10 @@ internal static class FrameExplainer
     /// <param name="response">True for an answer, false for a command, null to tell from the frame where it can.</param>
     public static FrameExplanation Explain(string input, bool? response) => Explain(input, response, CModeCommandTable.Standard);
 
-    /// <summary>Explains one frame, looking C-mode headers up in <paramref name="table"/>.</summary>
-    internal static FrameExplanation Explain(string input, bool? response, CModeCommandTable table)
+    /// <summary>Explains one frame, looking C-mode headers up in <paramref name="table"/> and FINS codes in <paramref name="fins"/> (default: the standard FINS table).</summary>
+    internal static FrameExplanation Explain(string input, bool? response, CModeCommandTable table, FinsCommandTable? fins = null)
     {
+        fins ??= FinsCommandTable.Standard;
         byte[] typed = Normalise(input);
         var x = new FrameExplanation
         {
@@ -121,10 +122,10 @@ internal static class FrameExplainer
         switch ((header == CModeCommands.Fins.Header, x.IsResponse))
         {
             case (true, true):
-                ExplainFinsResponse(x, text, check.Unit);
+                ExplainFinsResponse(x, text, check.Unit, fins);
                 break;
             case (true, false):
-                ExplainFinsCommand(x, text, check.Unit);
+                ExplainFinsCommand(x, text, check.Unit, fins);
                 break;
             case (false, true):
                 ExplainResponse(x, header, text, table);
@@ -326,7 +327,7 @@ internal static class FrameExplainer
         }
     }
 
-    private static void ExplainFinsCommand(FrameExplanation x, ReadOnlySpan<byte> text, int unit)
+    private static void ExplainFinsCommand(FrameExplanation x, ReadOnlySpan<byte> text, int unit, FinsCommandTable table)
     {
         FinsCommandMessage message;
         try
@@ -340,12 +341,12 @@ internal static class FrameExplainer
         }
 
         x.Field("responseWaitMs", (long)message.Header.ResponseWaitTime.TotalMilliseconds);
-        FinsFields(x, message.Header, message.CommandCode);
+        FinsFields(x, message.Header, message.CommandCode, table);
         x.Field("parameters", Hex(message.Parameters.Span));
         FinsCommand command;
         try
         {
-            command = message.ToCommand();
+            command = message.ToCommand(table);
         }
         catch (FinsFormatException e)
         {
@@ -355,10 +356,10 @@ internal static class FrameExplainer
             return;
         }
 
-        FinsExplainFields.AddParameters(x, command);
+        command.Row.DescribeCommand?.Invoke(command, x);
     }
 
-    private static void ExplainFinsResponse(FrameExplanation x, ReadOnlySpan<byte> text, int unit)
+    private static void ExplainFinsResponse(FrameExplanation x, ReadOnlySpan<byte> text, int unit, FinsCommandTable table)
     {
         if (!EndCodeOf(x, text, out EndCode endCode))
         {
@@ -382,7 +383,7 @@ internal static class FrameExplainer
             return;
         }
 
-        FinsFields(x, response.Header, response.CommandCode);
+        FinsFields(x, response.Header, response.CommandCode, table);
         x.Field("responseCode", response.EndCode.ToString());
         x.Field("responseMeaning", response.EndCode.Meaning);
         x.Field("networkRelayError", response.EndCode.NetworkRelayError);
@@ -393,7 +394,7 @@ internal static class FrameExplainer
         {
             try
             {
-                FinsExplainFields.AddAnswerData(x, response.CommandCode, response.Data.Span);
+                table.Find(response.CommandCode)?.DescribeAnswer?.Invoke(response.Data.Span, x);
             }
             catch (HostLinkFrameException e)
             {
@@ -422,7 +423,7 @@ internal static class FrameExplainer
     }
 
     /// <summary>The FINS header fields (the network ones only for a network header), the command code and its name.</summary>
-    private static void FinsFields(FrameExplanation x, FinsHeader h, ushort command)
+    private static void FinsFields(FrameExplanation x, FinsHeader h, ushort command, FinsCommandTable table)
     {
         x.Field("icf", Hex(h.Icf));
         if (h.IsNetwork)
@@ -443,7 +444,7 @@ internal static class FrameExplainer
         x.Field("sa2", Hex(h.Sa2));
         x.Field("sid", Hex(h.Sid));
         x.Field("command", command.ToString("X4", CultureInfo.InvariantCulture));
-        x.Name = FinsCommandTable.Standard.Name(command) is { } name ? $"FINS {command:X4} {name}" : $"FINS {command:X4}";
+        x.Name = table.Name(command) is { } name ? $"FINS {command:X4} {name}" : $"FINS {command:X4}";
     }
 
     private static string Hex(byte value) => value.ToString("X2", CultureInfo.InvariantCulture);

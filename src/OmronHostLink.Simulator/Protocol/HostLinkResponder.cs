@@ -1,6 +1,7 @@
 using System.Text;
 using OmronHostLink.Protocol;
 using OmronHostLink.Protocol.CMode;
+using OmronHostLink.Protocol.Fins;
 
 namespace OmronHostLink.Simulator.Protocol;
 
@@ -31,13 +32,13 @@ public sealed class HostLinkResponder
     {
     }
 
-    /// <summary>Creates a responder that executes the commands of <paramref name="table"/>.</summary>
-    internal HostLinkResponder(VirtualPlc plc, CModeCommandTable table)
+    /// <summary>Creates a responder that executes the commands of <paramref name="table"/> and <paramref name="fins"/> (default: the standard FINS table).</summary>
+    internal HostLinkResponder(VirtualPlc plc, CModeCommandTable table, FinsCommandTable? fins = null)
     {
         ArgumentNullException.ThrowIfNull(plc);
         ArgumentNullException.ThrowIfNull(table);
         _plc = plc;
-        _fins = new FinsResponder(plc);
+        _fins = new FinsResponder(plc, fins ?? FinsCommandTable.Standard);
         Table = table;
     }
 
