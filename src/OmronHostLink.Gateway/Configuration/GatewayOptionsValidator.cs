@@ -110,9 +110,9 @@ public sealed class GatewayOptionsValidator : IValidateOptions<GatewayOptions>
 
     private static void ValidateGroup(string path, PollGroupOptions group, HostLinkCommandSet protocol, List<string> failures)
     {
-        if (group.Unit is < 0 or > HostLinkUnit.MaxUnitNumber)
+        if (HostLinkRules.CheckUnitNumber(group.Unit) is { } unitProblem)
         {
-            failures.Add($"{path}:Unit must be 0-{HostLinkUnit.MaxUnitNumber}; it is {group.Unit}.");
+            failures.Add($"{path}:Unit: {unitProblem}.");
         }
 
         if (group.Interval <= TimeSpan.Zero || group.Interval > LongestWait)

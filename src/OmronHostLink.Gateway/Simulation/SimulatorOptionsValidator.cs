@@ -40,9 +40,9 @@ public sealed class SimulatorOptionsValidator : IValidateOptions<SimulatorOption
         var failures = new List<string>();
         foreach (int unit in options.UnitsOrDefault)
         {
-            if (unit is < 0 or > HostLinkUnit.MaxUnitNumber)
+            if (HostLinkRules.CheckUnitNumber(unit) is { } unitProblem)
             {
-                failures.Add($"{root}:Units: unit numbers are 0-{HostLinkUnit.MaxUnitNumber}; {unit} is not.");
+                failures.Add($"{root}:Units: {unitProblem}.");
             }
         }
 

@@ -81,7 +81,7 @@ public sealed class HostLinkResponder
     /// <returns>The answer, or null when the PLC sends none (XZ; a message too short to carry a unit and header).</returns>
     public SimResponse? Respond(ReadOnlySpan<byte> message)
     {
-        if (message.Length < CModeCommand.PrefixLength || !MessagePrefix.TryReadUnit(message, out int unit) || unit > HostLinkUnit.MaxUnitNumber)
+        if (message.Length < CModeCommand.PrefixLength || !MessagePrefix.TryReadUnit(message, out int unit) || !HostLinkRules.IsUnitNumber(unit))
         {
             return null;
         }
@@ -96,9 +96,9 @@ public sealed class HostLinkResponder
     /// <returns>The answer, or null when the PLC sends none (XZ).</returns>
     public SimResponse? Respond(int unit, ReadOnlySpan<byte> header, ReadOnlySpan<byte> text)
     {
-        if ((uint)unit > HostLinkUnit.MaxUnitNumber)
+        if (HostLinkRules.CheckUnitNumber(unit) is { } unitProblem)
         {
-            throw new ArgumentOutOfRangeException(nameof(unit), unit, $"Unit numbers are 0-{HostLinkUnit.MaxUnitNumber}.");
+            throw new ArgumentOutOfRangeException(nameof(unit), unit, $"The unit: {unitProblem}.");
         }
 
         if (header.Length != 2)

@@ -137,8 +137,8 @@ public sealed class HostLinkClientOptions
         Check(nameof(ReadRetries), ReadRetries, SettingRules.Retries(ReadRetries));
         Check(nameof(WriteRetries), WriteRetries, SettingRules.Retries(WriteRetries));
         Check(nameof(FinsResponseWait), FinsResponseWait, SettingRules.FinsResponseWait(FinsResponseWait));
-        Check(nameof(CommandSet), CommandSet, SettingRules.CommandSet(CommandSet));
-        Check(nameof(WordOrder), WordOrder, SettingRules.WordOrder(WordOrder));
+        Check(nameof(CommandSet), CommandSet, SettingRules.Defined(CommandSet));
+        Check(nameof(WordOrder), WordOrder, SettingRules.Defined(WordOrder));
         Check(nameof(SendInterval), SendInterval, SettingRules.SendInterval(SendInterval));
 
         if (UnitSendIntervals is null)
@@ -166,10 +166,10 @@ public sealed class HostLinkClientOptions
 
         if (HostLinkCompatibleMode is { } compatibleMode)
         {
-            Check(nameof(HostLinkCompatibleMode), compatibleMode, SettingRules.CompatibleMode(compatibleMode));
+            Check(nameof(HostLinkCompatibleMode), compatibleMode, SettingRules.Defined(compatibleMode));
         }
 
-        if (Model is not null && SettingRules.Model(Model) is { } modelProblem)
+        if (Model is not null && PlcModelProfile.CheckSetting(Model) is { } modelProblem)
         {
             throw new ArgumentException($"Model {modelProblem}.", nameof(Model));
         }

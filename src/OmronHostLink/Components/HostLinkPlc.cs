@@ -119,7 +119,7 @@ public class HostLinkPlc : Component
     public SerialParity Parity
     {
         get => _parity;
-        set => Set(ref _parity, value, SettingRules.Parity);
+        set => Set(ref _parity, value, SettingRules.Defined);
     }
 
     /// <summary>Stop bits. Default Two.</summary>
@@ -129,7 +129,7 @@ public class HostLinkPlc : Component
     public SerialStopBits StopBits
     {
         get => _stopBits;
-        set => Set(ref _stopBits, value, SettingRules.StopBits);
+        set => Set(ref _stopBits, value, SettingRules.Defined);
     }
 
     /// <summary>A serial-device server's host name or address (with <see cref="TcpPort"/>) instead of a local port.</summary>
@@ -169,7 +169,7 @@ public class HostLinkPlc : Component
     public HostLinkCommandSet CommandSet
     {
         get => _commandSet;
-        set => Set(ref _commandSet, value, SettingRules.CommandSet);
+        set => Set(ref _commandSet, value, SettingRules.Defined);
     }
 
     /// <summary>How long the PLC may take to start answering, on top of the frame's wire time. Default 300 ms.</summary>

@@ -100,6 +100,15 @@ public sealed class PlcModelProfile
     /// <summary>Every profile, in the order of <c>docs/models.md</c>.</summary>
     public static IReadOnlyList<PlcModelProfile> All => PlcModelTable.Profiles;
 
+    /// <summary>
+    /// What is wrong with a model setting (a profile name or alias, or <c>auto</c> to ask the PLC with MM), in the
+    /// writer's words, or null when it names one; the rule of every model setting.
+    /// </summary>
+    internal static string? CheckSetting(string model)
+        => SettingRules.IsAutoModel(model) || TryParse(model, out _)
+            ? null
+            : $"'{model}' is not a known PLC model; use one of {KnownNames()}, or {SettingRules.AutoModel} to ask the PLC (MM)";
+
     /// <summary>Whether the model accepts the C-mode command with header <paramref name="header"/> (e.g. <c>QQ</c>).</summary>
     /// <param name="header">The two-character header code.</param>
     /// <returns>True when the model accepts it.</returns>

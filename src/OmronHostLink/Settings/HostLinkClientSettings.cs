@@ -154,14 +154,14 @@ public sealed class HostLinkClientSettings
         }
 
         Add(nameof(UnitNumber), UnitNumber is { } unit ? SettingRules.UnitNumber(unit) : null);
-        Add(nameof(CommandSet), CommandSet is { } commandSet ? SettingRules.CommandSet(commandSet) : null);
+        Add(nameof(CommandSet), CommandSet is { } commandSet ? SettingRules.Defined(commandSet) : null);
         Add(nameof(TurnaroundAllowance), TurnaroundAllowance is { } turnaround ? SettingRules.TurnaroundAllowance(turnaround) : null);
         Add(nameof(ReadRetries), ReadRetries is { } readRetries ? SettingRules.Retries(readRetries) : null);
         Add(nameof(WriteRetries), WriteRetries is { } writeRetries ? SettingRules.Retries(writeRetries) : null);
-        Add(nameof(WordOrder), WordOrder is { } order ? SettingRules.WordOrder(order) : null);
+        Add(nameof(WordOrder), WordOrder is { } order ? SettingRules.Defined(order) : null);
         Add(nameof(FinsResponseWait), FinsResponseWait is { } wait ? SettingRules.FinsResponseWait(wait) : null);
-        Add(nameof(Model), Model is { } model ? SettingRules.Model(model) : null);
-        Add(nameof(HostLinkCompatibleMode), HostLinkCompatibleMode is { } compatibleMode ? SettingRules.CompatibleMode(compatibleMode) : null);
+        Add(nameof(Model), Model is { } model ? PlcModelProfile.CheckSetting(model) : null);
+        Add(nameof(HostLinkCompatibleMode), HostLinkCompatibleMode is { } compatibleMode ? SettingRules.Defined(compatibleMode) : null);
         Add(nameof(SendInterval), SendInterval is { } gap ? SettingRules.SendInterval(gap) : null);
         return problems;
     }

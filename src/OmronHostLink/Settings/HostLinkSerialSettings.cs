@@ -88,10 +88,10 @@ public sealed class HostLinkSerialSettings : HostLinkEndpointSettings
         Add(nameof(PortName), PortName is null ? null : SettingRules.PortName(PortName));
         Add(nameof(BaudRate), BaudRate is { } baud ? SettingRules.BaudRate(baud) : null);
         Add(nameof(DataBits), DataBits is { } bits ? SettingRules.DataBits(bits) : null);
-        Add(nameof(Parity), Parity is { } parity ? SettingRules.Parity(parity) : null);
-        Add(nameof(StopBits), StopBits is { } stop ? SettingRules.StopBits(stop) : null);
-        Add(nameof(Handshake), Handshake is { } handshake ? SettingRules.Handshake(handshake) : null);
-        Add(nameof(RtsEnable), SettingRules.RtsEnable(RtsEnable == true, Handshake ?? SerialHandshake.None));
+        Add(nameof(Parity), Parity is { } parity ? SettingRules.Defined(parity) : null);
+        Add(nameof(StopBits), StopBits is { } stop ? SettingRules.Defined(stop) : null);
+        Add(nameof(Handshake), Handshake is { } handshake ? SettingRules.Defined(handshake) : null);
+        Add(nameof(RtsEnable), SettingRules.RtsEnable(RtsEnable == true, Handshake == SerialHandshake.RequestToSend));
         if (!IsChosen && client.Endpoints.Any(e => e.IsChosen))
         {
             // Behind a serial-device server only the line's speed and format matter here; the rest is the server's.

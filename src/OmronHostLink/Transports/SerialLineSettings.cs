@@ -58,10 +58,10 @@ public sealed class SerialLineSettings
         Check(nameof(PortName), SettingRules.PortName(PortName ?? ""));
         Check(nameof(BaudRate), SettingRules.BaudRate(BaudRate));
         Check(nameof(DataBits), SettingRules.DataBits(DataBits));
-        Check(nameof(Parity), SettingRules.Parity(Parity));
-        Check(nameof(StopBits), SettingRules.StopBits(StopBits));
-        Check(nameof(Handshake), SettingRules.Handshake(Handshake));
-        Check(nameof(RtsEnable), SettingRules.RtsEnable(RtsEnable, Handshake));
+        Check(nameof(Parity), SettingRules.Defined(Parity));
+        Check(nameof(StopBits), SettingRules.Defined(StopBits));
+        Check(nameof(Handshake), SettingRules.Defined(Handshake));
+        Check(nameof(RtsEnable), SettingRules.RtsEnable(RtsEnable, Handshake == SerialHandshake.RequestToSend));
     }
 
     private static void Check(string property, string? problem)

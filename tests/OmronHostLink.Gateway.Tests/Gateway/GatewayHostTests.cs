@@ -391,7 +391,7 @@ public sealed class GatewayHostTests(ITestOutputHelper output) : IDisposable
         { "HostLink:Links:plc:Groups:g:Address", "D100.03", "HostLink:Links:plc:Groups:g:Address D100.03 names a bit" },
         { "HostLink:Links:plc:Groups:g:Count", "20000", "HostLink:Links:plc:Groups:g:Count" },
         { "HostLink:Links:plc:Groups:g:Type", "flot", "HostLink:Links:plc:Groups:g:Type 'flot' is not one of word, bcd" },
-        { "HostLink:Links:plc:Groups:g:Unit", "32", "HostLink:Links:plc:Groups:g:Unit must be 0-31" },
+        { "HostLink:Links:plc:Groups:g:Unit", "32", "HostLink:Links:plc:Groups:g:Unit: 32 is not a unit number (0-31)" },
         { "HostLink:Links:plc:Groups:g:Interval", "00:00:00", "HostLink:Links:plc:Groups:g:Interval must be more than 0" },
         { "HostLink:Links:plc:Groups:g:Interval", "2.00:00:00", "HostLink:Links:plc:Groups:g:Interval must be more than 0 and at most 1 day; it is 2.00:00:00" },
         { "HostLink:Links:plc:Backoff:Max", "3.00:00:00", "HostLink:Links:plc:Backoff:Max must be at most 1 day; it is 3.00:00:00" },
