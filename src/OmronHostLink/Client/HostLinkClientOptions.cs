@@ -146,18 +146,7 @@ public sealed class HostLinkClientOptions
             throw new ArgumentException("UnitSendIntervals is required (empty for none).", nameof(UnitSendIntervals));
         }
 
-        foreach (KeyValuePair<int, TimeSpan> unit in UnitSendIntervals)
-        {
-            if (SettingRules.UnitNumber(unit.Key) is not null)
-            {
-                throw new ArgumentOutOfRangeException(nameof(UnitSendIntervals), unit.Key, $"UnitSendIntervals names unit {unit.Key}; Host Link unit numbers are 0-{HostLinkUnit.MaxUnitNumber}.");
-            }
-
-            if (SettingRules.SendInterval(unit.Value) is { } tooLong)
-            {
-                throw new ArgumentOutOfRangeException(nameof(UnitSendIntervals), unit.Value, $"UnitSendIntervals[{unit.Key}] {tooLong}.");
-            }
-        }
+        Check(nameof(UnitSendIntervals), UnitSendIntervals, SettingRules.UnitSendIntervals(UnitSendIntervals));
 
         if (TimeProvider is null)
         {

@@ -71,6 +71,25 @@ internal static class SettingRules
             ? $"{value.TotalMilliseconds.ToString("0.###", CultureInfo.InvariantCulture)} ms is not 0 to {LongestSendInterval.TotalSeconds.ToString(CultureInfo.InvariantCulture)} s"
             : null;
 
+    /// <summary>The per-unit send intervals: each key a unit number, each gap a <see cref="SendInterval"/>.</summary>
+    public static string? UnitSendIntervals(IDictionary<int, TimeSpan> intervals)
+    {
+        foreach (KeyValuePair<int, TimeSpan> unit in intervals)
+        {
+            if (HostLinkRules.CheckUnitNumber(unit.Key) is { } notUnit)
+            {
+                return $"names unit {unit.Key}: {notUnit}";
+            }
+
+            if (SendInterval(unit.Value) is { } tooLong)
+            {
+                return $"gives unit {unit.Key} {tooLong}";
+            }
+        }
+
+        return null;
+    }
+
     public static string? ConnectTimeout(TimeSpan value) => Positive(value, LongestConnectTimeout, "5 minutes");
 
     public static string? PortName(string name)

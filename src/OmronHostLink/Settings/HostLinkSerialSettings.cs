@@ -10,17 +10,39 @@ namespace OmronHostLink;
 /// </summary>
 public sealed class HostLinkSerialSettings : HostLinkEndpointSettings
 {
-    private static readonly SettingKeys<HostLinkSerialSettings> Keys = new("a serial line setting")
-    {
-        { nameof(PortName), (v, s) => s.PortName = v.Text() ?? s.PortName },
-        { nameof(BaudRate), (v, s) => s.BaudRate = v.Integer() ?? s.BaudRate },
-        { nameof(DataBits), (v, s) => s.DataBits = v.Integer() ?? s.DataBits },
-        { nameof(Parity), (v, s) => s.Parity = v.Choice<SerialParity>() ?? s.Parity },
-        { nameof(StopBits), (v, s) => s.StopBits = v.Choice(("1", SerialStopBits.One), ("2", SerialStopBits.Two)) ?? s.StopBits },
-        { nameof(Handshake), (v, s) => s.Handshake = v.Choice<SerialHandshake>() ?? s.Handshake },
-        { nameof(DtrEnable), (v, s) => s.DtrEnable = v.Boolean() ?? s.DtrEnable },
-        { nameof(RtsEnable), (v, s) => s.RtsEnable = v.Boolean() ?? s.RtsEnable },
-    };
+    /// <summary>The BaudRate setting.</summary>
+    internal static readonly Setting<HostLinkSerialSettings, SerialLineSettings, int?> BaudRateSetting =
+        Value(nameof(BaudRate), s => s.BaudRate, (s, v) => s.BaudRate = v, v => v.Integer(), SettingRules.BaudRate, o => o.BaudRate, (o, v) => o.BaudRate = v);
+
+    /// <summary>The DataBits setting.</summary>
+    internal static readonly Setting<HostLinkSerialSettings, SerialLineSettings, int?> DataBitsSetting =
+        Value(nameof(DataBits), s => s.DataBits, (s, v) => s.DataBits = v, v => v.Integer(), SettingRules.DataBits, o => o.DataBits, (o, v) => o.DataBits = v);
+
+    /// <summary>The Parity setting.</summary>
+    internal static readonly Setting<HostLinkSerialSettings, SerialLineSettings, SerialParity?> ParitySetting =
+        Value(nameof(Parity), s => s.Parity, (s, v) => s.Parity = v, v => v.Choice<SerialParity>(), SettingRules.Defined, o => o.Parity, (o, v) => o.Parity = v);
+
+    /// <summary>The StopBits setting.</summary>
+    internal static readonly Setting<HostLinkSerialSettings, SerialLineSettings, SerialStopBits?> StopBitsSetting =
+        Value(nameof(StopBits), s => s.StopBits, (s, v) => s.StopBits = v, v => v.Choice(("1", SerialStopBits.One), ("2", SerialStopBits.Two)), SettingRules.Defined, o => o.StopBits, (o, v) => o.StopBits = v);
+
+    /// <summary>
+    /// The serial line's settings, each declared once: key, reader, rule and how it applies to
+    /// <see cref="SerialLineSettings"/> (whose new instance holds the default, Omron's 9600 7E2).
+    /// </summary>
+    internal static readonly Setting<HostLinkSerialSettings, SerialLineSettings>[] Declared =
+    [
+        Reference(nameof(PortName), s => s.PortName, (s, v) => s.PortName = v, v => v.Text(), SettingRules.PortName, o => o.PortName, (o, v) => o.PortName = v),
+        BaudRateSetting,
+        DataBitsSetting,
+        ParitySetting,
+        StopBitsSetting,
+        Value(nameof(Handshake), s => s.Handshake, (s, v) => s.Handshake = v, v => v.Choice<SerialHandshake>(), SettingRules.Defined, o => o.Handshake, (o, v) => o.Handshake = v),
+        Value(nameof(DtrEnable), s => s.DtrEnable, (s, v) => s.DtrEnable = v, v => v.Boolean(), null, o => o.DtrEnable, (o, v) => o.DtrEnable = v),
+        Value(nameof(RtsEnable), s => s.RtsEnable, (s, v) => s.RtsEnable = v, v => v.Boolean(), null, o => o.RtsEnable, (o, v) => o.RtsEnable = v),
+    ];
+
+    private static readonly SettingKeys<HostLinkSerialSettings> Keys = SettingKeys<HostLinkSerialSettings>.Of("a serial line setting", Declared);
 
     /// <summary>The local port: <c>COM3</c>, <c>/dev/ttyUSB0</c>, or any device path or link to one.</summary>
     public string? PortName { get; set; }
@@ -62,14 +84,11 @@ public sealed class HostLinkSerialSettings : HostLinkEndpointSettings
     internal SerialLineSettings ToLineSettings()
     {
         var line = new SerialLineSettings();
-        line.PortName = PortName ?? line.PortName;
-        line.BaudRate = BaudRate ?? line.BaudRate;
-        line.DataBits = DataBits ?? line.DataBits;
-        line.Parity = Parity ?? line.Parity;
-        line.StopBits = StopBits ?? line.StopBits;
-        line.Handshake = Handshake ?? line.Handshake;
-        line.DtrEnable = DtrEnable ?? line.DtrEnable;
-        line.RtsEnable = RtsEnable ?? line.RtsEnable;
+        foreach (Setting<HostLinkSerialSettings, SerialLineSettings> setting in Declared)
+        {
+            setting.Apply(this, line);
+        }
+
         return line;
     }
 
@@ -85,12 +104,11 @@ public sealed class HostLinkSerialSettings : HostLinkEndpointSettings
             }
         }
 
-        Add(nameof(PortName), PortName is null ? null : SettingRules.PortName(PortName));
-        Add(nameof(BaudRate), BaudRate is { } baud ? SettingRules.BaudRate(baud) : null);
-        Add(nameof(DataBits), DataBits is { } bits ? SettingRules.DataBits(bits) : null);
-        Add(nameof(Parity), Parity is { } parity ? SettingRules.Defined(parity) : null);
-        Add(nameof(StopBits), StopBits is { } stop ? SettingRules.Defined(stop) : null);
-        Add(nameof(Handshake), Handshake is { } handshake ? SettingRules.Defined(handshake) : null);
+        foreach (Setting<HostLinkSerialSettings, SerialLineSettings> setting in Declared)
+        {
+            Add(setting.Key, setting.Check(this));
+        }
+
         Add(nameof(RtsEnable), SettingRules.RtsEnable(RtsEnable == true, Handshake == SerialHandshake.RequestToSend));
         if (!IsChosen && client.Endpoints.Any(e => e.IsChosen))
         {
@@ -103,4 +121,26 @@ public sealed class HostLinkSerialSettings : HostLinkEndpointSettings
     }
 
     internal override IHostLinkTransport CreateTransport(HostLinkClientSettings client) => new SerialTransport(ToLineSettings());
+
+    private static Setting<HostLinkSerialSettings, SerialLineSettings, T?> Value<T>(
+        string key,
+        Func<HostLinkSerialSettings, T?> get,
+        Action<HostLinkSerialSettings, T?> set,
+        Func<SettingValue, T?> read,
+        Func<T, string?>? rule,
+        Func<SerialLineSettings, T?> current,
+        Action<SerialLineSettings, T> apply)
+        where T : struct
+        => Setting.Of(key, get, set, read, rule, current, apply);
+
+    private static Setting<HostLinkSerialSettings, SerialLineSettings, T> Reference<T>(
+        string key,
+        Func<HostLinkSerialSettings, T?> get,
+        Action<HostLinkSerialSettings, T?> set,
+        Func<SettingValue, T?> read,
+        Func<T, string?>? rule,
+        Func<SerialLineSettings, T?> current,
+        Action<SerialLineSettings, T> apply)
+        where T : class
+        => Setting.OfReference(key, get, set, read, rule, current, apply);
 }
