@@ -1,3 +1,4 @@
+using ClientSetting = OmronHostLink.Declare<OmronHostLink.HostLinkClientSettings, OmronHostLink.HostLinkClientOptions>;
 using OmronHostLink.Transports;
 
 namespace OmronHostLink;
@@ -20,23 +21,23 @@ public sealed class HostLinkClientSettings
 {
     /// <summary>The UnitNumber setting.</summary>
     internal static readonly Setting<HostLinkClientSettings, HostLinkClientOptions, int?> UnitNumberSetting =
-        Value(nameof(UnitNumber), s => s.UnitNumber, (s, v) => s.UnitNumber = v, v => v.Integer(), SettingRules.UnitNumber, o => o.UnitNumber, (o, v) => o.UnitNumber = v);
+        ClientSetting.Value(nameof(UnitNumber), s => s.UnitNumber, (s, v) => s.UnitNumber = v, v => v.Integer(), SettingRules.UnitNumber, o => o.UnitNumber, (o, v) => o.UnitNumber = v);
 
     /// <summary>The CommandSet setting.</summary>
     internal static readonly Setting<HostLinkClientSettings, HostLinkClientOptions, HostLinkCommandSet?> CommandSetSetting =
-        Value(nameof(CommandSet), s => s.CommandSet, (s, v) => s.CommandSet = v, v => v.Choice<HostLinkCommandSet>(), SettingRules.Defined, o => o.CommandSet, (o, v) => o.CommandSet = v).Renamed("Protocol");
+        ClientSetting.Value(nameof(CommandSet), s => s.CommandSet, (s, v) => s.CommandSet = v, v => v.Choice<HostLinkCommandSet>(), SettingRules.Defined, o => o.CommandSet, (o, v) => o.CommandSet = v).Renamed("Protocol");
 
     /// <summary>The TurnaroundAllowance setting.</summary>
     internal static readonly Setting<HostLinkClientSettings, HostLinkClientOptions, TimeSpan?> TurnaroundAllowanceSetting =
-        Value(nameof(TurnaroundAllowance), s => s.TurnaroundAllowance, (s, v) => s.TurnaroundAllowance = v, v => v.Duration(), SettingRules.TurnaroundAllowance, o => o.TurnaroundAllowance, (o, v) => o.TurnaroundAllowance = v);
+        ClientSetting.Value(nameof(TurnaroundAllowance), s => s.TurnaroundAllowance, (s, v) => s.TurnaroundAllowance = v, v => v.Duration(), SettingRules.TurnaroundAllowance, o => o.TurnaroundAllowance, (o, v) => o.TurnaroundAllowance = v);
 
     /// <summary>The ReadRetries setting.</summary>
     internal static readonly Setting<HostLinkClientSettings, HostLinkClientOptions, int?> ReadRetriesSetting =
-        Value(nameof(ReadRetries), s => s.ReadRetries, (s, v) => s.ReadRetries = v, v => v.Integer(), SettingRules.Retries, o => o.ReadRetries, (o, v) => o.ReadRetries = v);
+        ClientSetting.Value(nameof(ReadRetries), s => s.ReadRetries, (s, v) => s.ReadRetries = v, v => v.Integer(), SettingRules.Retries, o => o.ReadRetries, (o, v) => o.ReadRetries = v);
 
     /// <summary>The AllowReadModifyWriteBits setting.</summary>
     internal static readonly Setting<HostLinkClientSettings, HostLinkClientOptions, bool?> AllowReadModifyWriteBitsSetting =
-        Value(nameof(AllowReadModifyWriteBits), s => s.AllowReadModifyWriteBits, (s, v) => s.AllowReadModifyWriteBits = v, v => v.Boolean(), null, o => o.AllowReadModifyWriteBits, (o, v) => o.AllowReadModifyWriteBits = v);
+        ClientSetting.Value(nameof(AllowReadModifyWriteBits), s => s.AllowReadModifyWriteBits, (s, v) => s.AllowReadModifyWriteBits = v, v => v.Boolean(), null, o => o.AllowReadModifyWriteBits, (o, v) => o.AllowReadModifyWriteBits = v);
 
     /// <summary>
     /// The client settings, each declared once: key, reader, rule and how it applies to <see cref="HostLinkClientOptions"/>
@@ -50,14 +51,14 @@ public sealed class HostLinkClientSettings
         CommandSetSetting,
         TurnaroundAllowanceSetting,
         ReadRetriesSetting,
-        Value(nameof(WriteRetries), s => s.WriteRetries, (s, v) => s.WriteRetries = v, v => v.Integer(), SettingRules.Retries, o => o.WriteRetries, (o, v) => o.WriteRetries = v),
-        Value(nameof(WordOrder), s => s.WordOrder, (s, v) => s.WordOrder = v, v => v.Choice<WordOrder>(), SettingRules.Defined, o => o.WordOrder, (o, v) => o.WordOrder = v),
-        Value(nameof(LocalEcho), s => s.LocalEcho, (s, v) => s.LocalEcho = v, v => v.Boolean(), null, o => o.LocalEcho, (o, v) => o.LocalEcho = v),
-        Value(nameof(FinsResponseWait), s => s.FinsResponseWait, (s, v) => s.FinsResponseWait = v, v => v.Integer(), SettingRules.FinsResponseWait, o => o.FinsResponseWait, (o, v) => o.FinsResponseWait = v),
+        ClientSetting.Value(nameof(WriteRetries), s => s.WriteRetries, (s, v) => s.WriteRetries = v, v => v.Integer(), SettingRules.Retries, o => o.WriteRetries, (o, v) => o.WriteRetries = v),
+        ClientSetting.Value(nameof(WordOrder), s => s.WordOrder, (s, v) => s.WordOrder = v, v => v.Choice<WordOrder>(), SettingRules.Defined, o => o.WordOrder, (o, v) => o.WordOrder = v),
+        ClientSetting.Value(nameof(LocalEcho), s => s.LocalEcho, (s, v) => s.LocalEcho = v, v => v.Boolean(), null, o => o.LocalEcho, (o, v) => o.LocalEcho = v),
+        ClientSetting.Value(nameof(FinsResponseWait), s => s.FinsResponseWait, (s, v) => s.FinsResponseWait = v, v => v.Integer(), SettingRules.FinsResponseWait, o => o.FinsResponseWait, (o, v) => o.FinsResponseWait = v),
         AllowReadModifyWriteBitsSetting,
-        Value(nameof(UseCompoundRead), s => s.UseCompoundRead, (s, v) => s.UseCompoundRead = v, v => v.Boolean(), null, o => o.UseCompoundRead, (o, v) => o.UseCompoundRead = v),
-        Reference(nameof(Model), s => s.Model, (s, v) => s.Model = v, v => v.Text(), PlcModelProfile.CheckSetting, o => o.Model, (o, v) => o.Model = v),
-        Value(
+        ClientSetting.Value(nameof(UseCompoundRead), s => s.UseCompoundRead, (s, v) => s.UseCompoundRead = v, v => v.Boolean(), null, o => o.UseCompoundRead, (o, v) => o.UseCompoundRead = v),
+        ClientSetting.Reference(nameof(Model), s => s.Model, (s, v) => s.Model = v, v => v.Text(), PlcModelProfile.CheckSetting, o => o.Model, (o, v) => o.Model = v),
+        ClientSetting.Value(
             nameof(HostLinkCompatibleMode),
             s => s.HostLinkCompatibleMode,
             (s, v) => s.HostLinkCompatibleMode = v,
@@ -69,8 +70,8 @@ public sealed class HostLinkClientSettings
             SettingRules.Defined,
             o => o.HostLinkCompatibleMode,
             (o, v) => o.HostLinkCompatibleMode = v),
-        Value(nameof(SendInterval), s => s.SendInterval, (s, v) => s.SendInterval = v, v => v.Duration(), SettingRules.SendInterval, o => o.SendInterval, (o, v) => o.SendInterval = v),
-        Reference(nameof(UnitSendIntervals), s => s.UnitSendIntervals, (s, v) => s.UnitSendIntervals = v, v => v.UnitDurations(), SettingRules.UnitSendIntervals, o => o.UnitSendIntervals, (o, v) => o.UnitSendIntervals = new Dictionary<int, TimeSpan>(v)),
+        ClientSetting.Value(nameof(SendInterval), s => s.SendInterval, (s, v) => s.SendInterval = v, v => v.Duration(), SettingRules.SendInterval, o => o.SendInterval, (o, v) => o.SendInterval = v),
+        ClientSetting.Reference(nameof(UnitSendIntervals), s => s.UnitSendIntervals, (s, v) => s.UnitSendIntervals = v, v => v.UnitDurations(), SettingRules.UnitSendIntervals, o => o.UnitSendIntervals, (o, v) => o.UnitSendIntervals = new Dictionary<int, TimeSpan>(v)),
     ];
 
     private static readonly SettingKeys<HostLinkClientSettings> Keys = SettingKeys<HostLinkClientSettings>.Of(
@@ -278,26 +279,4 @@ public sealed class HostLinkClientSettings
             .SelectMany(e => e.KeyNames.Select(k => e.Key + ":" + k))
             .FirstOrDefault(path => path.EndsWith(":" + key, StringComparison.OrdinalIgnoreCase));
     }
-
-    private static Setting<HostLinkClientSettings, HostLinkClientOptions, T?> Value<T>(
-        string key,
-        Func<HostLinkClientSettings, T?> get,
-        Action<HostLinkClientSettings, T?> set,
-        Func<SettingValue, T?> read,
-        Func<T, string?>? rule,
-        Func<HostLinkClientOptions, T?> current,
-        Action<HostLinkClientOptions, T> apply)
-        where T : struct
-        => Setting.Of(key, get, set, read, rule, current, apply);
-
-    private static Setting<HostLinkClientSettings, HostLinkClientOptions, T> Reference<T>(
-        string key,
-        Func<HostLinkClientSettings, T?> get,
-        Action<HostLinkClientSettings, T?> set,
-        Func<SettingValue, T?> read,
-        Func<T, string?>? rule,
-        Func<HostLinkClientOptions, T?> current,
-        Action<HostLinkClientOptions, T> apply)
-        where T : class
-        => Setting.OfReference(key, get, set, read, rule, current, apply);
 }

@@ -1,3 +1,4 @@
+using LineSetting = OmronHostLink.Declare<OmronHostLink.HostLinkSerialSettings, OmronHostLink.Transports.SerialLineSettings>;
 using OmronHostLink.Transports;
 
 namespace OmronHostLink;
@@ -12,19 +13,19 @@ public sealed class HostLinkSerialSettings : HostLinkEndpointSettings
 {
     /// <summary>The BaudRate setting.</summary>
     internal static readonly Setting<HostLinkSerialSettings, SerialLineSettings, int?> BaudRateSetting =
-        Value(nameof(BaudRate), s => s.BaudRate, (s, v) => s.BaudRate = v, v => v.Integer(), SettingRules.BaudRate, o => o.BaudRate, (o, v) => o.BaudRate = v);
+        LineSetting.Value(nameof(BaudRate), s => s.BaudRate, (s, v) => s.BaudRate = v, v => v.Integer(), SettingRules.BaudRate, o => o.BaudRate, (o, v) => o.BaudRate = v);
 
     /// <summary>The DataBits setting.</summary>
     internal static readonly Setting<HostLinkSerialSettings, SerialLineSettings, int?> DataBitsSetting =
-        Value(nameof(DataBits), s => s.DataBits, (s, v) => s.DataBits = v, v => v.Integer(), SettingRules.DataBits, o => o.DataBits, (o, v) => o.DataBits = v);
+        LineSetting.Value(nameof(DataBits), s => s.DataBits, (s, v) => s.DataBits = v, v => v.Integer(), SettingRules.DataBits, o => o.DataBits, (o, v) => o.DataBits = v);
 
     /// <summary>The Parity setting.</summary>
     internal static readonly Setting<HostLinkSerialSettings, SerialLineSettings, SerialParity?> ParitySetting =
-        Value(nameof(Parity), s => s.Parity, (s, v) => s.Parity = v, v => v.Choice<SerialParity>(), SettingRules.Defined, o => o.Parity, (o, v) => o.Parity = v);
+        LineSetting.Value(nameof(Parity), s => s.Parity, (s, v) => s.Parity = v, v => v.Choice<SerialParity>(), SettingRules.Defined, o => o.Parity, (o, v) => o.Parity = v);
 
     /// <summary>The StopBits setting.</summary>
     internal static readonly Setting<HostLinkSerialSettings, SerialLineSettings, SerialStopBits?> StopBitsSetting =
-        Value(nameof(StopBits), s => s.StopBits, (s, v) => s.StopBits = v, v => v.Choice(("1", SerialStopBits.One), ("2", SerialStopBits.Two)), SettingRules.Defined, o => o.StopBits, (o, v) => o.StopBits = v);
+        LineSetting.Value(nameof(StopBits), s => s.StopBits, (s, v) => s.StopBits = v, v => v.Choice(("1", SerialStopBits.One), ("2", SerialStopBits.Two)), SettingRules.Defined, o => o.StopBits, (o, v) => o.StopBits = v);
 
     /// <summary>
     /// The serial line's settings, each declared once: key, reader, rule and how it applies to
@@ -32,14 +33,14 @@ public sealed class HostLinkSerialSettings : HostLinkEndpointSettings
     /// </summary>
     internal static readonly Setting<HostLinkSerialSettings, SerialLineSettings>[] Declared =
     [
-        Reference(nameof(PortName), s => s.PortName, (s, v) => s.PortName = v, v => v.Text(), SettingRules.PortName, o => o.PortName, (o, v) => o.PortName = v),
+        LineSetting.Reference(nameof(PortName), s => s.PortName, (s, v) => s.PortName = v, v => v.Text(), SettingRules.PortName, o => o.PortName, (o, v) => o.PortName = v),
         BaudRateSetting,
         DataBitsSetting,
         ParitySetting,
         StopBitsSetting,
-        Value(nameof(Handshake), s => s.Handshake, (s, v) => s.Handshake = v, v => v.Choice<SerialHandshake>(), SettingRules.Defined, o => o.Handshake, (o, v) => o.Handshake = v),
-        Value(nameof(DtrEnable), s => s.DtrEnable, (s, v) => s.DtrEnable = v, v => v.Boolean(), null, o => o.DtrEnable, (o, v) => o.DtrEnable = v),
-        Value(nameof(RtsEnable), s => s.RtsEnable, (s, v) => s.RtsEnable = v, v => v.Boolean(), null, o => o.RtsEnable, (o, v) => o.RtsEnable = v),
+        LineSetting.Value(nameof(Handshake), s => s.Handshake, (s, v) => s.Handshake = v, v => v.Choice<SerialHandshake>(), SettingRules.Defined, o => o.Handshake, (o, v) => o.Handshake = v),
+        LineSetting.Value(nameof(DtrEnable), s => s.DtrEnable, (s, v) => s.DtrEnable = v, v => v.Boolean(), null, o => o.DtrEnable, (o, v) => o.DtrEnable = v),
+        LineSetting.Value(nameof(RtsEnable), s => s.RtsEnable, (s, v) => s.RtsEnable = v, v => v.Boolean(), null, o => o.RtsEnable, (o, v) => o.RtsEnable = v),
     ];
 
     private static readonly SettingKeys<HostLinkSerialSettings> Keys = SettingKeys<HostLinkSerialSettings>.Of("a serial line setting", Declared);
@@ -121,26 +122,4 @@ public sealed class HostLinkSerialSettings : HostLinkEndpointSettings
     }
 
     internal override IHostLinkTransport CreateTransport(HostLinkClientSettings client) => new SerialTransport(ToLineSettings());
-
-    private static Setting<HostLinkSerialSettings, SerialLineSettings, T?> Value<T>(
-        string key,
-        Func<HostLinkSerialSettings, T?> get,
-        Action<HostLinkSerialSettings, T?> set,
-        Func<SettingValue, T?> read,
-        Func<T, string?>? rule,
-        Func<SerialLineSettings, T?> current,
-        Action<SerialLineSettings, T> apply)
-        where T : struct
-        => Setting.Of(key, get, set, read, rule, current, apply);
-
-    private static Setting<HostLinkSerialSettings, SerialLineSettings, T> Reference<T>(
-        string key,
-        Func<HostLinkSerialSettings, T?> get,
-        Action<HostLinkSerialSettings, T?> set,
-        Func<SettingValue, T?> read,
-        Func<T, string?>? rule,
-        Func<SerialLineSettings, T?> current,
-        Action<SerialLineSettings, T> apply)
-        where T : class
-        => Setting.OfReference(key, get, set, read, rule, current, apply);
 }

@@ -83,11 +83,12 @@ internal sealed class Setting<TSettings, TOptions, TValue> : Setting<TSettings, 
     }
 }
 
-/// <summary>Declares the settings of one section with short forms for value and reference types.</summary>
-internal static class Setting
+/// <summary>Declares the settings of one section (a file aliases it: <c>using ClientSetting = Declare&lt;…&gt;</c>).</summary>
+internal static class Declare<TSettings, TOptions>
+    where TOptions : new()
 {
     /// <summary>A setting of a value type (<c>int?</c>, <c>bool?</c>, <c>TimeSpan?</c>, an enum); the options' value may be null (no default).</summary>
-    public static Setting<TSettings, TOptions, T?> Of<TSettings, TOptions, T>(
+    public static Setting<TSettings, TOptions, T?> Value<T>(
         string key,
         Func<TSettings, T?> get,
         Action<TSettings, T?> set,
@@ -95,12 +96,11 @@ internal static class Setting
         Func<T, string?>? rule,
         Func<TOptions, T?> current,
         Action<TOptions, T> apply)
-        where TOptions : new()
         where T : struct
         => new(key, get, set, read, v => rule?.Invoke(v!.Value), current, (o, v) => apply(o, v!.Value));
 
     /// <summary>A setting of a reference type (text, a map); the options' value may be null (no default).</summary>
-    public static Setting<TSettings, TOptions, T> OfReference<TSettings, TOptions, T>(
+    public static Setting<TSettings, TOptions, T> Reference<T>(
         string key,
         Func<TSettings, T?> get,
         Action<TSettings, T?> set,
@@ -108,7 +108,6 @@ internal static class Setting
         Func<T, string?>? rule,
         Func<TOptions, T?> current,
         Action<TOptions, T> apply)
-        where TOptions : new()
         where T : class
         => new(key, get, set, read, v => rule?.Invoke(v), o => current(o)!, apply);
 }
