@@ -70,9 +70,9 @@ public sealed class VirtualPlcOptions
 
         foreach (int unit in Units)
         {
-            if ((uint)unit > HostLinkUnit.MaxUnitNumber)
+            if (HostLinkRules.CheckUnitNumber(unit) is { } unitProblem)
             {
-                throw new ArgumentException($"Unit numbers are 0-{HostLinkUnit.MaxUnitNumber}; {unit} is not.", nameof(Units));
+                throw new ArgumentException($"Units: {unitProblem}.", nameof(Units));
             }
         }
 

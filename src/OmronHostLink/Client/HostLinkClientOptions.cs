@@ -137,8 +137,8 @@ public sealed class HostLinkClientOptions
         Check(nameof(ReadRetries), ReadRetries, SettingRules.Retries(ReadRetries));
         Check(nameof(WriteRetries), WriteRetries, SettingRules.Retries(WriteRetries));
         Check(nameof(FinsResponseWait), FinsResponseWait, SettingRules.FinsResponseWait(FinsResponseWait));
-        Check(nameof(CommandSet), CommandSet, SettingRules.CommandSet(CommandSet));
-        Check(nameof(WordOrder), WordOrder, SettingRules.WordOrder(WordOrder));
+        Check(nameof(CommandSet), CommandSet, SettingRules.Defined(CommandSet));
+        Check(nameof(WordOrder), WordOrder, SettingRules.Defined(WordOrder));
         Check(nameof(SendInterval), SendInterval, SettingRules.SendInterval(SendInterval));
 
         if (UnitSendIntervals is null)
@@ -146,18 +146,7 @@ public sealed class HostLinkClientOptions
             throw new ArgumentException("UnitSendIntervals is required (empty for none).", nameof(UnitSendIntervals));
         }
 
-        foreach (KeyValuePair<int, TimeSpan> unit in UnitSendIntervals)
-        {
-            if (SettingRules.UnitNumber(unit.Key) is not null)
-            {
-                throw new ArgumentOutOfRangeException(nameof(UnitSendIntervals), unit.Key, $"UnitSendIntervals names unit {unit.Key}; Host Link unit numbers are 0-{HostLinkUnit.MaxUnitNumber}.");
-            }
-
-            if (SettingRules.SendInterval(unit.Value) is { } tooLong)
-            {
-                throw new ArgumentOutOfRangeException(nameof(UnitSendIntervals), unit.Value, $"UnitSendIntervals[{unit.Key}] {tooLong}.");
-            }
-        }
+        Check(nameof(UnitSendIntervals), UnitSendIntervals, SettingRules.UnitSendIntervals(UnitSendIntervals));
 
         if (TimeProvider is null)
         {
@@ -166,10 +155,10 @@ public sealed class HostLinkClientOptions
 
         if (HostLinkCompatibleMode is { } compatibleMode)
         {
-            Check(nameof(HostLinkCompatibleMode), compatibleMode, SettingRules.CompatibleMode(compatibleMode));
+            Check(nameof(HostLinkCompatibleMode), compatibleMode, SettingRules.Defined(compatibleMode));
         }
 
-        if (Model is not null && SettingRules.Model(Model) is { } modelProblem)
+        if (Model is not null && PlcModelProfile.CheckSetting(Model) is { } modelProblem)
         {
             throw new ArgumentException($"Model {modelProblem}.", nameof(Model));
         }

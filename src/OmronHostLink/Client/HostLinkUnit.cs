@@ -14,7 +14,7 @@ namespace OmronHostLink;
 public partial class HostLinkUnit
 {
     /// <summary>The highest unit number Host Link addresses (the lowest is 0).</summary>
-    public const int MaxUnitNumber = 31;
+    public const int MaxUnitNumber = HostLinkRules.MaxUnitNumber;
 
     internal readonly HostLinkConnection Connection;
     internal readonly HostLinkClientOptions Options;

@@ -10,9 +10,6 @@ namespace OmronHostLink;
 /// </summary>
 internal sealed class UnitModels
 {
-    /// <summary>The <see cref="HostLinkClientOptions.Model"/> value that asks each unit with MM.</summary>
-    public const string Auto = "auto";
-
     private readonly PlcModelProfile? _configured;
     private readonly bool _detect;
     private readonly Task<PlcModelProfile?>?[] _detected = new Task<PlcModelProfile?>?[32];
@@ -22,7 +19,7 @@ internal sealed class UnitModels
     public UnitModels(string? model, ILoggerFactory? loggerFactory = null)
     {
         _logger = loggerFactory?.CreateLogger("OmronHostLink") ?? NullLogger.Instance;
-        if (string.Equals(model, Auto, StringComparison.OrdinalIgnoreCase))
+        if (SettingRules.IsAutoModel(model))
         {
             _detect = true;
         }

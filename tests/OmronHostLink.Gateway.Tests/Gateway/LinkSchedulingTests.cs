@@ -89,7 +89,6 @@ public sealed class LinkSchedulingTests(ITestOutputHelper output) : IAsyncLifeti
             logs = l;
             // Each group of unit 5 fails once when the outage begins (x, y, z), then only one of them tries again.
             await Eventually(() => OfUnit5(l, GatewayLog.Events.UnitDown).Count == 1 && OfUnit5(l, GatewayLog.Events.UnitStillDown).Count >= 3, l);
-            await Task.Delay(TimeSpan.FromSeconds(1));
             before = Reads().Count;
             int attempts = OfUnit5(l, GatewayLog.Events.UnitStillDown).Count;
             // Three more attempts on the silent unit, and unit 0 polled meanwhile: counted, not timed, so a busy
@@ -160,17 +159,6 @@ public sealed class LinkSchedulingTests(ITestOutputHelper output) : IAsyncLifeti
         return clock.Elapsed;
     }
 
-    private static async Task Eventually(Func<bool> condition, CapturingLoggerProvider logs)
-    {
-        var clock = Stopwatch.StartNew();
-        while (!condition())
-        {
-            if (clock.Elapsed > TimeSpan.FromSeconds(15))
-            {
-                throw new Xunit.Sdk.XunitException($"Timed out. Log:{Environment.NewLine}{logs.Dump()}");
-            }
-
-            await Task.Delay(10);
-        }
-    }
+    private static Task Eventually(Func<bool> condition, CapturingLoggerProvider logs)
+        => OmronHostLink.Testing.Eventually.UntilAsync(condition, "the log shows it", logs);
 }

@@ -183,12 +183,4 @@ public sealed class MqttWriteSafetyTests(ITestOutputHelper output) : IAsyncLifet
         await MqttGatewayConfig.Eventually(() => _logs.WithEvent(GatewayLog.Events.LinkStarted).Count > 0, "the link polls", _logs);
     }
 
-    private sealed class AsyncHost(IHost host) : IAsyncDisposable
-    {
-        public async ValueTask DisposeAsync()
-        {
-            await host.StopAsync();
-            host.Dispose();
-        }
-    }
 }

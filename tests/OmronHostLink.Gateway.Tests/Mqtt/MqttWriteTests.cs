@@ -170,12 +170,4 @@ public sealed class MqttWriteTests(ITestOutputHelper output) : IAsyncLifetime
         }
     }
 
-    private sealed class AsyncHost(IHost host) : IAsyncDisposable
-    {
-        public async ValueTask DisposeAsync()
-        {
-            await host.StopAsync();
-            host.Dispose();
-        }
-    }
 }
