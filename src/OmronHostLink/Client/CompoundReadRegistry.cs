@@ -11,6 +11,7 @@ namespace OmronHostLink;
 internal sealed class CompoundReadRegistry
 {
     private readonly Dictionary<int, (CompoundItem[] Items, long Openings)> _registered = new();
+    private readonly bool[] _refused = new bool[32];
 
     /// <summary>Held from the check of a unit's registration to the end of the QQIR that relies on it.</summary>
     public SemaphoreSlim Gate { get; } = new(1, 1);
@@ -30,4 +31,29 @@ internal sealed class CompoundReadRegistry
 
     /// <summary>Forgets what <paramref name="unit"/> holds (a registration failed or was lost).</summary>
     public void Forget(int unit) => _registered.Remove(unit);
+
+    /// <summary>Whether <paramref name="unit"/> answered QQ with an end code that says it has none: it is read by area for the client's life.</summary>
+    public bool Refused(int unit) => Volatile.Read(ref _refused[unit]);
+
+    /// <summary>Records that <paramref name="unit"/> has no QQ; true the first time (to log it once).</summary>
+    public bool Refuse(int unit)
+    {
+        lock (_refused)
+        {
+            if (_refused[unit])
+            {
+                return false;
+            }
+
+            _refused[unit] = true;
+            return true;
+        }
+    }
+
+    /// <summary>
+    /// Whether an end code answering QQMR or QQIR says the unit has no QQ as it is used here (IC, 16: not supported;
+    /// 14, 18: a format or length it does not take), rather than a word it lacks or a registration it lost.
+    /// </summary>
+    public static bool MeansNoCompoundRead(EndCode code)
+        => code.Category() is EndCodeCategory.NotSupported or EndCodeCategory.Format or EndCodeCategory.Length;
 }

@@ -54,7 +54,7 @@ public partial class HostLinkUnit
             throw new ArgumentException("Give at least one tag to watch.", nameof(tags));
         }
 
-        ReadPlan plan = Plan(tags.ToArray());
+        var planned = new PlannedTags(this, tags.ToArray());
 
         // A copy: the caller may change or reuse its options while the watch runs.
         var settings = new WatchOptions
@@ -63,10 +63,11 @@ public partial class HostLinkUnit
             RetryInterval = options.RetryInterval,
             MaxRetryInterval = options.MaxRetryInterval,
             ReportEveryCycle = options.ReportEveryCycle,
+            ReportPlans = options.ReportPlans,
             DemoteAfter = options.DemoteAfter,
             DemotionPeriod = options.DemotionPeriod,
             TimeProvider = options.TimeProvider,
         };
-        return TagWatch.RunAsync(this, plan, settings, cancellationToken);
+        return TagWatch.RunAsync(this, planned, settings, cancellationToken);
     }
 }

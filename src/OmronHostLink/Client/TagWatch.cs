@@ -16,7 +16,7 @@ internal static class TagWatch
 {
     public static async IAsyncEnumerable<WatchEvent> RunAsync(
         HostLinkUnit unit,
-        ReadPlan plan,
+        PlannedTags planned,
         WatchOptions options,
         [EnumeratorCancellation] CancellationToken cancellationToken)
     {
@@ -24,7 +24,7 @@ internal static class TagWatch
         TimeProvider time = options.TimeProvider;
         bool everyCycle = options.ReportEveryCycle;
         TimeSpan retryDelay = options.EffectiveRetryInterval;
-        IReadOnlyList<PlcTag> tags = plan.Tags;
+        IReadOnlyList<PlcTag> tags = planned.Current.Tags;
         var reported = new PlcValue?[tags.Count];
         long origin = time.GetTimestamp();
         TimeSpan cycleStart = TimeSpan.Zero;
@@ -47,7 +47,7 @@ internal static class TagWatch
                 yield return WatchEvent.Overrun(now - cycleStart, time.GetUtcNow());
             }
 
-            if (demoted && await ProbeAsync(unit, plan, cancellationToken).ConfigureAwait(false) is { } silent)
+            if (demoted && await ProbeAsync(unit, planned.Current, cancellationToken).ConfigureAwait(false) is { } silent)
             {
                 // Still silent: one more period without a read.
                 due = time.GetElapsedTime(origin) + options.DemotionPeriod;
@@ -62,13 +62,33 @@ internal static class TagWatch
             cycleStart = time.GetElapsedTime(origin);
             PlcTagValue[]? values = null;
             Exception? failure = null;
+            ReadPlan? plan = null;
+            bool replanned = false;
             try
             {
-                values = await unit.ReadTagsAsync(plan, cancellationToken).ConfigureAwait(false);
+                // What decides the plan may need the PLC (a model asked with MM once): part of the cycle, and of its failure.
+                (plan, replanned) = await planned.PlanAsync(cancellationToken).ConfigureAwait(false);
             }
             catch (Exception e) when (IsCycleFailure(e, cancellationToken))
             {
                 failure = e;
+            }
+
+            if (replanned && options.ReportPlans)
+            {
+                yield return WatchEvent.Planned(plan!, time.GetUtcNow());
+            }
+
+            if (failure is null)
+            {
+                try
+                {
+                    values = await unit.ReadTagsAsync(plan!, cancellationToken).ConfigureAwait(false);
+                }
+                catch (Exception e) when (IsCycleFailure(e, cancellationToken))
+                {
+                    failure = e;
+                }
             }
 
             DateTimeOffset readTime = time.GetUtcNow();

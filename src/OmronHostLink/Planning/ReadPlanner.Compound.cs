@@ -6,7 +6,7 @@ namespace OmronHostLink.Planning;
 public sealed partial class ReadPlanner
 {
     /// <summary>
-    /// Per unit, whether one QQIR of some of its tags' words (the dearest to read by area, up to 128 items) plus area
+    /// Per unit that may use QQ, whether one QQIR of some of its tags' words (the dearest to read by area, up to 128 items) plus area
     /// reads of the rest costs fewer characters a cycle than the area reads alone; if so the unit's area reads are
     /// replaced. A word that only bit tags need is registered as those bits where that is shorter (one character each
     /// in the answer instead of four); a timer/counter PV comes with its completion flag (five characters, two items).
@@ -14,7 +14,7 @@ public sealed partial class ReadPlanner
     /// </summary>
     private void PlanCompound(SortedDictionary<(int Unit, PlcArea Area, int Bank), List<(int Start, int End)>> spaces, List<PlannedRead> reads, CompoundNeeds needs)
     {
-        foreach (int unit in spaces.Keys.Select(k => k.Unit).Distinct().ToArray())
+        foreach (int unit in spaces.Keys.Select(k => k.Unit).Distinct().Where(PlansCompound).ToArray())
         {
             var eligible = spaces.Where(s => s.Key.Unit == unit).ToArray();
             List<PlannedRead> current = reads.Where(r => r.Kind == PlannedReadKind.CModeArea && r.Unit == unit).ToList();
@@ -59,7 +59,7 @@ public sealed partial class ReadPlanner
             var restReads = new List<PlannedRead>();
             foreach (KeyValuePair<(PlcArea Area, int Bank), List<(int Start, int End)>> space in rest)
             {
-                PlanSpace(unit, space.Key.Area, space.Key.Bank, Clusters(space.Value), restReads, new SortedDictionary<int, List<PlcAddress>>());
+                PlanSpace(unit, space.Key.Area, space.Key.Bank, Clusters(space.Value), restReads, new SortedDictionary<int, List<PlcAddress[]>>());
             }
 
             int chars = CompoundAnswerCharacters(CompoundCommands.DataLength(items), out int exchanges);
@@ -74,7 +74,7 @@ public sealed partial class ReadPlanner
             foreach (IGrouping<(PlcArea Area, int Bank), PlcAddress> space in addresses.Select(a => a.AsWord()).GroupBy(w => (w.Area, w.Bank)))
             {
                 var spans = space.Select(w => (w.Word, w.Word + 1)).ToList();
-                PlanSpace(unit, space.Key.Area, space.Key.Bank, Clusters(spans), fallback, new SortedDictionary<int, List<PlcAddress>>());
+                PlanSpace(unit, space.Key.Area, space.Key.Bank, Clusters(spans), fallback, new SortedDictionary<int, List<PlcAddress[]>>());
             }
 
             int at = reads.IndexOf(current[0]);

@@ -41,6 +41,10 @@ public sealed class HostLinkClientSettings
                 ("D", OmronHostLink.HostLinkCompatibleMode.ModeD)) ?? s.HostLinkCompatibleMode
         },
         { nameof(SendInterval), (v, s) => s.SendInterval = v.Duration() ?? s.SendInterval },
+        {
+            nameof(UseCompoundRead),
+            (v, s) => s.UseCompoundRead = v.Choice(("true", CompoundReadMode.On), ("false", CompoundReadMode.Off)) ?? s.UseCompoundRead
+        },
     };
 
     private readonly List<HostLinkSettingsProblem> _readProblems = new();
@@ -110,6 +114,13 @@ public sealed class HostLinkClientSettings
     /// </summary>
     public TimeSpan? SendInterval { get; set; }
 
+    /// <summary>
+    /// Whether planned reads use QQ, the compound read: Auto (default: where the unit's model, configured or asked with
+    /// MM once, has it), On (unless the model is known to lack it) or Off; true and false are taken for On and Off. See
+    /// <see cref="HostLinkClientOptions.UseCompoundRead"/>.
+    /// </summary>
+    public CompoundReadMode? UseCompoundRead { get; set; }
+
     /// <summary>The kinds of link a client can use; exactly one is chosen.</summary>
     internal IEnumerable<HostLinkEndpointSettings> Endpoints => [Serial, Tcp];
 
@@ -163,6 +174,7 @@ public sealed class HostLinkClientSettings
         Add(nameof(Model), Model is { } model ? SettingRules.Model(model) : null);
         Add(nameof(HostLinkCompatibleMode), HostLinkCompatibleMode is { } compatibleMode ? SettingRules.CompatibleMode(compatibleMode) : null);
         Add(nameof(SendInterval), SendInterval is { } gap ? SettingRules.SendInterval(gap) : null);
+        Add(nameof(UseCompoundRead), UseCompoundRead is { } compound ? SettingRules.CompoundRead(compound) : null);
         return problems;
     }
 
@@ -186,6 +198,7 @@ public sealed class HostLinkClientSettings
         options.Model = Model ?? options.Model;
         options.HostLinkCompatibleMode = HostLinkCompatibleMode ?? options.HostLinkCompatibleMode;
         options.SendInterval = SendInterval ?? options.SendInterval;
+        options.UseCompoundRead = UseCompoundRead ?? options.UseCompoundRead;
 
         // Over TCP the transport cannot know the line's speed: the deadlines come from these settings. A local port
         // gives its own timing from the same values.

@@ -71,6 +71,9 @@ internal static class SettingRules
     public static string? CommandSet(HostLinkCommandSet value)
         => value is HostLinkCommandSet.CMode or HostLinkCommandSet.Fins ? null : $"{(int)value} is not CMode or Fins";
 
+    public static string? CompoundRead(CompoundReadMode value)
+        => value is CompoundReadMode.Auto or CompoundReadMode.On or CompoundReadMode.Off ? null : $"{(int)value} is not Auto, On or Off";
+
     public static string? WordOrder(WordOrder value)
         => value is OmronHostLink.WordOrder.LowWordFirst or OmronHostLink.WordOrder.HighWordFirst ? null : $"{(int)value} is not LowWordFirst or HighWordFirst";
 
