@@ -103,7 +103,7 @@ public partial class HostLinkUnit
 
     private async Task<PlcTagValue[]> ReadPlannedAsync(PlannedTags planned, CancellationToken cancellationToken)
     {
-        (ReadPlan plan, _) = await planned.PlanAsync(cancellationToken).ConfigureAwait(false);
+        (ReadPlan plan, _) = await planned.PlanAsync(askPlc: true, cancellationToken).ConfigureAwait(false);
         return await ReadTagsAsync(plan, cancellationToken).ConfigureAwait(false);
     }
 

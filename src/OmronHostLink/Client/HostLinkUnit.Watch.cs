@@ -54,7 +54,7 @@ public partial class HostLinkUnit
             throw new ArgumentException("Give at least one tag to watch.", nameof(tags));
         }
 
-        var planned = new PlannedTags(this, tags.ToArray());
+        var planned = new PlannedTags(this, tags.ToArray(), options.Interval);
 
         // A copy: the caller may change or reuse its options while the watch runs.
         var settings = new WatchOptions

@@ -30,133 +30,143 @@ internal static class TagWatch
         TimeSpan cycleStart = TimeSpan.Zero;
         TimeSpan due = TimeSpan.Zero;
         bool succeeded = false;
+        bool answered = false;
         TimeSpan? outageStart = null;
         int silentCycles = 0;
         bool demoted = false;
 
-        while (true)
+        try
         {
-            cancellationToken.ThrowIfCancellationRequested();
-            TimeSpan now = time.GetElapsedTime(origin);
-            if (now < due)
+            while (true)
             {
-                await Delay(due - now, time, cancellationToken).ConfigureAwait(false);
-            }
-            else if (succeeded && interval > TimeSpan.Zero && now > due)
-            {
-                yield return WatchEvent.Overrun(now - cycleStart, time.GetUtcNow());
-            }
-
-            if (demoted && await ProbeAsync(unit, planned.Current, cancellationToken).ConfigureAwait(false) is { } silent)
-            {
-                // Still silent: one more period without a read.
-                due = time.GetElapsedTime(origin) + options.DemotionPeriod;
-                if (everyCycle)
+                cancellationToken.ThrowIfCancellationRequested();
+                TimeSpan now = time.GetElapsedTime(origin);
+                if (now < due)
                 {
-                    yield return WatchEvent.RetryFailed(silent, time.GetUtcNow(), options.DemotionPeriod);
+                    await Delay(due - now, time, cancellationToken).ConfigureAwait(false);
+                }
+                else if (succeeded && interval > TimeSpan.Zero && now > due)
+                {
+                    yield return WatchEvent.Overrun(now - cycleStart, time.GetUtcNow());
                 }
 
-                continue;
-            }
+                if (demoted && await ProbeAsync(unit, planned.Current, cancellationToken).ConfigureAwait(false) is { } silent)
+                {
+                    // Still silent: one more period without a read.
+                    due = time.GetElapsedTime(origin) + options.DemotionPeriod;
+                    if (everyCycle)
+                    {
+                        yield return WatchEvent.RetryFailed(silent, time.GetUtcNow(), options.DemotionPeriod);
+                    }
 
-            cycleStart = time.GetElapsedTime(origin);
-            PlcTagValue[]? values = null;
-            Exception? failure = null;
-            ReadPlan? plan = null;
-            bool replanned = false;
-            try
-            {
-                // What decides the plan may need the PLC (a model asked with MM once): part of the cycle, and of its failure.
-                (plan, replanned) = await planned.PlanAsync(cancellationToken).ConfigureAwait(false);
-            }
-            catch (Exception e) when (IsCycleFailure(e, cancellationToken))
-            {
-                failure = e;
-            }
+                    continue;
+                }
 
-            if (replanned && options.ReportPlans)
-            {
-                yield return WatchEvent.Planned(plan!, time.GetUtcNow());
-            }
-
-            if (failure is null)
-            {
+                cycleStart = time.GetElapsedTime(origin);
+                PlcTagValue[]? values = null;
+                Exception? failure = null;
+                ReadPlan? plan = null;
+                bool replanned = false;
                 try
                 {
-                    values = await unit.ReadTagsAsync(plan!, cancellationToken).ConfigureAwait(false);
+                    // What decides the plan may need the PLC (a model asked with MM once): part of the cycle, and of its failure.
+                    (plan, replanned) = await planned.PlanAsync(askPlc: answered, cancellationToken).ConfigureAwait(false);
                 }
                 catch (Exception e) when (IsCycleFailure(e, cancellationToken))
                 {
                     failure = e;
                 }
-            }
 
-            DateTimeOffset readTime = time.GetUtcNow();
-            TimeSpan end = time.GetElapsedTime(origin);
-            if (failure is not null)
-            {
-                succeeded = false;
-                silentCycles = IsSilence(failure) ? silentCycles + 1 : failure is HostLinkConnectionException ? silentCycles : 0;
-                bool demote = options.DemoteAfter > 0 && silentCycles >= options.DemoteAfter;
-                bool first = outageStart is null;
-                if (first)
+                if (replanned && options.ReportPlans)
                 {
-                    outageStart = end;
-                    retryDelay = options.EffectiveRetryInterval;
-                }
-                else if (!demote)
-                {
-                    retryDelay = options.NextRetryDelay(retryDelay);
+                    yield return WatchEvent.Planned(plan!, time.GetUtcNow());
                 }
 
-                TimeSpan wait = demote ? options.DemotionPeriod : retryDelay;
-                due = end + wait;
-                if (first)
+                if (failure is null)
                 {
-                    yield return WatchEvent.Outage(failure, readTime, wait);
+                    try
+                    {
+                        values = await unit.ReadTagsAsync(plan!, cancellationToken).ConfigureAwait(false);
+                    }
+                    catch (Exception e) when (IsCycleFailure(e, cancellationToken))
+                    {
+                        failure = e;
+                    }
                 }
 
-                if (demote && !demoted)
+                DateTimeOffset readTime = time.GetUtcNow();
+                TimeSpan end = time.GetElapsedTime(origin);
+                if (failure is not null)
                 {
-                    demoted = true;
-                    yield return WatchEvent.Demoted(failure, readTime, wait);
-                }
-                else if (!first && everyCycle)
-                {
-                    yield return WatchEvent.RetryFailed(failure, readTime, wait);
-                }
+                    succeeded = false;
+                    silentCycles = IsSilence(failure) ? silentCycles + 1 : failure is HostLinkConnectionException ? silentCycles : 0;
+                    bool demote = options.DemoteAfter > 0 && silentCycles >= options.DemoteAfter;
+                    bool first = outageStart is null;
+                    if (first)
+                    {
+                        outageStart = end;
+                        retryDelay = options.EffectiveRetryInterval;
+                    }
+                    else if (!demote)
+                    {
+                        retryDelay = options.NextRetryDelay(retryDelay);
+                    }
 
-                demoted = demote;
-                continue;
-            }
+                    TimeSpan wait = demote ? options.DemotionPeriod : retryDelay;
+                    due = end + wait;
+                    if (first)
+                    {
+                        yield return WatchEvent.Outage(failure, readTime, wait);
+                    }
 
-            succeeded = true;
-            silentCycles = 0;
-            demoted = false;
-            due = cycleStart + interval;
-            if (outageStart is { } since)
-            {
-                outageStart = null;
-                yield return WatchEvent.Resumed(end - since, readTime);
-            }
+                    if (demote && !demoted)
+                    {
+                        demoted = true;
+                        yield return WatchEvent.Demoted(failure, readTime, wait);
+                    }
+                    else if (!first && everyCycle)
+                    {
+                        yield return WatchEvent.RetryFailed(failure, readTime, wait);
+                    }
 
-            for (int i = 0; i < values!.Length; i++)
-            {
-                PlcValue value = Decode(values[i], unit.WordOrder);
-                if (reported[i] is { } old && old == value)
-                {
+                    demoted = demote;
                     continue;
                 }
 
-                PlcValue? previous = reported[i];
-                reported[i] = value;
-                yield return WatchEvent.Changed(i, tags[i], previous, value, readTime, values[i].Words);
-            }
+                succeeded = true;
+                answered = true;
+                silentCycles = 0;
+                demoted = false;
+                due = cycleStart + interval;
+                if (outageStart is { } since)
+                {
+                    outageStart = null;
+                    yield return WatchEvent.Resumed(end - since, readTime);
+                }
 
-            if (everyCycle)
-            {
-                yield return WatchEvent.Polled(end - cycleStart, readTime);
+                for (int i = 0; i < values!.Length; i++)
+                {
+                    PlcValue value = Decode(values[i], unit.WordOrder);
+                    if (reported[i] is { } old && old == value)
+                    {
+                        continue;
+                    }
+
+                    PlcValue? previous = reported[i];
+                    reported[i] = value;
+                    yield return WatchEvent.Changed(i, tags[i], previous, value, readTime, values[i].Words);
+                }
+
+                if (everyCycle)
+                {
+                    yield return WatchEvent.Polled(end - cycleStart, readTime);
+                }
             }
+        }
+        finally
+        {
+            // The unit's QQ registration is left to the other watches.
+            planned.Release();
         }
     }
 

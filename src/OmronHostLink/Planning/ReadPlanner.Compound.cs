@@ -2,13 +2,13 @@ using OmronHostLink.Protocol.CMode;
 
 namespace OmronHostLink.Planning;
 
-/// <summary>QQ in C-mode plans: per unit, one registered QQIR where it costs fewer characters a cycle than area reads.</summary>
+/// <summary>QQ in C-mode plans: per unit, one registered QQIR where it costs fewer characters a cycle than area reads, in fewer reads.</summary>
 public sealed partial class ReadPlanner
 {
     /// <summary>
     /// Per unit that may use QQ, whether one QQIR of some of its tags' words (the dearest to read by area, up to 128 items) plus area
-    /// reads of the rest costs fewer characters a cycle than the area reads alone; if so the unit's area reads are
-    /// replaced. A word that only bit tags need is registered as those bits where that is shorter (one character each
+    /// reads of the rest costs fewer characters a cycle than the area reads alone, in fewer reads; if so the unit's area
+    /// reads are replaced. A word that only bit tags need is registered as those bits where that is shorter (one character each
     /// in the answer instead of four); a timer/counter PV comes with its completion flag (five characters, two items).
     /// The registration is not counted here: it is paid once, not per cycle.
     /// </summary>
@@ -64,7 +64,9 @@ public sealed partial class ReadPlanner
 
             int chars = CompoundAnswerCharacters(CompoundCommands.DataLength(items), out int exchanges);
             double compoundCost = chars + (exchanges * _turnaroundChars) + restReads.Sum(r => r.Characters + (r.Exchanges * _turnaroundChars));
-            if (items.Count == 0 || compoundCost >= currentCost)
+            // QQ must replace reads, not only shave characters off one: a unit holds one registration (which another
+            // tag set may take), it costs a QQMR whenever the PLC lost it, and with Auto an MM first.
+            if (items.Count == 0 || compoundCost >= currentCost || 1 + restReads.Count >= current.Count)
             {
                 continue;
             }

@@ -64,8 +64,9 @@ public sealed partial class ReadPlanner
     /// <summary>
     /// Whether C-mode plans may use QQ, the compound read: per unit, up to 128 items — scattered words of any area C-mode
     /// reaches, timer/counter PVs (two items each), and bits of CIO, LR, HR and AR whose word no other tag needs —
-    /// read with one QQIR where that costs fewer characters than their area reads (completion flags keep their RG
-    /// reads). <see cref="CompoundReadMode.Auto"/> (the default, as <see cref="HostLinkClientOptions.UseCompoundRead"/>'s):
+    /// read with one QQIR where that costs fewer characters than their area reads and replaces more than one of them
+    /// (completion flags keep their RG reads). <see cref="CompoundReadMode.Auto"/> (the default, as
+    /// <see cref="HostLinkClientOptions.UseCompoundRead"/>'s):
     /// QQ where <see cref="Model"/> lists it, area reads where it lacks it or is not given;
     /// <see cref="CompoundReadMode.On"/>: QQ unless <see cref="Model"/> lacks it; <see cref="CompoundReadMode.Off"/>: never.
     /// </summary>

@@ -137,9 +137,13 @@ public sealed class CompoundReadDefaultTests
             }
         }
 
-        // Planned before the first read, with the model MM named: once, since nothing changes after it.
-        plans.Should().ContainSingle().Which.Reads.Should().Contain(r => r.Kind == PlannedReadKind.CModeCompound);
-        plans[0].ToString().Should().MatchRegex(@"^\d+ reads? \(1 QQIR of 40 items\), \d+ characters, \d+ ms at 115200 bps$");
+        // Planned before the first read with what is known (area reads), then with the model MM named once the unit
+        // has answered: a silent unit is never asked MM, only read.
+        plans.Should().HaveCount(2);
+        plans[0].Reads.Should().OnlyContain(r => r.Kind == PlannedReadKind.CModeArea);
+        plans[1].Reads.Should().ContainSingle().Which.Kind.Should().Be(PlannedReadKind.CModeCompound);
+        plans[1].ToString().Should().MatchRegex(@"^1 read \(1 QQIR of 40 items\), \d+ characters, \d+ ms at 115200 bps$");
+        line.SentFrames.Count(f => Header(f) == "MM").Should().Be(1);
     }
 
     [Fact]
@@ -168,17 +172,57 @@ public sealed class CompoundReadDefaultTests
                     throw new Xunit.Sdk.XunitException($"Unexpected {e}");
             }
 
-            if (polls == 3)
+            if (polls == 4)
             {
                 break;
             }
         }
 
-        plans.Should().HaveCount(2);
-        plans[0].Reads.Should().Contain(r => r.Kind == PlannedReadKind.CModeCompound);
-        plans[1].Reads.Should().OnlyContain(r => r.Kind == PlannedReadKind.CModeArea);
-        values.Should().HaveCount(Scattered.Length, "the cycle whose QQ was refused read every tag by area");
+        // Area reads until the unit answered and MM named its model; QQ, refused with IC; area reads again.
+        plans.Should().HaveCount(3);
+        plans[0].Reads.Should().OnlyContain(r => r.Kind == PlannedReadKind.CModeArea);
+        plans[1].Reads.Should().Contain(r => r.Kind == PlannedReadKind.CModeCompound);
+        plans[2].Reads.Should().OnlyContain(r => r.Kind == PlannedReadKind.CModeArea);
+        line.SentFrames.Count(f => Header(f) == "QQ").Should().Be(1);
+        values.Should().HaveCount(Scattered.Length);
         values.Select(v => v.Value.ToUInt16()).Should().BeEquivalentTo(Enumerable.Range(1, Scattered.Length).Select(i => (ushort)i));
+    }
+
+    [Fact]
+    public async Task Of_two_watches_on_one_unit_the_one_QQ_saves_more_for_uses_its_registration()
+    {
+        // A PLC holds one QQ registration a unit: the watch QQ saves the most characters a second for uses it, the
+        // other reads by area (rather than each taking the registration from the other every cycle) until it ends.
+        var plc = Plc("CS1");
+        await using var line = EmulatedLine.Start(plc, "CS1");
+        PlcTag[] few = [.. Scattered.Take(4).Select(t => PlcTag.Parse(t))];
+        PlcTag[] many = [.. Scattered.Skip(4).Select(t => PlcTag.Parse(t))];
+        var options = new WatchOptions { Interval = TimeSpan.Zero, ReportEveryCycle = true, ReportPlans = true };
+        await using IAsyncEnumerator<WatchEvent> small = line.Client.WatchAsync(few, options).GetAsyncEnumerator();
+        IAsyncEnumerator<WatchEvent> large = line.Client.WatchAsync(many, options).GetAsyncEnumerator();
+
+        ReadPlan smallPlan = (await NextPlan(small)).Plan!;
+        ReadPlan largePlan = (await NextPlan(large)).Plan!;
+
+        largePlan.Reads.Should().ContainSingle().Which.Kind.Should().Be(PlannedReadKind.CModeCompound);
+        smallPlan.Reads.Should().OnlyContain(r => r.Kind == PlannedReadKind.CModeArea).And.HaveCount(4);
+
+        // The large watch ends: the small one takes the registration at its next cycle.
+        await large.DisposeAsync();
+        (await NextPlan(small)).Plan!.Reads.Should().ContainSingle().Which.Kind.Should().Be(PlannedReadKind.CModeCompound);
+
+        static async Task<WatchEvent> NextPlan(IAsyncEnumerator<WatchEvent> watch)
+        {
+            while (await watch.MoveNextAsync())
+            {
+                if (watch.Current.Kind == WatchEventKind.Planned)
+                {
+                    return watch.Current;
+                }
+            }
+
+            throw new Xunit.Sdk.XunitException("The watch ended.");
+        }
     }
 
     private static VirtualPlc Plc(string model)
