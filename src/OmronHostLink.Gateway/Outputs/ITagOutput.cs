@@ -33,4 +33,16 @@ public interface ITagOutput
     void UnitChanged(string link, int unit, UnitState state, string? detail = null)
     {
     }
+
+    /// <summary>A scan class was planned: at start, and again when its plan changes (a unit's model learnt, QQ refused).</summary>
+    /// <param name="plan">The reads it makes each cycle.</param>
+    void ScanPlanned(ScanPlan plan)
+    {
+    }
+
+    /// <summary>A scan class read every tag once more.</summary>
+    /// <param name="cycle">The cycle's time.</param>
+    void ScanCycled(ScanCycle cycle)
+    {
+    }
 }

@@ -47,4 +47,22 @@ public sealed class TagOutputs(IEnumerable<ITagOutput> outputs) : ITagOutput
             output.UnitChanged(link, unit, state, detail);
         }
     }
+
+    /// <inheritdoc/>
+    public void ScanPlanned(ScanPlan plan)
+    {
+        foreach (ITagOutput output in _outputs)
+        {
+            output.ScanPlanned(plan);
+        }
+    }
+
+    /// <inheritdoc/>
+    public void ScanCycled(ScanCycle cycle)
+    {
+        foreach (ITagOutput output in _outputs)
+        {
+            output.ScanCycled(cycle);
+        }
+    }
 }
