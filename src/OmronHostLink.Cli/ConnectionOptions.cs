@@ -26,11 +26,13 @@ internal sealed class ConnectionOptions
         ["ReadRetries"] = "--retries",
         ["Model"] = "--model",
         ["HostLinkCompatibleMode"] = "--compatible-mode",
+        ["UseCompoundRead"] = "--compound-read",
     };
 
-    public ConnectionOptions(bool includeUnit = true, TimeSpan? defaultTimeout = null, int? defaultRetries = null)
+    public ConnectionOptions(bool includeUnit = true, TimeSpan? defaultTimeout = null, int? defaultRetries = null, bool plansReads = false)
     {
         IncludeUnit = includeUnit;
+        PlansReads = plansReads;
         DefaultTimeout = defaultTimeout;
         DefaultRetries = defaultRetries;
         var line = new SerialLineSettings();
@@ -47,10 +49,14 @@ internal sealed class ConnectionOptions
         Retries = OptionValues.OptionalInteger("--retries", $"Times a read is repeated after a timeout or damaged frame, 0-{SettingRules.MaxRetries} (writes are never repeated).", int.MinValue, int.MaxValue, "n");
         Fins = new Option<bool>("--fins") { Description = "Use FINS over Host Link (FA) where C-mode would otherwise be used: reads, writes, bit writes, status and mode." };
         CompatibleMode = OptionValues.OptionalChoice("--compatible-mode", "The Host Link-compatible device mode the PLC's Serial Communications Unit is set to (A: CS/CJ/C, B: CVM1/CV, C: C200H, D: C500/C120): each answer frame is checked to be framed as that mode frames it. Default: any framing.", "a|b|c|d", "a", "b", "c", "d");
+        CompoundRead = CompoundReadOption();
         Model = new Option<string?>("--model") { Description = "The PLC model addresses and commands are checked against before anything is sent (CPM1A, CP1E-E, C200HS, CS1, ...: see 'hostlink model --list'), or auto to ask the PLC (MM).", HelpName = "name" };
     }
 
     public bool IncludeUnit { get; }
+
+    /// <summary>Whether the command plans its reads (and so takes <c>--compound-read</c>).</summary>
+    public bool PlansReads { get; }
 
     public TimeSpan? DefaultTimeout { get; }
 
@@ -80,6 +86,21 @@ internal sealed class ConnectionOptions
 
     public Option<string?> CompatibleMode { get; }
 
+    public Option<string?> CompoundRead { get; }
+
+    /// <summary><c>--compound-read auto|on|off</c>: whether planned reads use QQ (the client setting UseCompoundRead).</summary>
+    public static Option<string?> CompoundReadOption()
+        => OptionValues.OptionalChoice("--compound-read", "Whether planned reads use QQ, the compound read: auto (default: where the PLC's model, given with --model or named by MM, has it), on, or off.", "auto|on|off", "auto", "on", "off");
+
+    /// <summary>The mode <paramref name="value"/> (an <see cref="CompoundReadOption"/> value) names; null when not given.</summary>
+    public static CompoundReadMode? CompoundReadOf(string? value) => value switch
+    {
+        "auto" => CompoundReadMode.Auto,
+        "on" => CompoundReadMode.On,
+        "off" => CompoundReadMode.Off,
+        _ => null,
+    };
+
     /// <summary>How 32- and 64-bit values lie in two or four words: Omron's own layout, low word first.</summary>
     public WordOrder WordOrder => WordOrder.LowWordFirst;
 
@@ -101,6 +122,11 @@ internal sealed class ConnectionOptions
         command.Add(Fins);
         command.Add(Model);
         command.Add(CompatibleMode);
+        if (PlansReads)
+        {
+            command.Add(CompoundRead);
+        }
+
         command.Validators.Add(Validate);
     }
 
@@ -130,6 +156,7 @@ internal sealed class ConnectionOptions
                 "d" => HostLinkCompatibleMode.ModeD,
                 _ => null,
             },
+            UseCompoundRead = PlansReads ? CompoundReadOf(options.GetValue(CompoundRead)) : null,
         };
         settings.Serial.BaudRate = options.GetValue(Baud);
         settings.Serial.DataBits = options.GetValue(DataBits);

@@ -12,6 +12,9 @@ namespace OmronHostLink.Gateway;
 /// </summary>
 public static class GatewayProgram
 {
+    /// <summary>The command-line switch that writes each link's plan (its scan classes and their reads) and exits.</summary>
+    public const string PlanSwitch = "--plan";
+
     /// <summary>The exit code of a configuration that is not valid (a service manager should not restart on it).</summary>
     public const int InvalidConfiguration = 2;
 
@@ -22,6 +25,11 @@ public static class GatewayProgram
     public static async Task<int> RunAsync(string[] args, TextWriter error)
     {
         ArgumentNullException.ThrowIfNull(error);
+        ArgumentNullException.ThrowIfNull(args);
+
+        // --plan: the configuration checked as for a start, then each link's plan written out; no PLC is asked.
+        bool planOnly = args.Contains(PlanSwitch, StringComparer.OrdinalIgnoreCase);
+        args = [.. args.Where(a => !a.Equals(PlanSwitch, StringComparison.OrdinalIgnoreCase))];
         HostApplicationBuilder builder;
         try
         {
@@ -57,6 +65,12 @@ public static class GatewayProgram
         if (problems.Count > 0)
         {
             return Invalid(error, problems);
+        }
+
+        if (planOnly)
+        {
+            await Polling.ScanPlanReport.WriteAsync(host.Services.GetRequiredService<IOptions<GatewayOptions>>().Value, Console.Out).ConfigureAwait(false);
+            return 0;
         }
 
         CancellationToken stopping = host.Services.GetRequiredService<IHostApplicationLifetime>().ApplicationStopping;

@@ -73,10 +73,7 @@ internal sealed class LinkPoller(string name, LinkOptions options, Func<HostLink
         }
 
         // One scan class per unit and interval, in the order their first groups are configured.
-        _classes = _groups
-            .GroupBy(g => (g.UnitNumber, g.Interval))
-            .Select(c => new PollScan(plc.Unit(c.Key.UnitNumber), c.Key.Interval, c.ToList()))
-            .ToList();
+        _classes = PollScan.Classes(_groups, plc);
 
         sink.LinkOpened(name, plc);
         GatewayLog.LinkStarted(logger, name, _groups.Count, plc.Description);
@@ -526,7 +523,7 @@ internal sealed class LinkPoller(string name, LinkOptions options, Func<HostLink
     /// </summary>
     private void LogPlan()
     {
-        (ScanPlan Plan, ReadPlan? Pending)[] plans = _classes.Select(c => (Report(c), PendingCompound(c))).ToArray();
+        (ScanPlan Plan, ReadPlan? Pending)[] plans = _classes.Select(c => (Report(c), ScanPlanReport.PendingCompound(c, options))).ToArray();
         ScanPlan[] expected = plans.Select(p => p.Pending is { } qq ? p.Plan with { Reads = qq.TransactionCount, Characters = qq.Characters, EstimatedCycle = qq.EstimatedTime + Gaps(qq.TransactionCount) } : p.Plan).ToArray();
         double load = expected.Sum(Load);
         GatewayLog.LinkPlanned(logger, name, _groups.Count, plans.Length, Line(), expected.Sum(p => p.Reads), expected.Sum(p => p.Characters), load);
@@ -554,24 +551,6 @@ internal sealed class LinkPoller(string name, LinkOptions options, Func<HostLink
         {
             GatewayLog.ScanCannotFit(logger, name, judged.Unit, judged.Tags, PollScan.Durations(judged.Interval), judged.EstimatedCycle.TotalMilliseconds, judged.Description == plan.Description ? plan.Description : "with QQ");
         }
-    }
-
-    /// <summary>
-    /// The plan a scan class will read with once its unit names its model with MM, when QQ waits for that (the client's
-    /// UseCompoundRead is Auto, and no model is configured) and would change the plan; null otherwise.
-    /// </summary>
-    private ReadPlan? PendingCompound(PollScan scan)
-    {
-        if (scan.Plan is not { } plan || scan.Unit.CommandSet != HostLinkCommandSet.CMode
-            || (options.Client.UseCompoundRead ?? CompoundReadMode.Auto) != CompoundReadMode.Auto
-            || plan.Reads.Any(r => r.Kind == PlannedReadKind.CModeCompound)
-            || (options.Client.Model is { } model && !model.Equals("auto", StringComparison.OrdinalIgnoreCase)))
-        {
-            return null;
-        }
-
-        ReadPlan qq = new ReadPlanner(scan.Unit.CommandSet, scan.Unit.LineTiming) { UseCompoundRead = CompoundReadMode.On }.Plan(scan.Tags, scan.UnitNumber);
-        return qq.Reads.Any(r => r.Kind == PlannedReadKind.CModeCompound) ? qq : null;
     }
 
     private TimeSpan Gaps(int reads) => TimeSpan.FromTicks((options.Client.SendInterval ?? TimeSpan.Zero).Ticks * reads);

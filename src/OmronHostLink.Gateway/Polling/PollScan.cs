@@ -26,6 +26,13 @@ internal sealed class PollScan
         Tags = groups.SelectMany(g => g.Tags).ToArray();
     }
 
+    /// <summary>One scan class per unit and interval, in the order their first groups are configured.</summary>
+    public static List<PollScan> Classes(IEnumerable<PollGroup> groups, HostLinkUnit client)
+        => groups
+            .GroupBy(g => (g.UnitNumber, g.Interval))
+            .Select(c => new PollScan(client.Unit(c.Key.UnitNumber), c.Key.Interval, c.ToList()))
+            .ToList();
+
     /// <summary>The unit's view on the link's client.</summary>
     public HostLinkUnit Unit { get; }
 
