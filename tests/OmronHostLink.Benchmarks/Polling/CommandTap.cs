@@ -29,7 +29,7 @@ internal sealed class CommandTap(Stream inner, CommandLedger ledger) : PassThrou
                 continue;
             }
 
-            Frame(_frame.ToString(), now);
+            Frame(_frame.ToString(), now, _frame.Length + 1);
             _frame.Clear();
         }
 
@@ -46,10 +46,10 @@ internal sealed class CommandTap(Stream inner, CommandLedger ledger) : PassThrou
     {
         long start = Stopwatch.GetTimestamp();
         await Inner.WriteAsync(buffer, cancellationToken).ConfigureAwait(false);
-        ledger.Busy(start, Stopwatch.GetTimestamp());
+        ledger.Busy(start, Stopwatch.GetTimestamp(), answer: true);
     }
 
-    private void Frame(string frame, long now)
+    private void Frame(string frame, long now, int characters)
     {
         if (frame.Length == 0)
         {
@@ -66,7 +66,7 @@ internal sealed class CommandTap(Stream inner, CommandLedger ledger) : PassThrou
         _command.Append(frame, 0, Math.Max(0, frame.Length - (last ? 3 : 2))); // less the FCS (and the terminator)
         if (last)
         {
-            ledger.Command(_command.ToString(), now);
+            ledger.Command(_command.ToString(), now, now - ledger.LineTicks(characters));
         }
     }
 }
@@ -74,15 +74,69 @@ internal sealed class CommandTap(Stream inner, CommandLedger ledger) : PassThrou
 /// <summary>What one line's PLC was asked, by command and by word.</summary>
 /// <param name="ticksPerCharacter">A character's time on the line, in Stopwatch ticks.</param>
 /// <param name="quiet">How long the line must rest for a busy burst to end.</param>
-internal sealed class CommandLedger(double ticksPerCharacter, TimeSpan quiet)
+/// <param name="keepTimes">Keep every read's time (for windows measured after the run); false keeps only running figures, in constant memory.</param>
+/// <param name="classify">Names the scan class a word belongs to, so each command's time on the line is counted to its class; null for none.</param>
+internal sealed class CommandLedger(double ticksPerCharacter, TimeSpan quiet, bool keepTimes = true, Func<CommandLedger.ReadKey, string?>? classify = null)
 {
     private readonly object _gate = new();
     private readonly Dictionary<string, long> _headers = new(StringComparer.Ordinal);
     private readonly Dictionary<ReadKey, List<long>> _reads = new();
+    private readonly Dictionary<ReadKey, KeyStats> _stats = new();
+    private readonly Dictionary<string, (long Commands, long Ticks)> _classes = new(StringComparer.Ordinal);
     private readonly Dictionary<int, CompoundItem[]> _registered = new();
     private readonly List<(long Start, long End)> _bursts = new();
     private long _burstStart;
     private long _lastActivity;
+    private (string Class, long Start)? _open;
+    private long _lastWriteEnd;
+    private long _pendingStart;
+
+    /// <summary>The running figures of one word's reads: how many, the first and last, and the longest gap between two.</summary>
+    public sealed class KeyStats
+    {
+        public long Count { get; set; }
+
+        public long First { get; set; }
+
+        public long Last { get; set; }
+
+        public long MaxGap { get; set; }
+
+        /// <summary>The mean time between reads, in seconds; infinity when read less than twice.</summary>
+        public double MeanSeconds => Count < 2 ? double.PositiveInfinity : (Last - First) / (double)Stopwatch.Frequency / (Count - 1);
+    }
+
+    /// <summary>A word's running figures since the last <see cref="ResetStats"/>; null when not read.</summary>
+    public KeyStats? StatsOf(ReadKey key)
+    {
+        lock (_gate)
+        {
+            return _stats.TryGetValue(key, out KeyStats? stats) ? new KeyStats { Count = stats.Count, First = stats.First, Last = stats.Last, MaxGap = stats.MaxGap } : null;
+        }
+    }
+
+    /// <summary>Per scan class, the commands and their time on the line (command in to last answer frame out), since the last <see cref="ResetStats"/>.</summary>
+    public IReadOnlyDictionary<string, (long Commands, long Ticks)> Classes
+    {
+        get
+        {
+            lock (_gate)
+            {
+                return new Dictionary<string, (long, long)>(_classes);
+            }
+        }
+    }
+
+    /// <summary>Starts the running figures again (a measured window).</summary>
+    public void ResetStats()
+    {
+        lock (_gate)
+        {
+            _stats.Clear();
+            _classes.Clear();
+            _headers.Clear();
+        }
+    }
 
     /// <summary>A word read, a timer/counter's present value (<see cref="Flag"/> false) or its completion flag (true).</summary>
     public readonly record struct ReadKey(int Unit, PlcArea Area, int Bank, int Word, bool Flag);
@@ -133,14 +187,23 @@ internal sealed class CommandLedger(double ticksPerCharacter, TimeSpan quiet)
     public long LineTicks(int characters) => (long)(characters * ticksPerCharacter);
 
     /// <summary>The line carried characters from <paramref name="start"/> to <paramref name="end"/>.</summary>
-    public void Busy(long start, long end)
+    public void Busy(long start, long end, bool answer = false)
     {
         lock (_gate)
         {
+            if (answer)
+            {
+                _lastWriteEnd = end;
+            }
+
             // Quiet for long enough: a burst ended at the last activity.
             if (_burstStart != 0 && start - _lastActivity > quiet.TotalSeconds * Stopwatch.Frequency)
             {
-                _bursts.Add((_burstStart, _lastActivity));
+                if (keepTimes)
+                {
+                    _bursts.Add((_burstStart, _lastActivity));
+                }
+
                 _burstStart = 0;
             }
 
@@ -153,11 +216,24 @@ internal sealed class CommandLedger(double ticksPerCharacter, TimeSpan quiet)
         }
     }
 
-    public void Command(string text, long now)
+    public void Command(string text, long now, long start = 0)
     {
         if (text.Length < 4)
         {
             return;
+        }
+
+        lock (_gate)
+        {
+            // The command before ended with its last answer frame: its time on the line goes to its class.
+            if (_open is { } open && _lastWriteEnd > open.Start)
+            {
+                (long c, long t) = _classes.GetValueOrDefault(open.Class);
+                _classes[open.Class] = (c + 1, t + (_lastWriteEnd - open.Start));
+            }
+
+            _open = null;
+            _pendingStart = start == 0 ? now : start;
         }
 
         int unit = int.Parse(text.AsSpan(0, 2), System.Globalization.CultureInfo.InvariantCulture);
@@ -210,6 +286,27 @@ internal sealed class CommandLedger(double ticksPerCharacter, TimeSpan quiet)
 
     private void Stamp(ReadKey key, long now)
     {
+        if (_open is null && classify?.Invoke(key) is { } scanClass)
+        {
+            _open = (scanClass, _pendingStart);
+        }
+
+        if (!_stats.TryGetValue(key, out KeyStats? stats))
+        {
+            _stats[key] = stats = new KeyStats { First = now };
+        }
+        else
+        {
+            stats.MaxGap = Math.Max(stats.MaxGap, now - stats.Last);
+        }
+
+        stats.Count++;
+        stats.Last = now;
+        if (!keepTimes)
+        {
+            return;
+        }
+
         if (!_reads.TryGetValue(key, out List<long>? times))
         {
             _reads[key] = times = new List<long>();
