@@ -489,6 +489,7 @@ internal sealed class LinkPoller(string name, LinkOptions options, Func<HostLink
     private void Planned(PollScan scan, ReadPlan plan)
     {
         bool again = scan.Plan is not null;
+        bool compoundDropped = again && UsesCompound(scan.Plan!) && !UsesCompound(plan);
         scan.Plan = plan;
         ScanPlan report = Report(scan);
         sink.ScanPlanned(report);
@@ -497,7 +498,7 @@ internal sealed class LinkPoller(string name, LinkOptions options, Func<HostLink
             // A later plan: a unit's model became known (MM), QQ was refused, or the scan class was split or joined.
             if (!scan.Isolated)
             {
-                LogScan(report, again ? " (planned again)" : "");
+                LogScan(report, compoundDropped ? " (planned again: the unit answered QQ with an error, and is read by area from now on)" : again ? " (planned again)" : "");
             }
 
             return;
@@ -505,6 +506,8 @@ internal sealed class LinkPoller(string name, LinkOptions options, Func<HostLink
 
         LogPlanOnceComplete();
     }
+
+    private static bool UsesCompound(ReadPlan plan) => plan.Reads.Any(r => r.Kind == PlannedReadKind.CModeCompound);
 
     /// <summary>Logs the link's plan once every scan class has its first.</summary>
     private void LogPlanOnceComplete()

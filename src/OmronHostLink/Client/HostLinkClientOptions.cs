@@ -55,8 +55,9 @@ public sealed class HostLinkClientOptions
     /// Whether C-mode planned reads (<c>ReadTagsAsync</c>, <c>WatchAsync</c>) may use QQ, the compound read (QQMR
     /// registration once, then one QQIR a cycle), where it costs fewer characters than area reads: 100 scattered tags
     /// at 9600 bps read several times faster. <see cref="CompoundReadMode.Auto"/> (the default): QQ for a unit whose
-    /// model profile lists it — the configured <see cref="Model"/>, or the model the unit names when asked MM once, on
-    /// first use, also when no model is configured — and area reads for the others (the CP2E, C200H and C200HX
+    /// model profile lists it — the configured <see cref="Model"/>, or the model the unit names when asked MM once (by a
+    /// <c>ReadTagsAsync</c> before it reads, by a watch after its first successful cycle), also when no model is
+    /// configured — and area reads for the others (the CP2E, C200H and C200HX
     /// profiles, a PLC that refuses MM or names a code no profile has). <see cref="CompoundReadMode.On"/>: QQ unless
     /// the unit's model is known to lack it (no MM asked); <see cref="CompoundReadMode.Off"/>: area reads only. A unit
     /// that answers QQ with IC (or 14, 16, 18) though its model claims it is read by area from then on, the same cycle

@@ -10,10 +10,14 @@ public partial class HostLinkUnit
 {
     /// <summary>
     /// Reads typed tags (scattered, overlapping, in several areas and units) in the fewest transactions, each value
-    /// decoded by <see cref="PlcValueCodec"/>: gaps cheaper to read through than another command are read through, and
-    /// with FINS, isolated words share 0104 MULTIPLE MEMORY AREA READ commands. A tag with a unit number is read
-    /// through that unit's view on this link; the others from this unit. Each transaction is one snapshot; the set as a
-    /// whole is not (for one snapshot of scattered raw words, see <see cref="ReadScatteredAsync"/>).
+    /// decoded by <see cref="PlcValueCodec"/>: gaps cheaper to read through than another command are read through; with
+    /// FINS, isolated words share 0104 MULTIPLE MEMORY AREA READ commands; with C-mode, scattered words and bits share
+    /// one QQIR (QQ, the compound read, registered with QQMR the first time) on a unit that uses QQ —
+    /// <see cref="HostLinkClientOptions.UseCompoundRead"/>: by default (<see cref="CompoundReadMode.Auto"/>) a unit
+    /// whose model lists it, the configured <see cref="HostLinkClientOptions.Model"/> or the one the unit names when
+    /// this call asks MM, once; a unit that answers QQ with IC is read by area, this call included. A tag with a unit
+    /// number is read through that unit's view on this link; the others from this unit. Each transaction is one
+    /// snapshot; the set as a whole is not (for one snapshot of scattered raw words, see <see cref="ReadScatteredAsync"/>).
     /// </summary>
     /// <param name="tags">The tags.</param>
     /// <param name="cancellationToken">Cancels the reads.</param>

@@ -8,8 +8,9 @@ public enum CompoundReadMode
 {
     /// <summary>
     /// The default: QQ for a unit whose model profile lists it (<see cref="PlcModelProfile.SupportsCompoundRead"/>) —
-    /// the configured model, or the one the unit names when asked MM once, on first use (also when no model is
-    /// configured); area reads for a unit whose model lacks QQ or is not known (MM refused, or a code no profile has).
+    /// the configured model, or the one the unit names when asked MM once (also when no model is configured; a watch
+    /// asks after its first successful cycle); area reads for a unit whose model lacks QQ or is not known (MM refused,
+    /// or a code no profile has).
     /// </summary>
     Auto,
 
