@@ -153,7 +153,7 @@ internal static class WireEfficiency
 
             // QQ: the same tags with the compound read; the registration is paid by the first run (and the warm-up
             // below), so the median is a cycle of QQIRs and the area reads QQ does not cover.
-            ReadPlan qq = new ReadPlanner(protocol, new LineTiming(9600, Bits)).Plan(tags);
+            ReadPlan qq = new ReadPlanner(protocol, new LineTiming(9600, Bits)) { UseCompoundRead = CompoundReadMode.On }.Plan(tags);
             await rig.Client.ReadTagsAsync(qq);
             Measurement compound = await rig.MeasureAsync(runs, c => c.ReadTagsAsync(qq));
             Console.WriteLine($"| {name} | ReadTagsAsync with QQ (planned: {Kinds(qq)}) | {qq.TransactionCount} | {compound.Characters} | {compound.MedianMs:0} | {naive.MedianMs / compound.MedianMs:0.00}× |");

@@ -644,6 +644,13 @@ internal sealed class LinkPoller(string name, LinkOptions options, Func<HostLink
             }
         }
 
+        if (failed.Count == 0)
+        {
+            // Every group read alone (and was published): the scan reads on as it was from its next cycle, so that a
+            // failure of the reads together that lasts costs the line its one try and these reads an interval.
+            await Task.Delay(scan.Interval, time, token).ConfigureAwait(false);
+        }
+
         lock (_lock)
         {
             if (token.IsCancellationRequested)
@@ -654,7 +661,6 @@ internal sealed class LinkPoller(string name, LinkOptions options, Func<HostLink
             Retire(scan);
             if (failed.Count == 0)
             {
-                // Every group reads alone: the failure did not last. The scan reads on as it was.
                 var again = new PollScan(scan.Unit, scan.Interval, scan.Groups, scan.Isolated);
                 Replace(scan, again);
                 Start(again);

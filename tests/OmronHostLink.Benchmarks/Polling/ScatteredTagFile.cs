@@ -1,5 +1,4 @@
 using System.Globalization;
-using System.Text;
 
 namespace OmronHostLink.Benchmarks.Polling;
 
@@ -65,16 +64,7 @@ internal static class ScatteredTagFile
 
     /// <summary>The export: Kepware's header and one row a tag, at <paramref name="scanRateMs"/>.</summary>
     public static string Csv(IEnumerable<Tag> tags, int scanRateMs)
-    {
-        var csv = new StringBuilder();
-        csv.AppendLine("\"Tag Name\",\"Address\",\"Data Type\",\"Respect Data Type\",\"Client Access\",\"Scan Rate\",\"Scaling\",\"Raw Low\",\"Raw High\",\"Scaled Low\",\"Scaled High\",\"Scaled Data Type\",\"Clamp Low\",\"Clamp High\",\"Eng Units\",\"Description\",\"Negate Value\"");
-        foreach (Tag tag in tags)
-        {
-            csv.AppendLine(CultureInfo.InvariantCulture, $"\"{tag.Name}\",\"{tag.KepwareAddress}\",\"{tag.KepwareType}\",\"1\",\"RO\",\"{scanRateMs}\",\"\",\"\",\"\",\"\",\"\",\"\",\"\",\"\",\"\",\"\",\"0\"");
-        }
-
-        return csv.ToString();
-    }
+        => KepwareTagExport.Csv(tags.Select(t => (t.Name, t.KepwareAddress, t.KepwareType)), scanRateMs);
 
     /// <summary>The words the PLC is asked for this tag (for a completion flag, the flag).</summary>
     public static IEnumerable<CommandLedger.ReadKey> Keys(Tag tag, int unit)

@@ -346,16 +346,7 @@ public sealed class PlannedPollingTests(ITestOutputHelper output) : IDisposable
     }
 
     private static string Csv(IEnumerable<Row> rows, int scanRateMs)
-    {
-        var csv = new StringBuilder();
-        csv.AppendLine("\"Tag Name\",\"Address\",\"Data Type\",\"Respect Data Type\",\"Client Access\",\"Scan Rate\",\"Scaling\",\"Raw Low\",\"Raw High\",\"Scaled Low\",\"Scaled High\",\"Scaled Data Type\",\"Clamp Low\",\"Clamp High\",\"Eng Units\",\"Description\",\"Negate Value\"");
-        foreach (Row row in rows)
-        {
-            csv.AppendLine(CultureInfo.InvariantCulture, $"\"{row.Name}\",\"{row.Address}\",\"{row.Type}\",\"1\",\"RO\",\"{scanRateMs}\",\"\",\"\",\"\",\"\",\"\",\"\",\"\",\"\",\"\",\"\",\"0\"");
-        }
-
-        return csv.ToString();
-    }
+        => KepwareTagExport.Csv(rows.Select(r => (r.Name, r.Address, r.Type)), scanRateMs);
 
     /// <summary>
     /// The DM words the last QQMR registered: its frames joined (each less its FCS and terminator), its items
