@@ -170,6 +170,50 @@ public sealed class PlannedPollingTests(ITestOutputHelper output) : IDisposable
     }
 
     [Fact]
+    public async Task A_write_goes_through_the_links_client_between_two_reads_and_the_next_cycle_publishes_the_new_value()
+    {
+        var plc = new VirtualPlc();
+        plc.WriteWords("D500", [5]);
+        await using RecordingSimulator simulator = await RecordingSimulator.StartAsync(plc);
+        Dictionary<string, string?> config = MqttGatewayConfig.Create(simulator.Port, broker: null)
+            .Where(k => !k.Key.StartsWith("Mqtt:", StringComparison.Ordinal))
+            .ToDictionary(k => k.Key, k => k.Value);
+        MqttGatewayConfig.Group(config, "setpoint", "D500", intervalMs: 200, writable: true);
+        MqttGatewayConfig.Group(config, "level", "D700", intervalMs: 200);
+        MqttGatewayConfig.Group(config, "flow", "D900", intervalMs: 200);
+        var outputs = new RecordingOutput();
+
+        // The write path the MQTT and Sparkplug outputs use (OpenLinks, the catalogue), without a broker.
+        using IHost host = TestGatewayHost.Build(config, _logs, TimeSpan.FromSeconds(10), s => s.AddOutputServices().AddSingleton<ITagOutput>(outputs));
+        await host.StartAsync();
+        try
+        {
+            await Eventually(() => outputs.Plans.Any(p => p.Description.Contains("QQIR", StringComparison.Ordinal)) && simulator.Received.Count(f => f.StartsWith("@00QQIR", StringComparison.Ordinal)) >= 2, "the class reads with QQ");
+            var writer = new TagWriter(host.Services.GetRequiredService<OpenLinks>());
+            TagDefinition setpoint = host.Services.GetRequiredService<TagCatalog>().Find("plc", 0, "setpoint")!;
+
+            TagWriteOutcome outcome = await writer.WriteAsync(setpoint, System.Text.Json.JsonDocument.Parse("1234").RootElement, element: null, CancellationToken.None);
+
+            outcome.Status.Should().Be("done", outcome.Error);
+            int written = outputs.Events.Count;
+            await Eventually(() => outputs.Events.Skip(written).OfType<TagChange>().Any(t => t.Tag == "setpoint" && Equals(t.Value, (short)1234)), "the new value is published");
+            object[] after = [.. outputs.Events.Skip(written)];
+            int published = Array.FindIndex(after, e => e is TagChange { Tag: "setpoint" } t && Equals(t.Value, (short)1234));
+            after.Take(published).OfType<ScanCycle>().Count().Should().BeLessThanOrEqualTo(1, "the cycle after the write reads the new value (one under way may end first)");
+        }
+        finally
+        {
+            await host.StopAsync();
+        }
+
+        plc.ReadWords("D500", 1).Should().Equal([(ushort)1234]);
+        string[] frames = [.. simulator.Received.Where(f => f.StartsWith('@'))];
+        int write = Array.FindIndex(frames, f => f.StartsWith("@00WD0500", StringComparison.Ordinal));
+        write.Should().BePositive();
+        frames.Skip(write + 1).Should().Contain(f => f.StartsWith("@00QQIR", StringComparison.Ordinal), "the registration stands: the next read is a QQIR");
+    }
+
+    [Fact]
     public async Task A_group_the_PLC_refuses_is_read_on_its_own_until_it_reads_again_and_the_others_keep_their_values()
     {
         // The PLC answers RH with IC: the holding word's group fails; the DM groups of the same scan class read on.
