@@ -26,11 +26,13 @@ internal sealed class ConnectionOptions
         ["ReadRetries"] = "--retries",
         ["Model"] = "--model",
         ["HostLinkCompatibleMode"] = "--compatible-mode",
+        ["UseCompoundRead"] = "--compound-read",
     };
 
-    public ConnectionOptions(bool includeUnit = true, TimeSpan? defaultTimeout = null, int? defaultRetries = null)
+    public ConnectionOptions(bool includeUnit = true, TimeSpan? defaultTimeout = null, int? defaultRetries = null, bool plansReads = false)
     {
         IncludeUnit = includeUnit;
+        PlansReads = plansReads;
         DefaultTimeout = defaultTimeout;
         DefaultRetries = defaultRetries;
         TimeSpan timeout = defaultTimeout ?? HostLinkClientSettings.TurnaroundAllowanceSetting.Default!.Value;
@@ -52,10 +54,14 @@ internal sealed class ConnectionOptions
             HelpName = "key=value",
             AllowMultipleArgumentsPerToken = false,
         };
+        CompoundRead = CompoundReadOption();
         Model = new Option<string?>("--model") { Description = "The PLC model addresses and commands are checked against before anything is sent (CPM1A, CP1E-E, C200HS, CS1, ...: see 'hostlink model --list'), or auto to ask the PLC (MM).", HelpName = "name" };
     }
 
     public bool IncludeUnit { get; }
+
+    /// <summary>Whether the command plans its reads (and so takes <c>--compound-read</c>).</summary>
+    public bool PlansReads { get; }
 
     public TimeSpan? DefaultTimeout { get; }
 
@@ -87,6 +93,20 @@ internal sealed class ConnectionOptions
 
     /// <summary><c>--set key=value</c>: every client setting, read as configuration reads it.</summary>
     public Option<string[]> Set { get; }
+    public Option<string?> CompoundRead { get; }
+
+    /// <summary><c>--compound-read auto|on|off</c>: whether planned reads use QQ (the client setting UseCompoundRead).</summary>
+    public static Option<string?> CompoundReadOption()
+        => OptionValues.OptionalChoice("--compound-read", "Whether planned reads use QQ, the compound read: auto (default: where the PLC's model, given with --model or named by MM, has it), on, or off.", "auto|on|off", "auto", "on", "off");
+
+    /// <summary>The mode <paramref name="value"/> (an <see cref="CompoundReadOption"/> value) names; null when not given.</summary>
+    public static CompoundReadMode? CompoundReadOf(string? value) => value switch
+    {
+        "auto" => CompoundReadMode.Auto,
+        "on" => CompoundReadMode.On,
+        "off" => CompoundReadMode.Off,
+        _ => null,
+    };
 
     /// <summary>How 32- and 64-bit values lie in two or four words: Omron's own layout, low word first.</summary>
     public WordOrder WordOrder => WordOrder.LowWordFirst;
@@ -110,6 +130,11 @@ internal sealed class ConnectionOptions
         command.Add(Model);
         command.Add(CompatibleMode);
         command.Add(Set);
+        if (PlansReads)
+        {
+            command.Add(CompoundRead);
+        }
+
         command.Validators.Add(Validate);
     }
 
@@ -139,6 +164,7 @@ internal sealed class ConnectionOptions
                 "d" => HostLinkCompatibleMode.ModeD,
                 _ => null,
             },
+            UseCompoundRead = PlansReads ? CompoundReadOf(options.GetValue(CompoundRead)) : null,
         };
         settings.Serial.BaudRate = options.GetValue(Baud);
         settings.Serial.DataBits = options.GetValue(DataBits);

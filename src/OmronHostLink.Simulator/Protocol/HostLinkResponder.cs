@@ -106,7 +106,7 @@ public sealed class HostLinkResponder
             throw new ArgumentException("A header has two characters.", nameof(header));
         }
 
-        if (_plc.Model is { } model && !Accepts(model, header))
+        if ((_plc.Model is { } model && !Accepts(model, header)) || Refuses(header))
         {
             return EndCodeOnly(unit, header, EndCode.UndefinedHeader);
         }
@@ -153,6 +153,19 @@ public sealed class HostLinkResponder
         return _plc.Options.HostLinkCompatibleMode is { } compatible && response is not null
             ? CompatibleModeAnswer.Frame(response, row.Header, CompatibleModeFraming.Of(compatible))
             : response;
+    }
+
+    private bool Refuses(ReadOnlySpan<byte> header)
+    {
+        foreach (string refused in _plc.Options.RefusedCommands)
+        {
+            if (CModeHeaders.Is(header, refused.ToUpperInvariant()))
+            {
+                return true;
+            }
+        }
+
+        return false;
     }
 
     // FA only with FINS; the rest from the model's C-mode list (TS is answered by every model).

@@ -20,7 +20,7 @@ public partial class HostLinkUnit
     internal readonly HostLinkClientOptions Options;
     internal readonly UnitModels Models;
 
-    private protected readonly CompoundReadRegistry CompoundReads;
+    internal readonly CompoundReadRegistry CompoundReads;
 
     /// <summary>This view's command set, taken once from <see cref="HostLinkClientOptions.CommandSet"/>.</summary>
     private protected readonly UnitCommandSet Commands;

@@ -182,6 +182,24 @@ public sealed class PlcModelProfile
         }
     }
 
+    /// <summary>Whether every word of <paramref name="count"/> from <paramref name="start"/> exists on this model (a read may span them).</summary>
+    internal bool Covers(PlcAddress start, int count)
+    {
+        long end = (long)start.Word + count;
+        int word = start.Word;
+        while (word < end)
+        {
+            if (Find(start.Area, word, start.Bank) is not { } range)
+            {
+                return false;
+            }
+
+            word = range.Last + 1;
+        }
+
+        return true;
+    }
+
     /// <summary>Checks that the model takes FINS over Host Link.</summary>
     /// <exception cref="NotSupportedException">It does not.</exception>
     public void EnsureFins()

@@ -56,7 +56,7 @@ public sealed class HostLinkClientSettings
         ClientSetting.Value(nameof(LocalEcho), s => s.LocalEcho, (s, v) => s.LocalEcho = v, v => v.Boolean(), null, o => o.LocalEcho, (o, v) => o.LocalEcho = v),
         ClientSetting.Value(nameof(FinsResponseWait), s => s.FinsResponseWait, (s, v) => s.FinsResponseWait = v, v => v.Integer(), SettingRules.FinsResponseWait, o => o.FinsResponseWait, (o, v) => o.FinsResponseWait = v),
         AllowReadModifyWriteBitsSetting,
-        ClientSetting.Value(nameof(UseCompoundRead), s => s.UseCompoundRead, (s, v) => s.UseCompoundRead = v, v => v.Boolean(), null, o => o.UseCompoundRead, (o, v) => o.UseCompoundRead = v),
+        ClientSetting.Value(nameof(UseCompoundRead), s => s.UseCompoundRead, (s, v) => s.UseCompoundRead = v, v => v.Choice(("true", CompoundReadMode.On), ("false", CompoundReadMode.Off)), SettingRules.Defined, o => o.UseCompoundRead, (o, v) => o.UseCompoundRead = v),
         ClientSetting.Reference(nameof(Model), s => s.Model, (s, v) => s.Model = v, v => v.Text(), PlcModelProfile.CheckSetting, o => o.Model, (o, v) => o.Model = v),
         ClientSetting.Value(
             nameof(HostLinkCompatibleMode),
@@ -150,10 +150,11 @@ public sealed class HostLinkClientSettings
     public TimeSpan? SendInterval { get; set; }
 
     /// <summary>
-    /// Whether C-mode planned reads may use QQ, the compound read, where it costs fewer characters than area reads (see
-    /// <see cref="HostLinkClientOptions.UseCompoundRead"/>). Default false.
+    /// Whether planned reads use QQ, the compound read: Auto (default: where the unit's model, configured or asked with
+    /// MM once, has it), On (unless the model is known to lack it) or Off; true and false are taken for On and Off. See
+    /// <see cref="HostLinkClientOptions.UseCompoundRead"/>.
     /// </summary>
-    public bool? UseCompoundRead { get; set; }
+    public CompoundReadMode? UseCompoundRead { get; set; }
 
     /// <summary>
     /// Longer gaps than <see cref="SendInterval"/> before commands to particular units (unit number to gap, each 0 to

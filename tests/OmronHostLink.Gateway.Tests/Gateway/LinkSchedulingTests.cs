@@ -10,9 +10,10 @@ using Xunit.Abstractions;
 namespace OmronHostLink.Gateway.Tests.Gateway;
 
 /// <summary>
-/// How the groups of one link share it, read from the frames that reach the PLC: one watch per group on the link's one
-/// client, whose gate takes waiting reads in turn. The PLC answers after a turnaround, as on a real line, so the link
-/// (not the worker's handling of what it read) is what the groups share.
+/// How the groups of one link share it, read from the frames that reach the PLC: one planned watch per unit and
+/// interval on the link's one client, whose gate takes waiting reads in turn. The PLC answers after a turnaround, as on
+/// a real line, so the link (not the worker's handling of what it read) is what the groups share. The link reads by area
+/// (UseCompoundRead Off), so that each group's reads are the RD frames of its words.
 /// </summary>
 public sealed class LinkSchedulingTests(ITestOutputHelper output) : IAsyncLifetime
 {
@@ -119,6 +120,7 @@ public sealed class LinkSchedulingTests(ITestOutputHelper output) : IAsyncLifeti
         ["HostLink:Links:plc:TurnaroundAllowance"] = allowance,
         ["HostLink:Links:plc:ReadRetries"] = "1",
         ["HostLink:Links:plc:Tcp:ConnectTimeout"] = "00:00:00.500",
+        ["HostLink:Links:plc:UseCompoundRead"] = "Off",
     };
 
     private static void Group(Dictionary<string, string?> config, string name, string address, int count = 1, int intervalMs = 50, int unit = 0)

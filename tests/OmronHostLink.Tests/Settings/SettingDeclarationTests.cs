@@ -79,7 +79,7 @@ public sealed class SettingDeclarationTests
         HostLinkClientSettings settings = Read(("UseCompoundRead", "true"), ("UnitSendIntervals:3", "200ms"), ("UnitSendIntervals:7", "1s"));
         settings.Validate().Should().BeEmpty();
         HostLinkClientOptions options = settings.ToClientOptions();
-        options.UseCompoundRead.Should().BeTrue();
+        options.UseCompoundRead.Should().Be(CompoundReadMode.On);
         options.UnitSendIntervals.Should().BeEquivalentTo(new Dictionary<int, TimeSpan> { [3] = TimeSpan.FromMilliseconds(200), [7] = TimeSpan.FromSeconds(1) });
     }
 
