@@ -1,4 +1,3 @@
-using System.Runtime.CompilerServices;
 using Microsoft.CodeAnalysis;
 using Microsoft.CodeAnalysis.CSharp;
 using Microsoft.CodeAnalysis.CSharp.Syntax;
@@ -29,9 +28,8 @@ internal sealed class SourceDependencies
         return slash < 0 ? "." : relative[..slash];
     }
 
-    /// <summary>The repository's <c>src/</c> folder, found from this source file's path.</summary>
-    public static string SourceRoot([CallerFilePath] string here = "")
-        => Path.GetFullPath(Path.Combine(Path.GetDirectoryName(here)!, "..", "..", "..", "src"));
+    /// <summary>The repository's <c>src/</c> folder.</summary>
+    public static string SourceRoot() => RepositoryRoot.Combine("src");
 
     /// <summary>Reads and resolves every C# file of <paramref name="projectRoot"/> (bin and obj left out).</summary>
     public static SourceDependencies Of(string projectRoot)
