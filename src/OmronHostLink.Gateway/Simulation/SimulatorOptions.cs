@@ -36,7 +36,7 @@ public sealed class SimulatorOptions
     [Range(0, 1_000_000)]
     public int BaudRate { get; set; }
 
-    /// <summary>Fault injection (Seed, Drop, Corrupt, Noise, Truncate, Late, LateBy, Echo); default none.</summary>
+    /// <summary>Fault injection (Seed, Drop, Corrupt, Noise, Truncate, Late, OutOfTurn, LateBy, Echo); default none.</summary>
     public FaultOptions Faults { get; set; } = new();
 
     /// <summary>The unit numbers, defaulted.</summary>

@@ -29,6 +29,7 @@ public sealed class HostLinkClientSettings
         { nameof(WriteRetries), (v, s) => s.WriteRetries = v.Integer() ?? s.WriteRetries },
         { nameof(WordOrder), (v, s) => s.WordOrder = v.Choice<WordOrder>() ?? s.WordOrder },
         { nameof(LocalEcho), (v, s) => s.LocalEcho = v.Boolean() ?? s.LocalEcho },
+        { nameof(VerifyAnswers), (v, s) => s.VerifyAnswers = v.Boolean() ?? s.VerifyAnswers },
         { nameof(FinsResponseWait), (v, s) => s.FinsResponseWait = v.Integer() ?? s.FinsResponseWait },
         { nameof(AllowReadModifyWriteBits), (v, s) => s.AllowReadModifyWriteBits = v.Boolean() ?? s.AllowReadModifyWriteBits },
         { nameof(Model), (v, s) => s.Model = v.Text() ?? s.Model },
@@ -80,6 +81,12 @@ public sealed class HostLinkClientSettings
 
     /// <summary>The line echoes what we send (2-wire RS-485 without echo suppression). Default false.</summary>
     public bool? LocalEcho { get; set; }
+
+    /// <summary>
+    /// Send a TS check behind every C-mode answer and take the answer only when the check comes back next, for lines
+    /// known to deliver answers out of turn (see <see cref="HostLinkClientOptions.VerifyAnswers"/>). Default false.
+    /// </summary>
+    public bool? VerifyAnswers { get; set; }
 
     /// <summary>The FINS response wait time sent in every FINS frame, 0-15 in units of 10 ms. Default 0.</summary>
     public int? FinsResponseWait { get; set; }
@@ -181,6 +188,7 @@ public sealed class HostLinkClientSettings
         options.WriteRetries = WriteRetries ?? options.WriteRetries;
         options.WordOrder = WordOrder ?? options.WordOrder;
         options.LocalEcho = LocalEcho ?? options.LocalEcho;
+        options.VerifyAnswers = VerifyAnswers ?? options.VerifyAnswers;
         options.FinsResponseWait = FinsResponseWait ?? options.FinsResponseWait;
         options.AllowReadModifyWriteBits = AllowReadModifyWriteBits ?? options.AllowReadModifyWriteBits;
         options.Model = Model ?? options.Model;
