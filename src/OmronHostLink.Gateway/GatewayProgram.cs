@@ -12,9 +12,6 @@ namespace OmronHostLink.Gateway;
 /// </summary>
 public static class GatewayProgram
 {
-    /// <summary>The exit code of a configuration that is not valid (a service manager should not restart on it).</summary>
-    public const int InvalidConfiguration = 2;
-
     /// <summary>Runs the gateway until it is stopped (Ctrl+C, SIGTERM, a Windows service stop).</summary>
     /// <param name="args">The command line: configuration overrides such as <c>--Mqtt:Host=broker</c>.</param>
     /// <param name="error">Where configuration problems are written (the console's error stream).</param>
@@ -32,7 +29,7 @@ public static class GatewayProgram
             return Invalid(error, [problem]);
         }
 
-        List<string> problems = ConfigurationPreflight.Check(builder.Configuration);
+        List<string> problems = ConfigurationPreflight.Check(builder.Configuration, GatewayHost.Sections);
         if (ConfigurationPreflight.BadLogLevels(builder.Configuration) is { Count: > 0 } badLevels)
         {
             // Reported above; a valid level in their place lets the host be built and every other section be checked.
@@ -81,7 +78,7 @@ public static class GatewayProgram
             error.WriteLine("  - " + problem);
         }
 
-        return InvalidConfiguration;
+        return ExitCodes.InvalidConfiguration;
     }
 
     private static List<string> Failures(Exception e) => e switch

@@ -5,7 +5,7 @@ namespace OmronHostLink.Gateway.Outputs;
 /// registration order. The pipeline knows no output by name.
 /// </summary>
 /// <param name="outputs">The outputs (<see cref="OpenLinks"/>, MQTT, …).</param>
-public sealed class TagOutputs(IEnumerable<ITagOutput> outputs) : ITagOutput
+internal sealed class TagOutputs(IEnumerable<ITagOutput> outputs) : ITagOutput
 {
     private readonly ITagOutput[] _outputs = outputs.ToArray();
 

@@ -1,7 +1,6 @@
 using System.Diagnostics.Metrics;
 using Microsoft.Extensions.Options;
 using OmronHostLink.Gateway.Configuration;
-using OmronHostLink.Gateway.Mqtt;
 using OmronHostLink.Gateway.Outputs;
 
 namespace OmronHostLink.Gateway.Statistics;
@@ -15,7 +14,7 @@ namespace OmronHostLink.Gateway.Statistics;
 /// polling (this is an output). The demotions are instruments of the gateway's meter:
 /// <c>hostlink.gateway.unit.demoted</c> and <c>hostlink.gateway.unit.demotions</c>.
 /// </summary>
-public sealed class LinkStatistics : ITagOutput, IDisposable
+internal sealed class LinkStatistics : ITagOutput, IDisposable
 {
     /// <summary>Gauge: 1 for a demoted unit, 0 for the others (attributes <c>hostlink.link.name</c>, <c>hostlink.unit</c>).</summary>
     public const string DemotedName = "hostlink.gateway.unit.demoted";
@@ -59,7 +58,7 @@ public sealed class LinkStatistics : ITagOutput, IDisposable
             }
         }
 
-        Meter meter = meterFactory.Create(MqttMetrics.MeterName);
+        Meter meter = meterFactory.Create(GatewayNames.Meter);
         meter.CreateObservableGauge(DemotedName, ObserveDemoted, "{unit}", "1 while a PLC unit is demoted (not polled, probed once a demotion period), else 0.");
         _demotions = meter.CreateCounter<long>(DemotionsName, "{demotion}", "PLC units demoted after staying silent Demotion:After polls in a row.");
 
@@ -89,7 +88,7 @@ public sealed class LinkStatistics : ITagOutput, IDisposable
         DateTimeOffset now = _time.GetUtcNow();
         lock (_gate)
         {
-            return _units.Select(u => u.Value.ToStatistics(u.Key.Link, u.Key.Unit, Name(u.Value.State), _since, now)).ToList();
+            return _units.Select(u => u.Value.ToStatistics(u.Key.Link, u.Key.Unit, u.Value.State.Name(), _since, now)).ToList();
         }
     }
 
@@ -99,7 +98,7 @@ public sealed class LinkStatistics : ITagOutput, IDisposable
         lock (_gate)
         {
             return _units.TryGetValue((link, unit), out Tally? tally)
-                ? tally.ToStatistics(link, unit, Name(tally.State), _since, _time.GetUtcNow())
+                ? tally.ToStatistics(link, unit, tally.State.Name(), _since, _time.GetUtcNow())
                 : null;
         }
     }
@@ -115,7 +114,7 @@ public sealed class LinkStatistics : ITagOutput, IDisposable
                 total.Add(unit);
             }
 
-            string state = _links.TryGetValue(link, out LinkState linkState) ? MqttTagSink.LinkStateName(linkState) : "offline";
+            string state = _links.TryGetValue(link, out LinkState linkState) ? linkState.Name() : LinkState.Offline.Name();
             return total.ToStatistics(link, null, state, _since, _time.GetUtcNow());
         }
     }
@@ -171,12 +170,6 @@ public sealed class LinkStatistics : ITagOutput, IDisposable
     /// <inheritdoc/>
     public void Dispose() => _listener.Dispose();
 
-    private static string Name(UnitState state) => state switch
-    {
-        UnitState.Online => "online",
-        UnitState.CommError => "comm-error",
-        _ => "demoted",
-    };
 
     private Tally TallyOf(string link, int unit)
     {

@@ -1,5 +1,5 @@
 using System.Text.Json.Serialization;
-using OmronHostLink.Gateway.Mqtt;
+using OmronHostLink.Gateway.Outputs;
 
 namespace OmronHostLink.Gateway.Statistics;
 
@@ -7,7 +7,7 @@ namespace OmronHostLink.Gateway.Statistics;
 /// What a technician reads about a link or one PLC unit on it, counted since the gateway started: the payload of the
 /// retained statistics topics.
 /// </summary>
-public sealed class UnitStatistics
+internal sealed class UnitStatistics
 {
     /// <summary>The link's configured name.</summary>
     [JsonPropertyName("link")]

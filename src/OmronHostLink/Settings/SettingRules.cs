@@ -108,6 +108,12 @@ internal static class SettingRules
         host = "";
         port = 0;
         error = null;
+        if (text.IndexOf("://", StringComparison.Ordinal) >= 0)
+        {
+            error = $"'{text}' is a URL; write host:port without a scheme (e.g. 192.0.2.10:4001), or write a section with Host and Port";
+            return false;
+        }
+
         int colon = text.LastIndexOf(':');
         string h = colon > 0 ? text.Substring(0, colon).Trim() : "";
         string p = colon > 0 ? text.Substring(colon + 1).Trim() : "";

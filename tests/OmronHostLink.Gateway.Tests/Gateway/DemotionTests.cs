@@ -2,6 +2,7 @@ using System.Diagnostics.Metrics;
 using Microsoft.Extensions.DependencyInjection;
 using Microsoft.Extensions.Diagnostics.Metrics.Testing;
 using Microsoft.Extensions.Hosting;
+using OmronHostLink.Gateway.Polling;
 using OmronHostLink.Gateway.Statistics;
 using OmronHostLink.Gateway.Tests.Mqtt;
 using OmronHostLink.Simulator;

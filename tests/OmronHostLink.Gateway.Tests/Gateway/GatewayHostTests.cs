@@ -4,11 +4,12 @@ using System.Net.Sockets;
 using Microsoft.Extensions.DependencyInjection;
 using Microsoft.Extensions.Hosting;
 using Microsoft.Extensions.Logging;
-using Xunit.Abstractions;
+using OmronHostLink.Gateway;
+using OmronHostLink.Gateway.Polling;
+using OmronHostLink.Gateway.Tests.Mqtt;
 using OmronHostLink.Simulator;
 using OmronHostLink.Simulator.Hosting;
-using OmronHostLink.Gateway;
-using OmronHostLink.Gateway.Tests.Mqtt;
+using Xunit.Abstractions;
 
 namespace OmronHostLink.Gateway.Tests.Gateway;
 
@@ -381,7 +382,7 @@ public sealed class GatewayHostTests(ITestOutputHelper output) : IDisposable
             await host.StopAsync();
         }
 
-        logs.WithEvent(GatewayLog.Events.SimulatorStarted).Should().ContainSingle();
+        logs.WithEvent(OmronHostLink.Gateway.Simulation.SimulatorLog.Events.Started).Should().ContainSingle();
     }
 
     public static TheoryData<string, string?, string> BadSettings => new()

@@ -1,9 +1,10 @@
 using System.Diagnostics;
 using System.Globalization;
 using Microsoft.Extensions.Hosting;
-using OmronHostLink.Simulator;
-using OmronHostLink.Gateway.Tests.Mqtt;
 using OmronHostLink.Gateway;
+using OmronHostLink.Gateway.Polling;
+using OmronHostLink.Gateway.Tests.Mqtt;
+using OmronHostLink.Simulator;
 using Xunit.Abstractions;
 
 namespace OmronHostLink.Gateway.Tests.Gateway;

@@ -1,10 +1,11 @@
 using Microsoft.Extensions.DependencyInjection;
 using Microsoft.Extensions.Hosting;
 using MQTTnet;
-using OmronHostLink.Simulator;
-using OmronHostLink.Simulator.Hosting;
 using OmronHostLink.Gateway;
 using OmronHostLink.Gateway.Mqtt;
+using OmronHostLink.Gateway.Polling;
+using OmronHostLink.Simulator;
+using OmronHostLink.Simulator.Hosting;
 
 namespace OmronHostLink.Gateway.Tests.Mqtt;
 

@@ -2,6 +2,7 @@ using System.Text.Json;
 using Microsoft.Extensions.Hosting;
 using OmronHostLink.Gateway;
 using OmronHostLink.Gateway.Mqtt;
+using OmronHostLink.Gateway.Polling;
 using OmronHostLink.Simulator;
 using Xunit.Abstractions;
 

@@ -1,9 +1,10 @@
 using System.Text;
 using System.Text.Json;
 using Microsoft.Extensions.Hosting;
-using OmronHostLink.Simulator;
 using OmronHostLink.Gateway;
 using OmronHostLink.Gateway.Mqtt;
+using OmronHostLink.Gateway.Polling;
+using OmronHostLink.Simulator;
 using Xunit.Abstractions;
 
 namespace OmronHostLink.Gateway.Tests.Mqtt;

@@ -1,6 +1,7 @@
 using System.Diagnostics;
 using System.Net;
 using Microsoft.Extensions.Hosting;
+using OmronHostLink.Gateway.Polling;
 using OmronHostLink.Simulator;
 using OmronHostLink.Simulator.Hosting;
 
