@@ -109,9 +109,9 @@ internal sealed class TransactionAttempt
         Reset();
         StartedAt = _time.GetTimestamp();
         bool shouldVerify = VerifyAnswers && IsUnmatched(request);
-        bool confirm = shouldVerify && request.ReadOnly && _answerTiming.Owed > 0;
+        bool carryTwice = shouldVerify && request.ReadOnly && _answerTiming.Owed > 0;
         await CarryOnceAsync(channel, request, shouldVerify).ConfigureAwait(false);
-        if (confirm)
+        if (carryTwice)
         {
             int length = _textLength;
             if (_confirmed.Length < length)
@@ -257,7 +257,7 @@ internal sealed class TransactionAttempt
 
         if (_early is not null || verify)
         {
-            await ConfirmAsync(channel, request).ConfigureAwait(false);
+            await CheckWithTestAsync(channel, request).ConfigureAwait(false);
         }
     }
 
@@ -271,7 +271,7 @@ internal sealed class TransactionAttempt
     /// Puts the answer just read to a TS check: the echo must be the next frame, and an answer that came too early
     /// stands only if the echo shows the line runs faster than configured.
     /// </summary>
-    private async ValueTask ConfirmAsync(FrameChannel channel, HostLinkRequest request)
+    private async ValueTask CheckWithTestAsync(FrameChannel channel, HostLinkRequest request)
     {
         bool lineAsConfigured = await _resynchroniser.VerifyAsync(channel, request.Unit, request.Header).ConfigureAwait(false);
         if (_early is { } early && lineAsConfigured)
@@ -290,7 +290,7 @@ internal sealed class TransactionAttempt
     /// Judges an answer frame of <paramref name="length"/> characters by when it was complete (<see cref="AnswerTiming"/>).
     /// One complete before the last write and the frame itself could have crossed the line is a late answer to an earlier
     /// command, unless the line runs faster than configured: a one-frame answer is put to a TS check once read
-    /// (<see cref="ConfirmAsync"/>), a frame of a longer answer is refused at once (a TS in its middle would ask the PLC
+    /// (<see cref="CheckWithTestAsync"/>), a frame of a longer answer is refused at once (a TS in its middle would ask the PLC
     /// for the next frame). A first frame that comes later than the unit has lately been answering, while an earlier
     /// answer is owed, is refused at once: it may be that answer standing in for one lost on the line.
     /// </summary>
