@@ -54,7 +54,7 @@ internal sealed class AnswerTiming
     private readonly LineTiming _timing;
     private readonly TimeProvider _time;
     private readonly ILogger _logger;
-    private readonly Queue<long> _owed = new();
+    private readonly List<(int Unit, long At)> _owed = new();
     private TimeSpan _latestSettled;
     private readonly string _link;
     // Indexed by unit: a frame's unit number is two decimal digits.
@@ -79,21 +79,22 @@ internal sealed class AnswerTiming
     public bool FasterThanConfigured => _fasterThanConfigured;
 
     /// <summary>
-    /// Answers to timed-out exchanges that may still come, less the frames nobody asked for seen since (each taken to be
-    /// the oldest owed answer), less those owed longer than their lifetime (<see cref="LeastOwedLifetime"/>).
+    /// Answers of <paramref name="unit"/> to timed-out exchanges that may still come, less the frames of that unit nobody
+    /// asked for seen since (each taken to be its oldest owed answer), less those owed longer than their lifetime
+    /// (<see cref="LeastOwedLifetime"/>). Only a unit's own late answer can pass for its answer: another unit's carries
+    /// its unit number.
     /// </summary>
-    public int Owed
+    public int Owed(int unit)
     {
-        get
+        TimeSpan lifetime = _latestSettled + _latestSettled > LeastOwedLifetime ? _latestSettled + _latestSettled : LeastOwedLifetime;
+        _owed.RemoveAll(o => _time.GetElapsedTime(o.At) > lifetime);
+        int count = 0;
+        foreach ((int owedUnit, _) in _owed)
         {
-            TimeSpan lifetime = _latestSettled + _latestSettled > LeastOwedLifetime ? _latestSettled + _latestSettled : LeastOwedLifetime;
-            while (_owed.Count > 0 && _time.GetElapsedTime(_owed.Peek()) > lifetime)
-            {
-                _owed.Dequeue();
-            }
-
-            return _owed.Count;
+            count += owedUnit == unit ? 1 : 0;
         }
+
+        return count;
     }
 
     /// <summary>The least time <paramref name="characters"/> (both ways) can take on the line, tolerance taken off.</summary>
@@ -112,7 +113,7 @@ internal sealed class AnswerTiming
     public bool IsLateWhileOwed(int unit, TimeSpan elapsed, int sent, int received, out TimeSpan usual)
     {
         usual = TimeSpan.Zero;
-        if (!Armed || (uint)unit >= (uint)_observations.Length || _observations[unit] < LeastObservations || Owed == 0)
+        if (!Armed || (uint)unit >= (uint)_observations.Length || _observations[unit] < LeastObservations || Owed(unit) == 0)
         {
             return false;
         }
@@ -137,26 +138,47 @@ internal sealed class AnswerTiming
         _observations[unit]++;
     }
 
-    /// <summary>An exchange timed out after its command was sent: its answer may still come, out of turn.</summary>
-    public void AnswerOwed()
+    /// <summary>An exchange with <paramref name="unit"/> timed out after its command was sent: its answer may still come, out of turn.</summary>
+    public void AnswerOwed(int unit)
     {
         if (_owed.Count == MostOwed)
         {
-            _owed.Dequeue();
+            _owed.RemoveAt(0);
         }
 
-        _owed.Enqueue(_time.GetTimestamp());
+        _owed.Add((unit, _time.GetTimestamp()));
     }
 
-    /// <summary>Frames nobody asked for were seen (discarded, refused or out of turn): they may have been owed answers.</summary>
-    public void Settled(int frames)
+    /// <summary>A frame nobody asked for was seen (discarded, refused or out of turn): it may have been an owed answer.</summary>
+    /// <param name="frame">The frame, or what is left of it; its unit number is read from <c>@</c> and two digits.</param>
+    public void Settled(ReadOnlySpan<byte> frame)
     {
-        for (int i = 0; i < frames && _owed.Count > 0; i++)
+        if (frame.Length < 3 || frame[0] != (byte)'@' || !IsDigit(frame[1]) || !IsDigit(frame[2]))
         {
-            TimeSpan late = _time.GetElapsedTime(_owed.Dequeue());
+            return;
+        }
+
+        int unit = ((frame[1] - '0') * 10) + (frame[2] - '0');
+        int oldest = _owed.FindIndex(o => o.Unit == unit);
+        if (oldest >= 0)
+        {
+            TimeSpan late = _time.GetElapsedTime(_owed[oldest].At);
             _latestSettled = late > _latestSettled ? late : _latestSettled;
+            _owed.RemoveAt(oldest);
         }
     }
+
+    /// <summary>Settles every frame that starts in <paramref name="bytes"/> (bytes discarded at once).</summary>
+    public void SettledAll(ReadOnlySpan<byte> bytes)
+    {
+        while (bytes.IndexOf((byte)'@') is int at and >= 0)
+        {
+            Settled(bytes.Slice(at));
+            bytes = bytes.Slice(at + 1);
+        }
+    }
+
+    private static bool IsDigit(byte b) => b is >= (byte)'0' and <= (byte)'9';
 
     /// <summary>The transport was opened anew: nothing sent on the old one can arrive on it.</summary>
     /// <param name="timed">

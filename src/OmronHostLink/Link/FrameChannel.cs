@@ -302,14 +302,15 @@ internal sealed class FrameChannel : IValueTaskSource<bool>
     public ValueTask<int> ReadEchoAsync(ReadOnlyMemory<byte> sent, TimeSpan timeout)
         => TakeAsync(expectStart: false, sent, timeout);
 
-    /// <summary>Throws away everything received and not yet read.</summary>
+    /// <summary>Throws away everything received and not yet read; the frames that start in it settle owed answers.</summary>
     /// <returns>The number of bytes discarded.</returns>
-    public int Discard()
+    public int Discard(AnswerTiming? settle = null)
     {
         int discarded;
         bool resume;
         lock (_lock)
         {
+            settle?.SettledAll(_received.HeldBytes);
             discarded = _received.Clear();
             resume = ConsumedLocked();
         }

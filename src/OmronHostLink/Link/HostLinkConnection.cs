@@ -225,7 +225,6 @@ internal sealed class HostLinkConnection : IAsyncDisposable, IDisposable
                 // Nothing was outstanding, so a frame that came is an answer out of turn: the line is not in step. (Bytes
                 // without a frame's start are noise, which the next read skips.)
                 HostLinkLog.ArrivedWhileIdle(_logger, LinkName, channel.Held);
-                _answerTiming.Settled(1);
                 _status = new LinkStatus(LinkState.NeedsResync, unit);
             }
 

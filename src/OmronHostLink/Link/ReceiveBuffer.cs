@@ -85,6 +85,9 @@ internal sealed class ReceiveBuffer
         return error is null ? sent.Length : 0;
     }
 
+    /// <summary>What is held.</summary>
+    public ReadOnlySpan<byte> HeldBytes => _bytes.AsSpan(_start, Held);
+
     /// <summary>Whether a frame starts (<c>@</c>) in what is held.</summary>
     public bool HoldsFrameStart() => _bytes.AsSpan(_start, Held).IndexOf((byte)'@') >= 0;
 

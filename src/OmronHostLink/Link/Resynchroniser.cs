@@ -56,11 +56,7 @@ internal sealed class Resynchroniser
     public async ValueTask<ResyncOutcome> FenceAsync(FrameChannel channel, int failedUnit, int requestUnit)
     {
         Flood = null;
-        Discarded = channel.Discard();
-        if (Discarded > 0)
-        {
-            _answerTiming.Settled(1);
-        }
+        Discarded = channel.Discard(_answerTiming);
 
         ResyncOutcome outcome = ResyncOutcome.Unanswered;
         for (int attempt = 0; attempt < FenceAttempts; attempt++)
@@ -88,11 +84,7 @@ internal sealed class Resynchroniser
     /// <returns>The round-trip time, or null when the unit did not echo the token in time.</returns>
     public async ValueTask<TimeSpan?> ProbeAsync(FrameChannel channel, int unit, TimeSpan turnaround)
     {
-        Discarded = channel.Discard();
-        if (Discarded > 0)
-        {
-            _answerTiming.Settled(1);
-        }
+        Discarded = channel.Discard(_answerTiming);
 
         long started = _time.GetTimestamp();
         ResyncOutcome outcome = await FenceOnceAsync(channel, unit, turnaround).ConfigureAwait(false);
@@ -111,22 +103,12 @@ internal sealed class Resynchroniser
     {
         (int frameLength, long sentAt) = await SendFenceAsync(channel, unit).ConfigureAwait(false);
         TimeSpan timeout = _timing.FrameDeadline(frameLength, frameLength, _turnaround);
-        int n;
-        try
-        {
-            n = await channel.ReadFrameAsync(expectStart: true, timeout).ConfigureAwait(false);
-        }
-        catch (Exception e) when (e is HostLinkTimeoutException or OperationCanceledException)
-        {
-            // The echo may still come; it settles itself when it is discarded.
-            _answerTiming.AnswerOwed();
-            throw;
-        }
+        int n = await channel.ReadFrameAsync(expectStart: true, timeout).ConfigureAwait(false);
 
         if (!channel.Frame(n).SequenceEqual(_fence.AsSpan(0, frameLength)))
         {
             // A damaged frame is refused as such (its FCS); a sound one that is not the echo came out of turn.
-            _answerTiming.Settled(1);
+            _answerTiming.Settled(channel.Frame(n));
             FrameParser.ParseFirst(channel.Frame(n));
             throw new HostLinkFrameException(
                 FrameError.Stale,
@@ -170,8 +152,6 @@ internal sealed class Resynchroniser
             TimeSpan left = timeout - _time.GetElapsedTime(started);
             if (left <= TimeSpan.Zero)
             {
-                // The echo may still come; it settles itself when it is discarded.
-                _answerTiming.AnswerOwed();
                 return outcome;
             }
 
@@ -182,7 +162,6 @@ internal sealed class Resynchroniser
             }
             catch (HostLinkTimeoutException)
             {
-                _answerTiming.AnswerOwed();
                 return outcome;
             }
             catch (HostLinkFrameException e)
@@ -200,7 +179,7 @@ internal sealed class Resynchroniser
             }
 
             Discarded += n;
-            _answerTiming.Settled(1);
+            _answerTiming.Settled(channel.Frame(n));
         }
     }
 

@@ -97,9 +97,11 @@ internal sealed class TransactionAttempt
     };
 
     /// <summary>
-    /// Carries <paramref name="request"/> once and decodes its answer. With <see cref="VerifyAnswers"/>, a read whose
-    /// answer came while an earlier answer is still owed (<see cref="AnswerTiming.Owed"/>) is carried a second time and
-    /// taken only when both answers agree: the owed answer may have stood in for this one's, lost on the line.
+    /// Carries <paramref name="request"/> and decodes its answer. While an earlier command's answer is owed
+    /// (<see cref="AnswerTiming.Owed"/>), a C-mode answer is checked with a TS behind it: a late answer taken for this
+    /// command's would have this command's own right behind it. With <see cref="VerifyAnswers"/> every C-mode answer is
+    /// so checked, and a read carried while an answer is owed is carried a second time and taken only when both answers
+    /// agree: the owed answer may have stood in for this one's, lost on the line.
     /// </summary>
 #if NET
     [AsyncMethodBuilder(typeof(PoolingAsyncValueTaskMethodBuilder<>))]
@@ -108,8 +110,9 @@ internal sealed class TransactionAttempt
     {
         Reset();
         StartedAt = _time.GetTimestamp();
-        bool shouldVerify = VerifyAnswers && IsUnmatched(request);
-        bool carryTwice = shouldVerify && request.ReadOnly && _answerTiming.Owed > 0;
+        bool owed = _answerTiming.Owed(request.Unit) > 0;
+        bool shouldVerify = (VerifyAnswers || owed) && IsUnmatched(request);
+        bool carryTwice = VerifyAnswers && shouldVerify && request.ReadOnly && owed;
         await CarryOnceAsync(channel, request, shouldVerify).ConfigureAwait(false);
         if (carryTwice)
         {
@@ -218,7 +221,7 @@ internal sealed class TransactionAttempt
             catch (Exception e) when (e is HostLinkTimeoutException or OperationCanceledException)
             {
                 // The command went out and nothing came back: its answer may yet arrive, out of turn.
-                _answerTiming.AnswerOwed();
+                _answerTiming.AnswerOwed(request.Unit);
                 throw;
             }
 
@@ -249,7 +252,6 @@ internal sealed class TransactionAttempt
             // A PLC sends one answer a command: another frame already behind it means the line is out of step, and the
             // frame taken may have been an earlier command's late answer with this command's own right behind it. (A
             // stray byte a 2-wire line leaves when the PLC releases it is no frame: the next read skips it as noise.)
-            _answerTiming.Settled(1);
             throw new HostLinkFrameException(
                 FrameError.Stale,
                 $"Another frame came right behind the answer to {request.Header} from unit {request.Unit:D2}: the line delivers answers out of turn, so the answer taken may have been an earlier command's.");
@@ -315,6 +317,8 @@ internal sealed class TransactionAttempt
 
         if (_answerTiming.IsLateWhileOwed(request.Unit, elapsed, _sentChars, length, out TimeSpan usual))
         {
+            // Taken to be the owed answer: this command's own was probably lost.
+            _answerTiming.Settled(channel.Frame(length));
             throw new HostLinkFrameException(
                 FrameError.Stale,
                 $"An answer to {request.Header} from unit {request.Unit:D2} came {(elapsed - _timing.WireTime(_sentChars + length)).TotalMilliseconds:0} ms after its characters could have crossed the line, where the unit has lately answered within {usual.TotalMilliseconds:0} ms, while the answer to an earlier command that timed out may still come: it may be that answer, so it is not taken.");

@@ -79,6 +79,39 @@ public sealed class StaleAnswerTests
     });
 
     [Fact]
+    public Task While_a_unit_owes_an_answer_its_answers_are_checked_with_a_TS_behind_them_and_other_units_answers_are_not() => OffContext(async () =>
+    {
+        await using var rig = Rig.Start();
+
+        // Unit 5's read times out: its answer may still come, and only it could pass for unit 5's answer.
+        await rig.TimeOutAsync("D100", unit: 5);
+        Task<ushort[]> read = rig.Client.ReadWordsAsync("D200", 3);
+        string fence = await rig.Plc.ReadFrameAsync();
+        fence.Should().StartWith("@05TS", "the link fences first at the unit that failed");
+        rig.Time.Advance(Timing.FrameDeadline(fence.Length, fence.Length, Allowance));
+        await rig.EchoFenceAsync(inWireTime: true);
+        string command = await rig.Plc.ReadFrameAsync();
+        command.Should().StartWith("@00RD0200");
+        rig.Time.Advance(Timing.WireTime(command.Length + RdAnswer.Length));
+        await rig.Plc.WriteAsync(RdAnswer);
+        (await read).Should().Equal(RdWords);
+        rig.Plc.Received.Should().HaveCount(4, "unit 5's timed-out read, its fence, unit 0's fence and unit 0's read: no check behind unit 0's answer");
+
+        // Unit 0's own read times out: now unit 0's next answer is checked.
+        await rig.TimeOutAsync("D100");
+        Task<ushort[]> checkedRead = rig.Client.ReadWordsAsync("D300", 3);
+        await rig.EchoFenceAsync(inWireTime: true);
+        command = await rig.Plc.ReadFrameAsync();
+        rig.Time.Advance(Timing.WireTime(command.Length + RdAnswer.Length));
+        await rig.Plc.WriteAsync(RdAnswer);
+        string check = await rig.Plc.ReadFrameAsync();
+        check.Should().StartWith("@00TS", "a late answer to unit 0's timed-out read could pass for this one's: a TS behind it shows whether another frame follows");
+        rig.Time.Advance(Timing.WireTime(2 * check.Length));
+        await rig.Plc.WriteAsync(check);
+        (await checkedRead).Should().Equal(RdWords);
+    });
+
+    [Fact]
     public Task A_line_faster_than_configured_is_named_once_and_its_answers_are_taken() => OffContext(async () =>
     {
         await using var rig = Rig.Start();
@@ -249,11 +282,11 @@ public sealed class StaleAnswerTests
             return new Rig(HostLinkClient.ForStream(host, options), new ManualPlc(plc), time, logs, factory);
         }
 
-        /// <summary>A read of 3 words at <paramref name="address"/> that nobody answers, run to its timeout.</summary>
-        public async Task TimeOutAsync(string address)
+        /// <summary>A read of 3 words at <paramref name="address"/> of <paramref name="unit"/> that nobody answers, run to its timeout.</summary>
+        public async Task TimeOutAsync(string address, int unit = 0)
         {
-            Task<ushort[]> read = Client.ReadWordsAsync(address, 3);
-            (await Plc.ReadFrameAsync()).Should().StartWith("@00RD", "the link is in step: the command goes out at once");
+            Task<ushort[]> read = Client.Unit(unit).ReadWordsAsync(address, 3);
+            (await Plc.ReadFrameAsync()).Should().StartWith($"@{unit:D2}RD", "the link is in step: the command goes out at once");
             Time.Advance(TimeSpan.FromSeconds(1));
             await FluentActions.Awaiting(() => read).Should().ThrowAsync<HostLinkTimeoutException>();
         }
