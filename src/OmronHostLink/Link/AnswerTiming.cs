@@ -11,7 +11,7 @@ namespace OmronHostLink.Link;
 /// <item><b>Too early.</b> A frame of N characters that answers M characters sent cannot be complete before (M + N)
 /// characters have crossed the line.</item>
 /// <item><b>Late while an answer is owed.</b> After an exchange timed out with its command sent, its answer may still
-/// come (<see cref="AnswerOwed"/>) until a frame nobody asked for is seen (<see cref="Settled"/>). Meanwhile an answer
+/// come (<see cref="AnswerOwed"/>) until a frame nobody asked for is seen (<see cref="Settled(ReadOnlySpan{byte})"/>). Meanwhile an answer
 /// that comes later than the unit has lately been answering (its recent longest turnaround, two character times and
 /// <see cref="LateMargin"/>) may be that answer standing in for one lost on the line.</item>
 /// </list>
@@ -87,7 +87,7 @@ internal sealed class AnswerTiming
     public int Owed(int unit)
     {
         TimeSpan lifetime = _latestSettled + _latestSettled > LeastOwedLifetime ? _latestSettled + _latestSettled : LeastOwedLifetime;
-        _owed.RemoveAll(o => _time.GetElapsedTime(o.At) > lifetime);
+        _owed.RemoveAll(o => _time.GetElapsedTime(o.At) >= lifetime);
         int count = 0;
         foreach ((int owedUnit, _) in _owed)
         {
@@ -158,7 +158,12 @@ internal sealed class AnswerTiming
             return;
         }
 
-        int unit = ((frame[1] - '0') * 10) + (frame[2] - '0');
+        Settled(((frame[1] - '0') * 10) + (frame[2] - '0'));
+    }
+
+    /// <summary>An answer from <paramref name="unit"/> was refused as a late one: it may have been an owed answer.</summary>
+    public void Settled(int unit)
+    {
         int oldest = _owed.FindIndex(o => o.Unit == unit);
         if (oldest >= 0)
         {

@@ -278,6 +278,7 @@ internal sealed class TransactionAttempt
         bool lineAsConfigured = await _resynchroniser.VerifyAsync(channel, request.Unit, request.Header).ConfigureAwait(false);
         if (_early is { } early && lineAsConfigured)
         {
+            _answerTiming.Settled(request.Unit);
             throw new HostLinkFrameException(FrameError.Stale, early);
         }
     }
@@ -304,6 +305,7 @@ internal sealed class TransactionAttempt
             _early = $"An answer to {request.Header} from unit {request.Unit:D2} was complete {Math.Max(0, elapsed.TotalMilliseconds):0.0} ms after the command was sent, before the command and its answer could have crossed a {_timing.BaudRate} bps line ({_answerTiming.Earliest(_sentChars + length).TotalMilliseconds:0.0} ms): it is a late answer to an earlier command, not this one.";
             if (!single)
             {
+                _answerTiming.Settled(channel.Frame(length));
                 throw new HostLinkFrameException(FrameError.Stale, _early);
             }
 
