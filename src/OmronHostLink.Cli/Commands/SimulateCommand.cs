@@ -35,10 +35,11 @@ internal static class SimulateCommand
         var noise = OptionValues.Probability("--fault-noise", "Probability of sending noise bytes before a frame.");
         var truncate = OptionValues.Probability("--fault-truncate", "Probability of cutting a frame short.");
         var late = OptionValues.Probability("--fault-late", "Probability of answering late (after the host's deadline).");
+        var outOfTurn = OptionValues.Probability("--fault-out-of-turn", "Probability of holding an answer back and sending it between the answers to later commands.");
         var echo = OptionValues.Probability("--fault-echo", "Probability of echoing the command first, as a 2-wire RS-485 line does.");
         Option<TimeSpan?> lateBy = Durations.Option("--fault-late-by", "How late a late answer comes.", TimeSpan.FromSeconds(1), TimeSpan.Zero, TimeSpan.FromMinutes(10));
         Option<int> seed = OptionValues.Integer("--fault-seed", "Seed of the fault generator (same seed, same faults).", 1, int.MinValue, int.MaxValue, "n");
-        foreach (Option o in new Option[] { tcp, port, units, shared, readyFile, mode, memory, baud, dataBits, parity, stopBits, turnaround, model, compatibleMode, drop, corrupt, noise, truncate, late, lateBy, echo, seed })
+        foreach (Option o in new Option[] { tcp, port, units, shared, readyFile, mode, memory, baud, dataBits, parity, stopBits, turnaround, model, compatibleMode, drop, corrupt, noise, truncate, late, outOfTurn, lateBy, echo, seed })
         {
             command.Add(o);
         }
@@ -72,6 +73,7 @@ internal static class SimulateCommand
                     Noise = parse.GetValue(noise),
                     Truncate = parse.GetValue(truncate),
                     Late = parse.GetValue(late),
+                    OutOfTurn = parse.GetValue(outOfTurn),
                     LateBy = parse.GetValue(lateBy) ?? TimeSpan.FromSeconds(1),
                     Echo = parse.GetValue(echo),
                 },

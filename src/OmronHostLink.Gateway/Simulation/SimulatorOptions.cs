@@ -33,7 +33,7 @@ internal sealed class SimulatorOptions
     /// <summary>Emulated line speed (0 = as fast as TCP goes). Default 0.</summary>
     public int BaudRate { get; set; }
 
-    /// <summary>Fault injection (Seed, Drop, Corrupt, Noise, Truncate, Late, LateBy, Echo); default none.</summary>
+    /// <summary>Fault injection (Seed, Drop, Corrupt, Noise, Truncate, Late, OutOfTurn, LateBy, Echo); default none.</summary>
     public FaultOptions Faults { get; set; } = new();
 
     /// <summary>The unit numbers, defaulted.</summary>

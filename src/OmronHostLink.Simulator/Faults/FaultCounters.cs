@@ -9,6 +9,7 @@ public sealed class FaultCounters
     private long _noise;
     private long _truncated;
     private long _late;
+    private long _outOfTurn;
     private long _echoed;
 
     /// <summary>Answer frames considered for faults (every frame the PLC sends except the bare CR handshake).</summary>
@@ -29,15 +30,18 @@ public sealed class FaultCounters
     /// <summary>Frames sent late.</summary>
     public long Late => Interlocked.Read(ref _late);
 
+    /// <summary>Frames sent out of turn, after answers to later commands.</summary>
+    public long OutOfTurn => Interlocked.Read(ref _outOfTurn);
+
     /// <summary>Received frames echoed back.</summary>
     public long Echoed => Interlocked.Read(ref _echoed);
 
     /// <summary>All faults injected.</summary>
-    public long Total => Dropped + Corrupted + Noise + Truncated + Late + Echoed;
+    public long Total => Dropped + Corrupted + Noise + Truncated + Late + OutOfTurn + Echoed;
 
     /// <inheritdoc/>
     public override string ToString()
-        => $"frames {Frames}: dropped {Dropped}, corrupted {Corrupted}, noise {Noise}, truncated {Truncated}, late {Late}, echoed {Echoed}";
+        => $"frames {Frames}: dropped {Dropped}, corrupted {Corrupted}, noise {Noise}, truncated {Truncated}, late {Late}, out of turn {OutOfTurn}, echoed {Echoed}";
 
     internal void Count(FaultPlan plan)
     {
@@ -66,6 +70,11 @@ public sealed class FaultCounters
         if (plan.Late)
         {
             Interlocked.Increment(ref _late);
+        }
+
+        if (plan.OutOfTurn)
+        {
+            Interlocked.Increment(ref _outOfTurn);
         }
 
         if (plan.Echo)

@@ -49,6 +49,9 @@ internal sealed class FaultInjector
             int truncateTo = _random.Next(1, Math.Max(2, frame.Length));
             bool late = _random.NextDouble() < _options.Late;
             bool echo = _random.NextDouble() < _options.Echo;
+
+            // Drawn only when asked for, so the faults a seed gives without it stay the same.
+            bool outOfTurn = _options.OutOfTurn > 0 && _random.NextDouble() < _options.OutOfTurn;
             plan = new FaultPlan
             {
                 Drop = drop,
@@ -56,6 +59,7 @@ internal sealed class FaultInjector
                 Noise = noise ? noiseBytes : null,
                 TruncateTo = truncate && frame.Length > 1 ? truncateTo : -1,
                 Late = late,
+                OutOfTurn = outOfTurn,
                 Echo = echo,
             };
         }

@@ -26,14 +26,22 @@ public sealed class FaultOptions
     /// <summary>Probability of answering late, <see cref="LateBy"/> after the answer was due (after the host's deadline).</summary>
     public double Late { get; set; }
 
-    /// <summary>How late a late answer comes. Default one second.</summary>
+    /// <summary>
+    /// Probability of delivering the answer out of turn: it is held back <see cref="LateBy"/> while the PLC goes on
+    /// answering later commands, then sent between them, as radio modems, protocol converters and buffering
+    /// serial-device servers do. A host that cannot tell it from the answer to a later command of the same shape takes
+    /// another command's data.
+    /// </summary>
+    public double OutOfTurn { get; set; }
+
+    /// <summary>How late a late (or out-of-turn) answer comes. Default one second.</summary>
     public TimeSpan LateBy { get; set; } = TimeSpan.FromSeconds(1);
 
     /// <summary>Probability of echoing the received frame back before the answer, as a 2-wire RS-485 line does.</summary>
     public double Echo { get; set; }
 
     /// <summary>Whether any fault may happen.</summary>
-    public bool Any => Drop > 0 || Corrupt > 0 || Noise > 0 || Truncate > 0 || Late > 0 || Echo > 0;
+    public bool Any => Drop > 0 || Corrupt > 0 || Noise > 0 || Truncate > 0 || Late > 0 || OutOfTurn > 0 || Echo > 0;
 
     /// <summary>Checks the options.</summary>
     /// <exception cref="ArgumentException">A probability is outside 0-1, or <see cref="LateBy"/> is negative.</exception>
@@ -44,6 +52,7 @@ public sealed class FaultOptions
         Check(Noise, nameof(Noise));
         Check(Truncate, nameof(Truncate));
         Check(Late, nameof(Late));
+        Check(OutOfTurn, nameof(OutOfTurn));
         Check(Echo, nameof(Echo));
         if (LateBy < TimeSpan.Zero)
         {

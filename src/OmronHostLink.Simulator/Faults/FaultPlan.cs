@@ -18,6 +18,9 @@ internal sealed class FaultPlan
 
     public bool Late { get; init; }
 
+    /// <summary>Held back and sent while later commands are answered.</summary>
+    public bool OutOfTurn { get; init; }
+
     public bool Echo { get; init; }
 
     /// <summary>The bytes of the frame with corruption and truncation applied.</summary>

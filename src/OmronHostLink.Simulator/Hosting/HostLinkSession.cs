@@ -18,6 +18,9 @@ internal sealed class HostLinkSession
     private readonly HostLinkExchange _exchange;
     private readonly WirePacer _pacer;
 
+    // The line carries one frame at a time: an answer sent out of turn waits for the one being sent, and the other way round.
+    private readonly SemaphoreSlim _line = new(1, 1);
+
     public HostLinkSession(VirtualPlc plc)
         : this([plc])
     {
@@ -136,26 +139,84 @@ internal sealed class HostLinkSession
         if (plan.Echo)
         {
             // On a 2-wire line the host hears its own command; that happens while it is sent, before the turnaround.
-            await _pacer.WriteAsync(stream, received, cancellationToken).ConfigureAwait(false);
+            await SendOnLineAsync(stream, received, cancellationToken).ConfigureAwait(false);
+        }
+        else if (_pacer.Enabled)
+        {
+            // The command reached us at once over the stream; on the line its last character arrives only after its
+            // wire time, and the turnaround starts then.
+            turnaround += _pacer.WireTime(received.Length);
         }
 
-        if (plan.Late)
+        if (plan.Late || plan.OutOfTurn)
         {
             turnaround += faults.LateBy;
         }
 
-        if (turnaround > TimeSpan.Zero)
+        if (plan.OutOfTurn)
         {
-            // With wire-time emulation the turnaround is timed as precisely as the characters (Task.Delay can be
-            // late by milliseconds on a loaded machine); without it, a timer is enough.
-            await (_pacer.Enabled ? _pacer.DelayAsync(turnaround, cancellationToken) : DelayAtLeastAsync(turnaround, cancellationToken)).ConfigureAwait(false);
+            // Held back while the PLC goes on answering later commands.
+            _ = SendOutOfTurnAsync(stream, plan, reply.Bytes!, turnaround, cancellationToken);
+            return;
         }
 
-        if (plan.Noise is { } noise)
+        await WaitAsync(turnaround, cancellationToken).ConfigureAwait(false);
+        await SendAnswerAsync(stream, plan, reply.Bytes!, cancellationToken).ConfigureAwait(false);
+    }
+
+    private async Task SendOutOfTurnAsync(Stream stream, FaultPlan plan, byte[] answer, TimeSpan delay, CancellationToken cancellationToken)
+    {
+        try
         {
-            await _pacer.WriteAsync(stream, noise, cancellationToken).ConfigureAwait(false);
+            await WaitAsync(delay, cancellationToken).ConfigureAwait(false);
+            await SendAnswerAsync(stream, plan, answer, cancellationToken).ConfigureAwait(false);
+        }
+        catch (Exception e) when (e is OperationCanceledException or IOException or ObjectDisposedException)
+        {
+            // The session ended before the answer's time came.
+        }
+    }
+
+    private Task WaitAsync(TimeSpan turnaround, CancellationToken cancellationToken)
+    {
+        if (turnaround <= TimeSpan.Zero)
+        {
+            return Task.CompletedTask;
         }
 
-        await _pacer.WriteAsync(stream, plan.Shape(reply.Bytes!), cancellationToken).ConfigureAwait(false);
+        // With wire-time emulation the turnaround is timed as precisely as the characters (Task.Delay can be late by
+        // milliseconds on a loaded machine); without it, a timer is enough.
+        return _pacer.Enabled ? _pacer.DelayAsync(turnaround, cancellationToken) : DelayAtLeastAsync(turnaround, cancellationToken);
+    }
+
+    private async Task SendAnswerAsync(Stream stream, FaultPlan plan, byte[] answer, CancellationToken cancellationToken)
+    {
+        await _line.WaitAsync(cancellationToken).ConfigureAwait(false);
+        try
+        {
+            if (plan.Noise is { } noise)
+            {
+                await _pacer.WriteAsync(stream, noise, cancellationToken).ConfigureAwait(false);
+            }
+
+            await _pacer.WriteAsync(stream, plan.Shape(answer), cancellationToken).ConfigureAwait(false);
+        }
+        finally
+        {
+            _line.Release();
+        }
+    }
+
+    private async Task SendOnLineAsync(Stream stream, byte[] bytes, CancellationToken cancellationToken)
+    {
+        await _line.WaitAsync(cancellationToken).ConfigureAwait(false);
+        try
+        {
+            await _pacer.WriteAsync(stream, bytes, cancellationToken).ConfigureAwait(false);
+        }
+        finally
+        {
+            _line.Release();
+        }
     }
 }

@@ -35,7 +35,7 @@ internal sealed class CModeUnitCommands : UnitCommandSet
         {
             AreaReadCommand.WriteMessage(unit.UnitNumber, area, begin, count, address.Bank, message);
             string header = CModeAreaInfo.ReadHeader(area);
-            var request = new HostLinkRequest(unit.UnitNumber, header, message.AsMemory(0, length), AreaReadCommand.GetExchange(area, count));
+            var request = new HostLinkRequest(unit.UnitNumber, header, message.AsMemory(0, length), AreaReadCommand.GetExchange(area, count)) { ReadOnly = true };
             return await unit.Connection.ExecuteAsync(
                 request,
                 unit.RetriesFor(CommandEffect.ReadOnly),

@@ -72,6 +72,18 @@ public sealed class HostLinkClientOptions
     /// </summary>
     public bool LocalEcho { get; set; }
 
+    /// <summary>
+    /// Sends a TS (TEST) with a fresh random token behind every C-mode answer and takes the answer only when the token
+    /// comes back as the next frame, for lines known to deliver answers out of turn (radio modems, protocol converters,
+    /// serial-device servers that buffer). Off by default: every C-mode answer is already refused when it arrives before
+    /// its command could have crossed the line, and a frame that arrives while no command is outstanding makes the next
+    /// command fence first (docs/reliability.md says what each catches). With this on, a late answer that lands exactly
+    /// where the right one was due is caught too, unless the right one was lost on the line; the check costs one TS
+    /// exchange per command (about 17 characters each way), and the unit's response time in metrics includes it. FINS
+    /// answers carry their command's service ID and need no check.
+    /// </summary>
+    public bool VerifyAnswers { get; set; }
+
     /// <summary>The FINS response wait time, 0-15 in units of 10 ms, sent in every FA frame.</summary>
     public int FinsResponseWait { get; set; }
 
@@ -199,6 +211,7 @@ public sealed class HostLinkClientOptions
         LineTiming = LineTiming,
         TurnaroundAllowance = TurnaroundAllowance,
         LocalEcho = LocalEcho,
+        VerifyAnswers = VerifyAnswers,
         LoggerFactory = LoggerFactory,
         MeterFactory = MeterFactory,
         LinkName = LinkName,

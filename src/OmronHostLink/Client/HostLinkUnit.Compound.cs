@@ -120,7 +120,7 @@ public partial class HostLinkUnit
             CompoundCommands.AnswerFixed + CompoundCommands.DataLength(items),
             answerCanEqualCommand: false);
         return Connection.ExecuteAsync(
-            new HostLinkRequest(UnitNumber, command.Header, command.ToMessage(UnitNumber), shape),
+            new HostLinkRequest(UnitNumber, command.Header, command.ToMessage(UnitNumber), shape) { ReadOnly = command.Effect == CommandEffect.ReadOnly },
             RetriesFor(command.Effect),
             static (text, s) =>
             {

@@ -211,7 +211,7 @@ public partial class HostLinkUnit
     internal HostLinkRequest Request(CModeCommand command)
     {
         EnsureModelAccepts(command);
-        return new(UnitNumber, command.Header, command.ToMessage(UnitNumber), command.Exchange);
+        return new(UnitNumber, command.Header, command.ToMessage(UnitNumber), command.Exchange) { ReadOnly = command.Effect == CommandEffect.ReadOnly };
     }
 
     /// <summary>How often a command is repeated after a timeout or damage: by what repeating it would do.</summary>

@@ -23,4 +23,11 @@ public enum FrameError
 
     /// <summary>The link was in the middle of another exchange's frames, or the PLC sent a frame nobody asked for.</summary>
     Unexpected,
+
+    /// <summary>
+    /// The frame cannot be the answer to the command just sent: it was complete before that command and its answer could
+    /// have crossed the line, or (with <see cref="HostLinkClientOptions.VerifyAnswers"/>) another frame came between the
+    /// answer and the check sent behind it. A late answer to an earlier command, delivered out of turn.
+    /// </summary>
+    Stale,
 }

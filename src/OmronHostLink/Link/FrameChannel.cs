@@ -61,6 +61,7 @@ internal sealed class FrameChannel : IValueTaskSource<bool>
     private bool _cancelled;
     private long _deadlineArmedAt;
     private TimeSpan _deadlineTimeout;
+    private long _receivedAt;
 
     private ManualResetValueTaskSourceCore<bool> _waiter;
     private ConfiguredValueTaskAwaitable<int>.ConfiguredValueTaskAwaiter _pendingRead;
@@ -89,6 +90,36 @@ internal sealed class FrameChannel : IValueTaskSource<bool>
 
     /// <summary>The last frame read by <see cref="ReadFrameAsync"/>.</summary>
     public ReadOnlySpan<byte> Frame(int length) => _frame.AsSpan(0, length);
+
+    /// <summary>
+    /// When (on the link's clock) the bytes that completed the last frame read had arrived, at the latest: the time of
+    /// the last read from the stream before the frame was taken.
+    /// </summary>
+    public long FrameArrivedAt { get; private set; }
+
+    /// <summary>Whether a frame has started (<c>@</c>) in the bytes received and not yet taken.</summary>
+    public bool HoldsFrameStart
+    {
+        get
+        {
+            lock (_lock)
+            {
+                return _received.HoldsFrameStart();
+            }
+        }
+    }
+
+    /// <summary>Bytes received and not yet taken: between exchanges, anything here came while no command was outstanding.</summary>
+    public int Held
+    {
+        get
+        {
+            lock (_lock)
+            {
+                return _received.Held;
+            }
+        }
+    }
 
     /// <summary>Starts the receive loop.</summary>
     public void Start()
@@ -271,14 +302,15 @@ internal sealed class FrameChannel : IValueTaskSource<bool>
     public ValueTask<int> ReadEchoAsync(ReadOnlyMemory<byte> sent, TimeSpan timeout)
         => TakeAsync(expectStart: false, sent, timeout);
 
-    /// <summary>Throws away everything received and not yet read.</summary>
+    /// <summary>Throws away everything received and not yet read; the frames that start in it settle owed answers.</summary>
     /// <returns>The number of bytes discarded.</returns>
-    public int Discard()
+    public int Discard(AnswerTiming? settle = null)
     {
         int discarded;
         bool resume;
         lock (_lock)
         {
+            settle?.SettledAll(_received.HeldBytes);
             discarded = _received.Clear();
             resume = ConsumedLocked();
         }
@@ -341,6 +373,7 @@ internal sealed class FrameChannel : IValueTaskSource<bool>
                 ThrowIfAbortedLocked();
                 ThrowIfCancelledLocked();
                 taken = echo.IsEmpty ? _received.TakeFrame(expectStart, _frame, out error) : _received.TakeEcho(echo.Span, out error);
+                FrameArrivedAt = _receivedAt;
                 if (taken == 0 && error is null)
                 {
                     if (_deadlinePassed)
@@ -579,9 +612,11 @@ internal sealed class FrameChannel : IValueTaskSource<bool>
             return false;
         }
 
+        long now = _time.GetTimestamp();
         lock (_lock)
         {
             _received.Append(_readBuffer.AsSpan(0, n));
+            _receivedAt = now;
             wake |= TakeWaiterLocked();
             if (_stopReading.IsCancellationRequested || _received.Held >= PauseThreshold)
             {

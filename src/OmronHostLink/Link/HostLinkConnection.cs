@@ -29,6 +29,7 @@ internal sealed class HostLinkConnection : IAsyncDisposable, IDisposable
     private readonly TransactionAttempt _attempt;
     private readonly Resynchroniser _resynchroniser;
     private readonly HostLinkInstruments _instruments;
+    private readonly AnswerTiming _answerTiming;
 
     private LinkStatus _status = new(LinkState.Closed);
     private int _sid;
@@ -39,15 +40,29 @@ internal sealed class HostLinkConnection : IAsyncDisposable, IDisposable
         _spacing = new SendSpacing(options);
         Timing = transport.LineTiming ?? options.LineTiming;
         _logger = options.LoggerFactory?.CreateLogger("OmronHostLink") ?? NullLogger.Instance;
-        _attempt = new TransactionAttempt(Timing, options.TurnaroundAllowance, options.LocalEcho, _time) { AnswerFraming = options.AnswerFraming };
-        _resynchroniser = new Resynchroniser(Timing, options.TurnaroundAllowance, _time, options.LocalEcho);
-        _instruments = HostLinkInstruments.For(options.MeterFactory);
         LinkName = options.LinkName ?? (transport as SerialTransport)?.PortName ?? transport.Description;
+        _answerTiming = new AnswerTiming(Timing, _time, _logger, LinkName);
+        _resynchroniser = new Resynchroniser(Timing, options.TurnaroundAllowance, _time, options.LocalEcho, _answerTiming);
+        _attempt = new TransactionAttempt(Timing, options.TurnaroundAllowance, options.LocalEcho, _time, _answerTiming, _resynchroniser)
+        {
+            AnswerFraming = options.AnswerFraming,
+            VerifyAnswers = options.VerifyAnswers,
+        };
+        _instruments = HostLinkInstruments.For(options.MeterFactory);
         _transport = new LinkTransport(transport, _logger, _time, _instruments, LinkName);
     }
 
     /// <summary>Where the link stands between transactions.</summary>
     public LinkState State => _status.State;
+
+    /// <summary>Whether answers are checked for arriving before their command could have been answered (<see cref="AnswerTiming"/>).</summary>
+    internal bool ChecksAnswerTiming => _answerTiming.Armed;
+
+    /// <summary>Bytes received and not yet taken (0 when closed): between exchanges, what came while nothing was outstanding.</summary>
+    internal int Held => _transport.OpenChannel()?.Held ?? 0;
+
+    /// <summary>Whether a TS fence came back faster than the configured line speed allows.</summary>
+    internal bool LineFasterThanConfigured => _answerTiming.FasterThanConfigured;
 
     /// <summary>How often the transport has been opened: a change tells what a PLC held for this link (QQ registrations) may be gone.</summary>
     public long Openings => _transport.Openings;
@@ -205,6 +220,14 @@ internal sealed class HostLinkConnection : IAsyncDisposable, IDisposable
             _attempt.Reset();
             FrameChannel channel = _transport.OpenChannel() ?? await OpenAsync(cancellationToken).ConfigureAwait(false);
             await _spacing.WaitAsync(unit, cancellationToken).ConfigureAwait(false);
+            if (State == LinkState.Ready && channel.HoldsFrameStart)
+            {
+                // Nothing was outstanding, so a frame that came is an answer out of turn: the line is not in step. (Bytes
+                // without a frame's start are noise, which the next read skips.)
+                HostLinkLog.ArrivedWhileIdle(_logger, LinkName, channel.Held);
+                _status = new LinkStatus(LinkState.NeedsResync, unit);
+            }
+
             channel.FrameObserver = FrameObserver;
             channel.Begin(cancellationToken);
             try
@@ -266,6 +289,7 @@ internal sealed class HostLinkConnection : IAsyncDisposable, IDisposable
 
         long started = _time.GetTimestamp();
         TResult result = await _attempt.RunAsync(channel, request, decode, state).ConfigureAwait(false);
+
         HostLinkLog.Transaction(_logger, request.Unit, request.Header, _time.GetElapsedTime(started).TotalMilliseconds, _attempt.Frames);
         return result;
     }
@@ -289,6 +313,12 @@ internal sealed class HostLinkConnection : IAsyncDisposable, IDisposable
 
         // Not in step yet: this exchange fails and the next one fences again, first at the unit this one wanted.
         _status = new LinkStatus(LinkState.NeedsResync, requestUnit);
+        if (_resynchroniser.Flood is { } flood)
+        {
+            // The line carries characters without end: that, not a silent unit, is what the caller needs to hear.
+            throw new HostLinkFrameException(flood.Error, flood.Message);
+        }
+
         TimeSpan timeout = _resynchroniser.FenceTimeout;
         throw new HostLinkTimeoutException(
             $"No answer from unit {requestUnit:D2} on {_transport.Description} within {timeout.TotalMilliseconds:0} ms (it did not echo the TS check sent to resynchronise the link after a failed exchange).",
@@ -335,6 +365,7 @@ internal sealed class HostLinkConnection : IAsyncDisposable, IDisposable
     private async ValueTask<FrameChannel> OpenAsync(CancellationToken cancellationToken)
     {
         FrameChannel channel = await _transport.OpenAsync(cancellationToken).ConfigureAwait(false);
+        _answerTiming.Reopened(timed: _transport.Transport is not SerialTransport { IsPseudoTerminal: true });
         _status = new LinkStatus(LinkState.Ready);
         return channel;
     }

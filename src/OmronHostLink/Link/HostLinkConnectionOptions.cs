@@ -35,6 +35,9 @@ internal sealed class HostLinkConnectionOptions
     /// <summary>How a Serial Communications Unit in a Host Link-compatible mode frames its answers, checked frame by frame; null for any framing.</summary>
     public CompatibleModeFraming? AnswerFraming { get; init; }
 
+    /// <summary>Sends a TS with a fresh token behind every C-mode answer and takes the answer only when the token comes back next.</summary>
+    public bool VerifyAnswers { get; init; }
+
     /// <summary>The clock deadlines run on.</summary>
     public TimeProvider TimeProvider { get; init; } = TimeProvider.System;
 

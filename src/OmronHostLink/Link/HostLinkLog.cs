@@ -25,4 +25,10 @@ internal static partial class HostLinkLog
 
     [LoggerMessage(EventId = 7, Level = LogLevel.Debug, Message = "Unit {Unit:D2} {Header} failed: {Reason}")]
     public static partial void Failed(ILogger logger, int unit, string header, string reason);
+
+    [LoggerMessage(EventId = 8, Level = LogLevel.Warning, Message = "Answers on {Link} come back faster than the configured line allows: a TS check came back in {ElapsedMs:0.0} ms, where {BaudRate} bps needs at least {EarliestMs:0.0} ms. Set Serial:BaudRate (in code, HostLinkClientOptions.LineTiming) to the line's real speed; until then answers are not checked for arriving before their command could have been answered.")]
+    public static partial void FasterThanConfigured(ILogger logger, string link, double elapsedMs, int baudRate, double earliestMs);
+
+    [LoggerMessage(EventId = 9, Level = LogLevel.Debug, Message = "{Link}: a frame arrived while no command was outstanding ({Bytes} bytes held); the link fences before the next command")]
+    public static partial void ArrivedWhileIdle(ILogger logger, string link, int bytes);
 }

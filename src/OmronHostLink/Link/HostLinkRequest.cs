@@ -24,6 +24,9 @@ internal readonly struct HostLinkRequest
     /// <summary>How the command travels and is answered.</summary>
     public ExchangeShape Shape { get; }
 
+    /// <summary>Whether the command only reads (<see cref="CommandEffect.ReadOnly"/>): the link may send it again to confirm its answer.</summary>
+    public bool ReadOnly { get; init; }
+
     /// <summary>Refuses, before anything is sent, a command that cannot travel in multiple frames and does not fit one.</summary>
     /// <exception cref="ArgumentException">The command is longer than one frame can carry.</exception>
     public void CheckLength()

@@ -85,6 +85,12 @@ internal sealed class ReceiveBuffer
         return error is null ? sent.Length : 0;
     }
 
+    /// <summary>What is held.</summary>
+    public ReadOnlySpan<byte> HeldBytes => _bytes.AsSpan(_start, Held);
+
+    /// <summary>Whether a frame starts (<c>@</c>) in what is held.</summary>
+    public bool HoldsFrameStart() => _bytes.AsSpan(_start, Held).IndexOf((byte)'@') >= 0;
+
     /// <summary>Drops everything held.</summary>
     /// <returns>The number of bytes dropped.</returns>
     public int Clear()

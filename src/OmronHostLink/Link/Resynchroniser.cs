@@ -24,14 +24,16 @@ internal sealed class Resynchroniser
     private readonly TimeSpan _turnaround;
     private readonly TimeProvider _time;
     private readonly bool _localEcho;
+    private readonly AnswerTiming _answerTiming;
     private readonly byte[] _fence = new byte[CModeCommand.PrefixLength + TokenLength + FrameWriter.FinalOverhead];
 
-    public Resynchroniser(LineTiming timing, TimeSpan turnaround, TimeProvider time, bool localEcho)
+    public Resynchroniser(LineTiming timing, TimeSpan turnaround, TimeProvider time, bool localEcho, AnswerTiming answerTiming)
     {
         _timing = timing;
         _turnaround = turnaround;
         _time = time;
         _localEcho = localEcho;
+        _answerTiming = answerTiming;
     }
 
     /// <summary>Bytes discarded by the last resynchronisation.</summary>
@@ -39,6 +41,9 @@ internal sealed class Resynchroniser
 
     /// <summary>The deadline of the last fence.</summary>
     public TimeSpan FenceTimeout { get; private set; }
+
+    /// <summary>Set when the last unanswered fence saw more characters without a CR than a frame may hold: a flooded line.</summary>
+    public HostLinkFrameException? Flood { get; private set; }
 
     /// <summary>Sends <c>@**</c>: every unit on the line resets its Host Link transmission control.</summary>
     public static ValueTask InitializeAsync(FrameChannel channel) => channel.WriteAsync(Initialize);
@@ -50,7 +55,9 @@ internal sealed class Resynchroniser
     /// </remarks>
     public async ValueTask<ResyncOutcome> FenceAsync(FrameChannel channel, int failedUnit, int requestUnit)
     {
-        Discarded = channel.Discard();
+        Flood = null;
+        Discarded = channel.Discard(_answerTiming);
+
         ResyncOutcome outcome = ResyncOutcome.Unanswered;
         for (int attempt = 0; attempt < FenceAttempts; attempt++)
         {
@@ -77,10 +84,54 @@ internal sealed class Resynchroniser
     /// <returns>The round-trip time, or null when the unit did not echo the token in time.</returns>
     public async ValueTask<TimeSpan?> ProbeAsync(FrameChannel channel, int unit, TimeSpan turnaround)
     {
-        Discarded = channel.Discard();
+        Discarded = channel.Discard(_answerTiming);
+
         long started = _time.GetTimestamp();
         ResyncOutcome outcome = await FenceOnceAsync(channel, unit, turnaround).ConfigureAwait(false);
         return outcome == ResyncOutcome.Answered ? _time.GetElapsedTime(started) : null;
+    }
+
+    /// <summary>
+    /// Checks that the answer just taken was the unit's answer to the command before it: a TS with a fresh token goes to
+    /// <paramref name="unit"/>, and its echo must be the next frame. A PLC answers in order, so a frame that comes first
+    /// is an answer out of turn — the one taken may have been another command's.
+    /// </summary>
+    /// <returns>Whether the echo took at least the configured line's time (<see cref="AnswerTiming.FenceEchoed"/>).</returns>
+    /// <exception cref="HostLinkFrameException">Another frame came before the echo (<see cref="FrameError.Stale"/>).</exception>
+    /// <exception cref="HostLinkTimeoutException">The echo did not come within its deadline.</exception>
+    public async ValueTask<bool> VerifyAsync(FrameChannel channel, int unit, string header)
+    {
+        (int frameLength, long sentAt) = await SendFenceAsync(channel, unit).ConfigureAwait(false);
+        TimeSpan timeout = _timing.FrameDeadline(frameLength, frameLength, _turnaround);
+        int n = await channel.ReadFrameAsync(expectStart: true, timeout).ConfigureAwait(false);
+
+        if (!channel.Frame(n).SequenceEqual(_fence.AsSpan(0, frameLength)))
+        {
+            // A damaged frame is refused as such (its FCS); a sound one that is not the echo came out of turn.
+            _answerTiming.Settled(channel.Frame(n));
+            FrameParser.ParseFirst(channel.Frame(n));
+            throw new HostLinkFrameException(
+                FrameError.Stale,
+                $"Another frame came from the line between the answer to {header} from unit {unit:D2} and the TS check sent behind it: the line delivers answers out of turn, so the answer taken may have been an earlier command's.",
+                channel.Frame(n));
+        }
+
+        return _answerTiming.FenceEchoed(unit, _time.GetElapsedTime(sentAt, channel.FrameArrivedAt), frameLength, n);
+    }
+
+    /// <summary>Writes a fence with a fresh token to <paramref name="unit"/> (and reads back the line's echo of it).</summary>
+    /// <returns>The fence's length and when its write started.</returns>
+    private async ValueTask<(int Length, long SentAt)> SendFenceAsync(FrameChannel channel, int unit)
+    {
+        int frameLength = WriteFence(unit);
+        long sentAt = _time.GetTimestamp();
+        await channel.WriteAsync(_fence.AsMemory(0, frameLength)).ConfigureAwait(false);
+        if (_localEcho)
+        {
+            await channel.ReadEchoAsync(_fence.AsMemory(0, frameLength), _timing.FrameDeadline(frameLength, 0, _turnaround)).ConfigureAwait(false);
+        }
+
+        return (frameLength, sentAt);
     }
 
     /// <summary>
@@ -90,12 +141,7 @@ internal sealed class Resynchroniser
     private async ValueTask<ResyncOutcome> FenceOnceAsync(FrameChannel channel, int unit, TimeSpan turnaround)
     {
         ResyncOutcome outcome = ResyncOutcome.Unanswered;
-        int frameLength = WriteFence(unit);
-        await channel.WriteAsync(_fence.AsMemory(0, frameLength)).ConfigureAwait(false);
-        if (_localEcho)
-        {
-            await channel.ReadEchoAsync(_fence.AsMemory(0, frameLength), _timing.FrameDeadline(frameLength, 0, _turnaround)).ConfigureAwait(false);
-        }
+        (int frameLength, long sentAt) = await SendFenceAsync(channel, unit).ConfigureAwait(false);
 
         // TS is answered with its own characters.
         TimeSpan timeout = _timing.FrameDeadline(frameLength, frameLength, turnaround);
@@ -118,19 +164,22 @@ internal sealed class Resynchroniser
             {
                 return outcome;
             }
-            catch (HostLinkFrameException)
+            catch (HostLinkFrameException e)
             {
                 // Damaged leftovers of the failed exchange: discarded like any other stale bytes.
                 outcome = ResyncOutcome.UnansweredAfterDamagedFrames;
+                Flood = e.Error == FrameError.TooLong ? e : Flood;
                 continue;
             }
 
             if (channel.Frame(n).SequenceEqual(_fence.AsSpan(0, frameLength)))
             {
+                _answerTiming.FenceEchoed(unit, _time.GetElapsedTime(sentAt, channel.FrameArrivedAt), frameLength, n);
                 return ResyncOutcome.Answered;
             }
 
             Discarded += n;
+            _answerTiming.Settled(channel.Frame(n));
         }
     }
 

@@ -54,6 +54,7 @@ public sealed class HostLinkClientSettings
         ClientSetting.Value(nameof(WriteRetries), s => s.WriteRetries, (s, v) => s.WriteRetries = v, v => v.Integer(), SettingRules.Retries, o => o.WriteRetries, (o, v) => o.WriteRetries = v),
         ClientSetting.Value(nameof(WordOrder), s => s.WordOrder, (s, v) => s.WordOrder = v, v => v.Choice<WordOrder>(), SettingRules.Defined, o => o.WordOrder, (o, v) => o.WordOrder = v),
         ClientSetting.Value(nameof(LocalEcho), s => s.LocalEcho, (s, v) => s.LocalEcho = v, v => v.Boolean(), null, o => o.LocalEcho, (o, v) => o.LocalEcho = v),
+        ClientSetting.Value(nameof(VerifyAnswers), s => s.VerifyAnswers, (s, v) => s.VerifyAnswers = v, v => v.Boolean(), null, o => o.VerifyAnswers, (o, v) => o.VerifyAnswers = v),
         ClientSetting.Value(nameof(FinsResponseWait), s => s.FinsResponseWait, (s, v) => s.FinsResponseWait = v, v => v.Integer(), SettingRules.FinsResponseWait, o => o.FinsResponseWait, (o, v) => o.FinsResponseWait = v),
         AllowReadModifyWriteBitsSetting,
         ClientSetting.Value(nameof(UseCompoundRead), s => s.UseCompoundRead, (s, v) => s.UseCompoundRead = v, v => v.Choice(("true", CompoundReadMode.On), ("false", CompoundReadMode.Off)), SettingRules.Defined, o => o.UseCompoundRead, (o, v) => o.UseCompoundRead = v),
@@ -119,6 +120,12 @@ public sealed class HostLinkClientSettings
 
     /// <summary>The line echoes what we send (2-wire RS-485 without echo suppression). Default false.</summary>
     public bool? LocalEcho { get; set; }
+
+    /// <summary>
+    /// Send a TS check behind every C-mode answer and take the answer only when the check comes back next, for lines
+    /// known to deliver answers out of turn (see <see cref="HostLinkClientOptions.VerifyAnswers"/>). Default false.
+    /// </summary>
+    public bool? VerifyAnswers { get; set; }
 
     /// <summary>The FINS response wait time sent in every FINS frame, 0-15 in units of 10 ms. Default 0.</summary>
     public int? FinsResponseWait { get; set; }

@@ -21,7 +21,7 @@ public sealed class LinkLogTests
         await line.Client.ReadWordsAsync("D0", 1);
 
         List<FakeLogRecord> records = provider.Collector.GetSnapshot().ToList();
-        FakeLogRecord retry = records.Should().ContainSingle(r => r.Level == LogLevel.Warning).Subject;
+        FakeLogRecord retry = records.Should().ContainSingle(r => r.Level == LogLevel.Warning && r.Id.Id != 8, "the in-memory line's fence comes back faster than the 9600 bps it is configured for, which is its own warning").Subject;
         retry.Category.Should().Be("OmronHostLink");
         retry.Id.Id.Should().Be(3);
         retry.GetStructuredStateValue("Unit").Should().Be("0");
