@@ -38,6 +38,7 @@ public sealed class Plc : IPlc, IDisposable
     private int _readRetries = new HostLinkClientOptions().ReadRetries;
     private HostLinkClient? _client;
     private IHostLinkUnit? _unit;
+    private int _unitOfView;
     private PlcWatch? _watch;
 
     /// <summary>A watched tag's value changed.</summary>
@@ -50,56 +51,38 @@ public sealed class Plc : IPlc, IDisposable
     public event ConnectionRestoredHandler? ConnectionRestored;
 
     /// <inheritdoc />
-    public string PortName { get => _portName; set => SetClosed(ref _portName, value ?? "", nameof(PortName)); }
+    public string PortName { get => _portName; set => SetForNextOpen(ref _portName, value ?? ""); }
 
     /// <inheritdoc />
-    public int BaudRate { get => _baudRate; set => SetClosed(ref _baudRate, value, nameof(BaudRate)); }
+    public int BaudRate { get => _baudRate; set => SetForNextOpen(ref _baudRate, value); }
 
     /// <inheritdoc />
-    public int DataBits { get => _dataBits; set => SetClosed(ref _dataBits, value, nameof(DataBits)); }
+    public int DataBits { get => _dataBits; set => SetForNextOpen(ref _dataBits, value); }
 
     /// <inheritdoc />
-    public string Parity { get => _parity; set => SetClosed(ref _parity, value ?? "", nameof(Parity)); }
+    public string Parity { get => _parity; set => SetForNextOpen(ref _parity, value ?? ""); }
 
     /// <inheritdoc />
-    public int StopBits { get => _stopBits; set => SetClosed(ref _stopBits, value, nameof(StopBits)); }
+    public int StopBits { get => _stopBits; set => SetForNextOpen(ref _stopBits, value); }
 
     /// <inheritdoc />
-    public string Host { get => _host; set => SetClosed(ref _host, value ?? "", nameof(Host)); }
+    public string Host { get => _host; set => SetForNextOpen(ref _host, value ?? ""); }
 
     /// <inheritdoc />
-    public int TcpPort { get => _tcpPort; set => SetClosed(ref _tcpPort, value, nameof(TcpPort)); }
+    public int TcpPort { get => _tcpPort; set => SetForNextOpen(ref _tcpPort, value); }
 
     /// <inheritdoc />
-    public int UnitNumber
-    {
-        get => _unitNumber;
-        set
-        {
-            if (value is < 0 or > 31)
-            {
-                throw PlcErrors.Raise(PlcErrors.InvalidArgument, $"UnitNumber {value} is not a unit number; use 0-31.");
-            }
-
-            lock (_gate)
-            {
-                _unitNumber = value;
-                if (_client is not null)
-                {
-                    _unit = _client.Unit(value);
-                }
-            }
-        }
-    }
+    /// <remarks>Checked by the next call that reaches the PLC (setters never throw; see <see cref="SetForNextOpen{T}"/>).</remarks>
+    public int UnitNumber { get => _unitNumber; set => _unitNumber = value; }
 
     /// <inheritdoc />
-    public string CommandSet { get => _commandSet; set => SetClosed(ref _commandSet, value ?? "", nameof(CommandSet)); }
+    public string CommandSet { get => _commandSet; set => SetForNextOpen(ref _commandSet, value ?? ""); }
 
     /// <inheritdoc />
-    public int TurnaroundAllowance { get => _turnaroundAllowance; set => SetClosed(ref _turnaroundAllowance, value, nameof(TurnaroundAllowance)); }
+    public int TurnaroundAllowance { get => _turnaroundAllowance; set => SetForNextOpen(ref _turnaroundAllowance, value); }
 
     /// <inheritdoc />
-    public int ReadRetries { get => _readRetries; set => SetClosed(ref _readRetries, value, nameof(ReadRetries)); }
+    public int ReadRetries { get => _readRetries; set => SetForNextOpen(ref _readRetries, value); }
 
     /// <inheritdoc />
     public bool IsOpen => _client is not null;
@@ -154,6 +137,7 @@ public sealed class Plc : IPlc, IDisposable
             TakeProperties(settings);
             _client = client;
             _unit = client;
+            _unitOfView = _unitNumber;
         }
     }
 
@@ -308,6 +292,14 @@ public sealed class Plc : IPlc, IDisposable
         return WatchOrRaise().WaitForChanges(TimeSpan.FromMilliseconds(timeoutMilliseconds));
     }
 
+    /// <summary>Called by regsvr32 (through the comhost) after it registered the class: registers the type library.</summary>
+    [ComRegisterFunction]
+    private static void RegisterTypeLibrary(Type type) => TypeLibrary.Register(type);
+
+    /// <summary>Called by <c>regsvr32 /u</c>: removes the type library's registration.</summary>
+    [ComUnregisterFunction]
+    private static void UnregisterTypeLibrary(Type type) => TypeLibrary.Unregister();
+
     /// <summary>Whether a COM client is connected to the events (a connection point adds a handler for each).</summary>
     internal bool HasEventSinks => ValueChanged is not null || ConnectionLost is not null || ConnectionRestored is not null;
 
@@ -320,8 +312,27 @@ public sealed class Plc : IPlc, IDisposable
     private PlcWatch WatchOrRaise()
         => _watch ?? throw PlcErrors.Raise(PlcErrors.NotOpen, "No watch is running; call Watch first.");
 
+    /// <summary>The unit <see cref="UnitNumber"/> names, on the open link.</summary>
     private IHostLinkUnit OpenUnit()
-        => _unit ?? throw PlcErrors.Raise(PlcErrors.NotOpen, "The link is not open; call Open first.");
+    {
+        lock (_gate)
+        {
+            HostLinkClient client = _client ?? throw PlcErrors.Raise(PlcErrors.NotOpen, "The link is not open; call Open first.");
+            int unitNumber = _unitNumber;
+            if (unitNumber is < 0 or > 31)
+            {
+                throw PlcErrors.Raise(PlcErrors.InvalidArgument, $"UnitNumber {unitNumber} is not a unit number; use 0-31.");
+            }
+
+            if (_unit is null || _unitOfView != unitNumber)
+            {
+                _unit = client.Unit(unitNumber);
+                _unitOfView = unitNumber;
+            }
+
+            return _unit;
+        }
+    }
 
     private T Call<T>(Func<IHostLinkUnit, T> call)
     {
@@ -342,15 +353,12 @@ public sealed class Plc : IPlc, IDisposable
         return true;
     });
 
-    private void SetClosed<T>(ref T field, T value, string name)
-    {
-        if (_client is not null)
-        {
-            throw PlcErrors.Raise(PlcErrors.NotOpen, $"{name} cannot change while the link is open; call Close first.");
-        }
-
-        field = value;
-    }
+    /// <summary>
+    /// A connection property takes effect at the next <see cref="Open"/>, where the settings' checks name whatever is
+    /// wrong with it. Property setters never throw: under Wine 8 an exception thrown from a .NET property setter called
+    /// through IDispatch ends the calling process (docs/windows.md), and a VB property grid expects to set values freely.
+    /// </summary>
+    private static void SetForNextOpen<T>(ref T field, T value) => field = value;
 
     /// <summary>The settings the properties describe, read as configuration would write them.</summary>
     private HostLinkClientSettings FromProperties()

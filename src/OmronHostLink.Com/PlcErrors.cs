@@ -57,7 +57,23 @@ public static class PlcErrors
     /// <param name="exception">What the library threw.</param>
     /// <returns>An exception whose HRESULT and message the COM caller sees as <c>Err.Number</c> and <c>Err.Description</c>.</returns>
     internal static COMException ToComError(Exception exception)
-        => new(exception.Message, HResultOf(exception)) { Source = Plc.ProgId };
+        => new(Description(exception), HResultOf(exception)) { Source = Plc.ProgId };
+
+    /// <summary>
+    /// The message, on one line for a message box: an argument's message without the "(Parameter 'x')" and "Actual
+    /// value was …" that .NET appends, since the library's message already names the value.
+    /// </summary>
+    private static string Description(Exception exception)
+    {
+        string message = exception.Message;
+        if (exception is ArgumentException { ParamName: { } name })
+        {
+            int suffix = message.IndexOf($" (Parameter '{name}')", StringComparison.Ordinal);
+            message = suffix >= 0 ? message.Substring(0, suffix) : message;
+        }
+
+        return message;
+    }
 
     /// <summary>A failure raised by the server itself (a call before <c>Open</c>, a bad argument).</summary>
     internal static COMException Raise(int hresult, string message) => new(message, hresult) { Source = Plc.ProgId };
