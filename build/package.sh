@@ -23,10 +23,10 @@ out="$root/artifacts"
 # What the artifacts are built from: the sources, the build's configuration and what the packages carry (README,
 # LICENSE), as committed plus every change and untracked file on top. With --check the exit status says whether
 # artifacts/ still matches them (the COM tests repackage when it does not); tests and docs do not count.
-inputs=(src build Directory.Build.props Directory.Build.targets Directory.Packages.props global.json README.md LICENSE)
+inputs=(src build/package.sh Directory.Build.props Directory.Build.targets Directory.Packages.props global.json README.md LICENSE)
 stamp() {
   {
-    git rev-parse "HEAD:src" "HEAD:build"
+    git rev-parse "HEAD:src"
     git status --porcelain -- "${inputs[@]}"
     git diff HEAD -- "${inputs[@]}"
     git ls-files --others --exclude-standard -z -- "${inputs[@]}" | xargs -0 -r sha256sum

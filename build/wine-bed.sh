@@ -115,7 +115,10 @@ x86_status="$(cat "$x86_status_file")"
 step "x86: $x86_status"
 
 # ---- the Windows .NET runtime packs, of the SDK's bundled version ----
-runtime_version="$(dotnet msbuild "$root/build/wine/runtime-packs.proj" -getProperty:BundledNETCoreAppPackageVersion)"
+# The version the SDK in use (global.json's) publishes self-contained apps with, read from its bundled versions.
+sdk_dir="$(dirname "$(readlink -f "$(command -v dotnet)")")/sdk/$(cd "$root" && dotnet --version)"
+runtime_version="$(sed -n 's:.*<BundledNETCoreAppPackageVersion>\(.*\)</BundledNETCoreAppPackageVersion>.*:\1:p' "$sdk_dir/Microsoft.NETCoreSdk.BundledVersions.props" 2>/dev/null)"
+[ -n "$runtime_version" ] || runtime_version="$(dotnet msbuild "$root/build/wine/runtime-packs.proj" -getProperty:BundledNETCoreAppPackageVersion)"
 packs="$bed/packs"
 rids=(win-x64)
 [ "$x86_status" = ok ] && rids+=(win-x86)

@@ -7,6 +7,11 @@ namespace OmronHostLink.Com;
 /// and VB6/VBA early binding through its vtable. The members' order, DISPIDs and types must match the IDL exactly
 /// (the tests compare them with the compiled type library).
 /// </summary>
+/// <remarks>
+/// The connection properties (<see cref="PortName"/> to <see cref="ReadRetries"/>) describe the next <see cref="Open"/>
+/// and read back what is open; a value is checked by <c>Open</c>, never by its setter (see docs/windows.md for why).
+/// <see cref="UnitNumber"/> may change while open and is checked by the next call.
+/// </remarks>
 [ComVisible(true)]
 [Guid("825F70F9-639A-4F6B-883B-26437E57D1A8")]
 [InterfaceType(ComInterfaceType.InterfaceIsDual)]
