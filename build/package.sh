@@ -20,20 +20,15 @@ root="$(cd "$(dirname "$0")/.." && pwd)"
 cd "$root"
 out="$root/artifacts"
 
-# What the artifacts are built from: the sources, the build's configuration and what the packages carry (README,
-# LICENSE), as committed plus every change and untracked file on top. With --check the exit status says whether
-# artifacts/ still matches them (the COM tests repackage when it does not); tests and docs do not count.
+# What the artifacts are built from: the contents of the sources, of the build's configuration and of what the packages
+# carry (README, LICENSE), tracked or not (ignored files, such as bin/ and obj/, aside). With --check the exit status
+# says whether artifacts/ still matches them (the COM tests repackage when it does not); tests and docs do not count.
 inputs=(src build/package.sh Directory.Build.props Directory.Build.targets Directory.Packages.props global.json README.md LICENSE)
 stamp() {
-  {
-    git rev-parse "HEAD:src"
-    git status --porcelain -- "${inputs[@]}"
-    git diff HEAD -- "${inputs[@]}"
-    git ls-files --others --exclude-standard -z -- "${inputs[@]}" | xargs -0 -r sha256sum
-  } 2>/dev/null | sha256sum | cut -d' ' -f1
+  git ls-files -z --cached --others --exclude-standard -- "${inputs[@]}" 2>/dev/null | sort -z | xargs -0 -r sha256sum | sha256sum | cut -d' ' -f1
 }
 if [ "${1:-}" = --check ]; then
-  git rev-parse HEAD >/dev/null 2>&1 && [ -f "$out/package.stamp" ] && [ "$(cat "$out/package.stamp")" = "$(stamp)" ]
+  git rev-parse --git-dir >/dev/null 2>&1 && [ -f "$out/package.stamp" ] && [ "$(cat "$out/package.stamp")" = "$(stamp)" ]
   exit
 fi
 source_stamp="$(stamp)"
