@@ -28,7 +28,9 @@ stamp() {
   git ls-files -z --cached --others --exclude-standard -- "${inputs[@]}" 2>/dev/null | sort -z | xargs -0 -r sha256sum | sha256sum | cut -d' ' -f1
 }
 if [ "${1:-}" = --check ]; then
-  git rev-parse --git-dir >/dev/null 2>&1 && [ -f "$out/package.stamp" ] && [ "$(cat "$out/package.stamp")" = "$(stamp)" ]
+  git rev-parse --git-dir >/dev/null 2>&1 && [ -f "$out/package.stamp" ] && [ "$(cat "$out/package.stamp")" = "$(stamp)" ] \
+    && compgen -G "$out/OmronHostLink.Gateway-*-win-x64.zip" >/dev/null && compgen -G "$out/hostlink-*-win-x64.zip" >/dev/null \
+    && compgen -G "$out/OmronHostLink.Com-*-win.zip" >/dev/null && compgen -G "$out/packages/OmronHostLink.*.nupkg" >/dev/null
   exit
 fi
 source_stamp="$(stamp)"
