@@ -4,6 +4,10 @@
 #   ./build.sh test [dotnet test arguments]   prepare, then every test (dotnet test OmronHostLink.sln -c Release)
 #   ./build.sh prepare                        only install what the tests need (see TOOLS below)
 #
+# "test" also builds the solution and the artifacts a plant installs (build/package.sh: the Windows zips, the COM
+# server's zip, the NuGet packages, in artifacts/) before the tests: the Windows tests run those builds under Wine, and
+# publishing them up front keeps their publishes out of the parallel test run.
+#
 # "prepare" installs each missing tool with apt-get when run as root, and otherwise stops with one message naming the
 # command to run; it restores the Sparkplug tests' npm packages (npm ci, only when package-lock.json changed) and
 # checks the golden vectors against ../shared when it is there. Nothing else has to be run first on a fresh clone.
@@ -77,6 +81,9 @@ prepare() {
   install_tools
   restore_npm
   check_vectors
+  # The Windows test bed (Wine, with its i386 half for the x86 COM server, and the Windows .NET runtime in a prefix)
+  # has steps no package list covers; build/wine-bed.sh installs and checks it, and says what it could not prepare.
+  bash build/wine-bed.sh
 }
 
 run_tests() {
@@ -104,7 +111,9 @@ case "${1:-test}" in
   test)
     shift || true
     prepare
-    run_tests "$@"
+    dotnet build OmronHostLink.sln -c Release
+    bash build/package.sh
+    run_tests --no-build "$@"
     ;;
   *)
     echo "usage: ./build.sh [test [dotnet test arguments] | prepare]" >&2

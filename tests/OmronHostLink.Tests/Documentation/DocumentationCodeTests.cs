@@ -20,7 +20,10 @@ public sealed partial class DocumentationCodeTests
     [Fact]
     public void Every_code_block_of_the_migration_guide_is_copied_from_compiled_VB_code()
     {
-        List<(string Language, string[] Lines, int Line)> blocks = Blocks(Path.Combine(Root, "docs", "migrating.md"));
+        // VB6/VBA blocks (```vba) cannot be compiled here; OmronHostLink.Com.Tests checks them against the COM server.
+        List<(string Language, string[] Lines, int Line)> blocks = Blocks(Path.Combine(Root, "docs", "migrating.md"))
+            .Where(b => b.Language != "vba")
+            .ToList();
 
         blocks.Should().HaveCountGreaterThan(5);
         blocks.Where(b => b.Language != "vb").Select(b => $"line {b.Line}: ```{b.Language}")
