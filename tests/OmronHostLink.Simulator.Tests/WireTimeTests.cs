@@ -32,7 +32,10 @@ public class WireTimeTests(ITestOutputHelper output)
         double median = measured[measured.Count / 2];
         string all = string.Join(" / ", measured.Select(m => m.ToString("F2", System.Globalization.CultureInfo.InvariantCulture)));
         output.WriteLine($"131 chars at 9600 bps x 11 bits: expected {expectedMs:F2} ms, measured {all} ms, median {median:F2} ms");
-        median.Should().BeApproximately(expectedMs, expectedMs * 0.02, $"first-to-last byte of 131 characters at 9600 bps, 11 bits (all: {all} ms)");
+        // Never faster than the line (2 %: a UART's clock); slower only by what a loaded machine holds a thread back. The
+        // pacer's schedule itself is checked exactly on a fake clock (WirePacerScheduleTests).
+        median.Should().BeGreaterThanOrEqualTo(expectedMs * 0.98, $"first-to-last byte of 131 characters at 9600 bps, 11 bits cannot be faster than the line (all: {all} ms)");
+        median.Should().BeLessThan(expectedMs * 1.5, $"the pacer keeps the line's time, less what a busy machine delays it by (all: {all} ms)");
     }
 
     [Fact]

@@ -76,9 +76,11 @@ public sealed class HostLinkClientOptions
     /// Sends a TS (TEST) with a fresh random token behind every C-mode answer and takes the answer only when the token
     /// comes back as the next frame, for lines known to deliver answers out of turn (radio modems, protocol converters,
     /// serial-device servers that buffer). Off by default: every C-mode answer is already refused when it arrives before
-    /// its command could have crossed the line, and a frame that arrives while no command is outstanding makes the next
-    /// command fence first (docs/reliability.md says what each catches). With this on, a late answer that lands exactly
-    /// where the right one was due is caught too, unless the right one was lost on the line; the check costs one TS
+    /// its command could have crossed the line, a frame that arrives while no command is outstanding makes the next
+    /// command fence first, and while a unit's line may be delivering out of turn (an answer of the unit owed after a
+    /// timeout, or a frame of it nobody asked for seen within an owed answer's lifetime) its answers get this check
+    /// anyway (docs/reliability.md says what each catches). With this on, every C-mode answer is checked, and a read
+    /// carried while an answer is owed is carried twice and taken only when both answers agree; the check costs one TS
     /// exchange per command (about 17 characters each way), and the unit's response time in metrics includes it. FINS
     /// answers carry their command's service ID and need no check.
     /// </summary>

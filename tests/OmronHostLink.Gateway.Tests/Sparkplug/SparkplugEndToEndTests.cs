@@ -208,8 +208,9 @@ public sealed class SparkplugEndToEndTests(ITestOutputHelper output, TahuCodecFi
     private async Task<JsonObject> DecodeWhen(TestSubscriber app, string topic, Func<JsonObject, bool> match)
     {
         int seen = 0;
+        TimeSpan patience = TimeSpan.FromSeconds(20);
         var clock = System.Diagnostics.Stopwatch.StartNew();
-        while (clock.Elapsed < TimeSpan.FromSeconds(20))
+        while (true)
         {
             ReceivedMessage[] messages = app.Messages.Where(m => m.Topic == topic).ToArray();
             for (; seen < messages.Length; seen++)
@@ -221,10 +222,15 @@ public sealed class SparkplugEndToEndTests(ITestOutputHelper output, TahuCodecFi
                 }
             }
 
-            await Task.Delay(50);
-        }
+            // Decoding is asynchronous (Tahu in node), so the wait is for the next message and the loop decodes it.
+            TimeSpan left = patience - clock.Elapsed;
+            if (left <= TimeSpan.Zero)
+            {
+                throw new Xunit.Sdk.XunitException($"No matching message on {topic}. Received:{Environment.NewLine}{app.Dump()}");
+            }
 
-        throw new Xunit.Sdk.XunitException($"No matching message on {topic}. Received:{Environment.NewLine}{app.Dump()}");
+            await app.WaitUntilAsync(ms => ms.Count(m => m.Topic == topic) > seen, $"another message on {topic}", left);
+        }
     }
 
     internal static long Seq(JsonObject payload) => long.Parse((string)payload["seq"]!, CultureInfo.InvariantCulture);

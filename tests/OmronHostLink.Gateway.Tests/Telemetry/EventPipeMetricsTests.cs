@@ -55,14 +55,12 @@ public sealed class EventPipeMetricsTests(ITestOutputHelper output)
 
         await using var session = MetricsEventPipeSession.Start(worker.Id, HostLinkTelemetry.MeterName, TimeSpan.FromSeconds(1));
         bool published = await session.WaitForAsync(
-            values => Has(values, "HistogramValuePublished", "hostlink.client.operation.duration", "hostlink.link.name=press")
+            values => Has(values, "HistogramValuePublished", "hostlink.client.operation.duration", "hostlink.command=RD,hostlink.link.name=press,hostlink.unit=0")
                 && Has(values, "HistogramValuePublished", "hostlink.client.operation.duration", "hostlink.link.name=oven")
                 && Has(values, "HistogramValuePublished", "hostlink.client.operation.duration", "error.type=timeout,")
                 && Has(values, "UpDownCounterRateValuePublished", "hostlink.client.connection.count", "hostlink.link.name=oven")
                 && Has(values, "UpDownCounterRateValuePublished", "hostlink.client.connection.count", "hostlink.link.name=press"),
             Patience);
-        // A few more refreshes, for the output below to show steady values.
-        await Task.Delay(TimeSpan.FromSeconds(3));
         IReadOnlyList<PublishedValue> values = session.Values;
         output.WriteLine(Describe(values));
 
