@@ -1,7 +1,7 @@
 using System.Globalization;
 using OmronHostLink.Protocol.Fins;
 
-namespace OmronHostLink.Cli;
+namespace OmronHostLink.Protocol.Explain;
 
 /// <summary>
 /// The fields of a FINS command's parameters and of the answer data that describes itself, for <c>explain</c>, from the

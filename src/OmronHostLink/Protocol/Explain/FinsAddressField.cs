@@ -1,7 +1,7 @@
 using System.Text.Json.Serialization;
 using OmronHostLink.Protocol.Fins;
 
-namespace OmronHostLink.Cli;
+namespace OmronHostLink.Protocol.Explain;
 
 /// <summary>
 /// A FINS memory address as <c>explain</c> shows it: the area code and its name, the address in CX-Programmer form
