@@ -2,11 +2,13 @@ using BenchmarkDotNet.Running;
 using OmronHostLink.Benchmarks;
 using OmronHostLink.Benchmarks.Demotion;
 using OmronHostLink.Benchmarks.Scale;
+using OmronHostLink.Benchmarks.Status;
 
 // dotnet run -c Release --project tests/OmronHostLink.Benchmarks -- wire [--runs N] [--baud N] [--no-plan | --plan-only | --tcp-only | --no-tcp] [--tcp-transactions N]
 // dotnet run -c Release --project tests/OmronHostLink.Benchmarks -- serial [--rounds N] [--reads N]
 // dotnet run -c Release --project tests/OmronHostLink.Benchmarks -- scale [--links 1,10,50,100] [--seconds 60] [--tags 10]
 // dotnet run -c Release --project tests/OmronHostLink.Benchmarks -- demotion [--units 8] [--interval 1s] [--window 60s] [--set Demotion:After=3]
+// dotnet run -c Release --project tests/OmronHostLink.Benchmarks -- status [--tags 1000] [--links 4] [--interval 1s] [--seconds 60] [--warmup 20] [--rounds 3] [--browsers 3]
 // dotnet run -c Release --project tests/OmronHostLink.Benchmarks -- --filter '*'
 if (args.Length > 0 && args[0] == "wire")
 {
@@ -26,6 +28,11 @@ if (args.Length > 0 && args[0] == "scale")
 if (args.Length > 0 && args[0] == "demotion")
 {
     return await DemotionMeasurement.RunAsync(args[1..]);
+}
+
+if (args.Length > 0 && args[0] == "status")
+{
+    return await StatusPageMeasurement.RunAsync(args[1..]);
 }
 
 BenchmarkSwitcher.FromAssembly(typeof(ProtocolBenchmarks).Assembly).Run(args);
