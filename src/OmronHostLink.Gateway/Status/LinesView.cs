@@ -34,7 +34,7 @@ internal sealed class LinesView(IOptions<GatewayOptions> gateway, LinkStatistics
                 State = link?.State.Name() ?? LinkState.Offline.Name(),
                 Since = link?.Since,
                 Detail = link?.Detail,
-                Endpoint = link?.Description ?? endpoint,
+                Endpoint = endpoint,
                 Line = line,
                 CommandSet = options.CommandSet.ToString(),
                 TransactionsPerSecond = rates.Sample(name, totals.Transactions),

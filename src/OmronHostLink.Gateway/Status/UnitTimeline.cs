@@ -24,9 +24,7 @@ internal sealed class UnitTimeline(TimeProvider time) : ITagOutput
         ArgumentNullException.ThrowIfNull(client);
         lock (_gate)
         {
-            LinkRecord record = LinkOf(link);
-            record.Description = (client as HostLinkClient)?.Description;
-            record.Set(LinkState.Online, null, time.GetUtcNow());
+            LinkOf(link).Set(LinkState.Online, null, time.GetUtcNow());
         }
     }
 
@@ -84,12 +82,12 @@ internal sealed class UnitTimeline(TimeProvider time) : ITagOutput
         }
     }
 
-    /// <summary>A link's state, since when, why, and where it goes; null before the link was heard of.</summary>
-    public (LinkState State, DateTimeOffset Since, string? Detail, string? Description)? Link(string link)
+    /// <summary>A link's state, since when and why; null before the link was heard of.</summary>
+    public (LinkState State, DateTimeOffset Since, string? Detail)? Link(string link)
     {
         lock (_gate)
         {
-            return _links.TryGetValue(link, out LinkRecord? r) && r.Since is { } since ? (r.State, since, r.Detail, r.Description) : null;
+            return _links.TryGetValue(link, out LinkRecord? r) && r.Since is { } since ? (r.State, since, r.Detail) : null;
         }
     }
 
@@ -138,8 +136,6 @@ internal sealed class UnitTimeline(TimeProvider time) : ITagOutput
         public DateTimeOffset? Opened { get; private set; }
 
         public string? Detail { get; private set; }
-
-        public string? Description { get; set; }
 
         public void Set(LinkState state, string? detail, DateTimeOffset now)
         {

@@ -3,6 +3,7 @@ using System.Net;
 using System.Net.Http.Headers;
 using System.Text;
 using Microsoft.AspNetCore.Routing;
+using Microsoft.Extensions.DependencyInjection;
 using OmronHostLink.Gateway.Status;
 using OmronHostLink.Gateway.Tests.Mqtt;
 using OmronHostLink.Protocol;
@@ -156,6 +157,74 @@ public sealed class StatusSecurityTests
         string[] notReads = simulator.Received.Where(f => !IsRead(f)).Distinct().ToArray();
         notReads.Should().BeEmpty("only read commands reach the PLC (by the command table's effect of each header)");
         simulator.Received.Should().Contain(f => f.StartsWith("@00RD0100", StringComparison.Ordinal), "the links polled meanwhile");
+    }
+
+    [Fact]
+    public async Task Open_streams_end_when_the_gateway_stops_and_the_trace_tap_goes_with_them()
+    {
+        await using RecordingSimulator simulator = await RecordingSimulator.StartAsync(new VirtualPlc(new VirtualPlcOptions { Units = [0] }));
+        Dictionary<string, string?> config = StatusGateway.Configuration(simulator);
+        MqttGatewayConfig.Group(config, "levels", "D100", intervalMs: 50);
+        StatusGateway gateway = await StatusGateway.StartAsync(simulator, config);
+        using HttpClient client = gateway.Client();
+        LineTraces traces = gateway.Host.Services.GetRequiredService<LineTraces>();
+        using HttpResponseMessage tags = await client.GetAsync("api/tags/events", HttpCompletionOption.ResponseHeadersRead);
+        using HttpResponseMessage trace = await client.GetAsync("api/trace/plc/events", HttpCompletionOption.ResponseHeadersRead);
+        tags.Content.Headers.ContentType!.MediaType.Should().Be("text/event-stream");
+        await using Stream tagStream = await tags.Content.ReadAsStreamAsync();
+        await using Stream traceStream = await trace.Content.ReadAsStreamAsync();
+        (await ReadEventAsync(tagStream)).Should().StartWith("event: snapshot\ndata: {");
+        await MqttGatewayConfig.Eventually(() => traces.IsTracing("plc"), "the trace of plc is on while its stream is open", gateway.Logs);
+
+        // The host gives its stop 10 s; open pages must not hold it that long.
+        var stopping = System.Diagnostics.Stopwatch.StartNew();
+        await gateway.DisposeAsync();
+        stopping.Elapsed.Should().BeLessThan(TimeSpan.FromSeconds(8), "the streams end when the gateway stops");
+        (await DrainAsync(tagStream)).Should().BeTrue("the tags stream ended");
+        (await DrainAsync(traceStream)).Should().BeTrue("the trace stream ended");
+        traces.IsTracing("plc").Should().BeFalse("the tap goes with the last stream");
+    }
+
+    /// <summary>Reads one server-sent event (up to its blank line).</summary>
+    private static async Task<string> ReadEventAsync(Stream stream)
+    {
+        var text = new StringBuilder();
+        var buffer = new byte[4096];
+        while (!text.ToString().Contains("\n\n", StringComparison.Ordinal))
+        {
+            int n = await stream.ReadAsync(buffer);
+            if (n == 0)
+            {
+                break;
+            }
+
+            text.Append(Encoding.UTF8.GetString(buffer, 0, n));
+        }
+
+        return text.ToString();
+    }
+
+    /// <summary>Reads to the stream's end; true when it ended (or the connection closed) rather than waiting on.</summary>
+    private static async Task<bool> DrainAsync(Stream stream)
+    {
+        using var patience = new CancellationTokenSource(TimeSpan.FromSeconds(30));
+        var buffer = new byte[4096];
+        try
+        {
+            while (await stream.ReadAsync(buffer, patience.Token) > 0)
+            {
+            }
+
+            return true;
+        }
+        catch (IOException)
+        {
+            return true;
+        }
+        catch (OperationCanceledException)
+        {
+            return false;
+        }
     }
 
     /// <summary>Each route with its parameter filled (the link <c>plc</c>), and the page's files.</summary>
