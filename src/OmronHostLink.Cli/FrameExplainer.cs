@@ -1,4 +1,5 @@
 using OmronHostLink.Protocol.CMode;
+using OmronHostLink.Protocol.Fins;
 
 namespace OmronHostLink.Cli;
 
@@ -32,12 +33,12 @@ internal static class FrameExplainer
         return bytes;
     }
 
-    /// <summary>Explains one typed frame with the standard command table.</summary>
+    /// <summary>Explains one typed frame with the standard command tables.</summary>
     /// <param name="input">The frame as the user typed it.</param>
     /// <param name="response">True for an answer, false for a command, null to tell from the frame where it can.</param>
     public static FrameExplanation Explain(string input, bool? response) => Explain(input, response, CModeCommandTable.Standard);
 
-    /// <summary>Explains one typed frame, looking C-mode headers up in <paramref name="table"/>.</summary>
-    internal static FrameExplanation Explain(string input, bool? response, CModeCommandTable table)
-        => Protocol.Explain.FrameExplainer.Explain(Normalise(input), response, table);
+    /// <summary>Explains one typed frame, looking C-mode headers up in <paramref name="table"/> and FINS codes in <paramref name="fins"/> (default: the standard FINS table).</summary>
+    internal static FrameExplanation Explain(string input, bool? response, CModeCommandTable table, FinsCommandTable? fins = null)
+        => Protocol.Explain.FrameExplainer.Explain(Normalise(input), response, table, fins);
 }

@@ -7,9 +7,9 @@ namespace OmronHostLink.Protocol.Explain;
 
 /// <summary>
 /// Decodes frames without a PLC, with the library's own parsers: <see cref="FrameCheck"/> for shape, FCS and
-/// unit, <see cref="CModeHeaders"/> for header names, <see cref="CModeCommand.Parse"/> and <see cref="CModeResponse"/>
-/// for C-mode fields, <see cref="FinsMessage"/> and <see cref="FinsResponse"/> for FINS (parameters and answer data in
-/// <see cref="FinsExplainFields"/>). Without a direction, <see cref="FrameDirection"/> tells it. The console's
+/// unit, <see cref="CModeCommandTable"/> for header names, <see cref="CModeCommand.Parse"/> and <see cref="CModeResponse"/>
+/// for C-mode fields, <see cref="FinsMessage"/> and <see cref="FinsResponse"/> for FINS (parameters and answer data from
+/// the rows of <see cref="FinsCommandTable"/>). Without a direction, <see cref="FrameDirection"/> tells it. The console's
 /// <c>explain</c> and the gateway's line trace show what this finds; pure, no I/O.
 /// </summary>
 internal static class FrameExplainer
@@ -19,12 +19,13 @@ internal static class FrameExplainer
     /// <param name="response">True for an answer, false for a command, null to tell from the frame where it can.</param>
     public static FrameExplanation Explain(ReadOnlySpan<byte> bytes, bool? response) => Explain(bytes, response, CModeCommandTable.Standard);
 
-    /// <summary>Explains one frame, looking C-mode headers up in <paramref name="table"/>.</summary>
+    /// <summary>Explains one frame, looking C-mode headers up in <paramref name="table"/> and FINS codes in <paramref name="fins"/> (default: the standard FINS table).</summary>
     /// <param name="bytes">The frame; without <c>*</c> or CR it is read as a complete (final) frame. Not empty.</param>
     /// <param name="response">True for an answer, false for a command, null to tell from the frame where it can.</param>
     /// <param name="table">The C-mode command table.</param>
+    /// <param name="fins">The FINS command table; null for the standard one.</param>
     /// <exception cref="ArgumentException"><paramref name="bytes"/> is empty.</exception>
-    public static FrameExplanation Explain(ReadOnlySpan<byte> bytes, bool? response, CModeCommandTable table)
+    public static FrameExplanation Explain(ReadOnlySpan<byte> bytes, bool? response, CModeCommandTable table, FinsCommandTable? fins = null)
     {
         ArgumentNullException.ThrowIfNull(table);
         if (bytes.IsEmpty)
@@ -32,6 +33,7 @@ internal static class FrameExplainer
             throw new ArgumentException("The frame is empty.", nameof(bytes));
         }
 
+        fins ??= FinsCommandTable.Standard;
         byte[] typed = bytes.ToArray();
         var x = new FrameExplanation
         {
@@ -46,8 +48,8 @@ internal static class FrameExplainer
                 x.DirectionFrom = FrameExplanation.FromShape;
             }
 
-            x.Header = CModeHeaders.Initialize;
-            x.Name = CModeHeaders.Name(CModeHeaders.Initialize);
+            x.Header = CModeCommands.Initialize.Header;
+            x.Name = CModeCommands.Initialize.Name;
             x.Notes.Add("INITIALIZE carries no unit number and no FCS; no unit answers it.");
             return x;
         }
@@ -103,14 +105,14 @@ internal static class FrameExplainer
             FrameDirection.Recognise(x, header, text, table);
         }
 
-        CheckLength(x, frame.Length, first: true, fins: header == CModeHeaders.Fins);
-        switch ((header == CModeHeaders.Fins, x.IsResponse))
+        CheckLength(x, frame.Length, first: true, fins: header == CModeCommands.Fins.Header);
+        switch ((header == CModeCommands.Fins.Header, x.IsResponse))
         {
             case (true, true):
-                ExplainFinsResponse(x, text, check.Unit);
+                ExplainFinsResponse(x, text, check.Unit, fins);
                 break;
             case (true, false):
-                ExplainFinsCommand(x, text, check.Unit);
+                ExplainFinsCommand(x, text, check.Unit, fins);
                 break;
             case (false, true):
                 ExplainResponse(x, header, text, table);
@@ -241,26 +243,31 @@ internal static class FrameExplainer
 
     private static void ExplainResponse(FrameExplanation x, string header, ReadOnlySpan<byte> text, CModeCommandTable table)
     {
-        switch (header)
+        if (header == CModeCommands.Test.Header)
         {
-            case CModeHeaders.Test:
-                x.Data = x.Text;
-                x.Field("echo", x.Text);
-                x.Notes.Add("A TS answer carries no end code: success is the text echoed unchanged.");
-                return;
-            case CModeHeaders.UndefinedCommand:
-                x.EndCodeMeaning = EndCode.UndefinedHeader.Meaning();
-                if (text.Length != 0)
-                {
-                    x.Problems.Add("An IC answer carries no text.");
-                }
+            x.Data = x.Text;
+            x.Field("echo", x.Text);
+            x.Notes.Add("A TS answer carries no end code: success is the text echoed unchanged.");
+            return;
+        }
 
-                return;
-            case CModeHeaders.Txd:
-                x.Data = x.Text;
-                x.Field("message", x.Text);
-                x.Notes.Add("EX is sent by the PLC (TXD in Host Link mode) and carries no end code.");
-                return;
+        if (header == CModeCommands.UndefinedCommand.Header)
+        {
+            x.EndCodeMeaning = EndCode.UndefinedHeader.Meaning();
+            if (text.Length != 0)
+            {
+                x.Problems.Add("An IC answer carries no text.");
+            }
+
+            return;
+        }
+
+        if (header == CModeCommands.Txd.Header)
+        {
+            x.Data = x.Text;
+            x.Field("message", x.Text);
+            x.Notes.Add("EX is sent by the PLC (TXD in Host Link mode) and carries no end code.");
+            return;
         }
 
         // A command with a sub-header (QQMR, QQIR) has it echoed before the end code.
@@ -307,7 +314,7 @@ internal static class FrameExplainer
         }
     }
 
-    private static void ExplainFinsCommand(FrameExplanation x, ReadOnlySpan<byte> text, int unit)
+    private static void ExplainFinsCommand(FrameExplanation x, ReadOnlySpan<byte> text, int unit, FinsCommandTable table)
     {
         FinsCommandMessage message;
         try
@@ -321,12 +328,12 @@ internal static class FrameExplainer
         }
 
         x.Field("responseWaitMs", (long)message.Header.ResponseWaitTime.TotalMilliseconds);
-        FinsFields(x, message.Header, message.CommandCode);
+        FinsFields(x, message.Header, message.CommandCode, table);
         x.Field("parameters", Hex(message.Parameters.Span));
         FinsCommand command;
         try
         {
-            command = message.ToCommand();
+            command = message.ToCommand(table);
         }
         catch (FinsFormatException e)
         {
@@ -336,10 +343,10 @@ internal static class FrameExplainer
             return;
         }
 
-        FinsExplainFields.AddParameters(x, command);
+        command.Row.DescribeCommand?.Invoke(command, x);
     }
 
-    private static void ExplainFinsResponse(FrameExplanation x, ReadOnlySpan<byte> text, int unit)
+    private static void ExplainFinsResponse(FrameExplanation x, ReadOnlySpan<byte> text, int unit, FinsCommandTable table)
     {
         if (!EndCodeOf(x, text, out EndCode endCode))
         {
@@ -363,7 +370,7 @@ internal static class FrameExplainer
             return;
         }
 
-        FinsFields(x, response.Header, response.CommandCode);
+        FinsFields(x, response.Header, response.CommandCode, table);
         x.Field("responseCode", response.EndCode.ToString());
         x.Field("responseMeaning", response.EndCode.Meaning);
         x.Field("networkRelayError", response.EndCode.NetworkRelayError);
@@ -374,7 +381,7 @@ internal static class FrameExplainer
         {
             try
             {
-                FinsExplainFields.AddAnswerData(x, response.CommandCode, response.Data.Span);
+                table.Find(response.CommandCode)?.DescribeAnswer?.Invoke(response.Data.Span, x);
             }
             catch (HostLinkFrameException e)
             {
@@ -403,7 +410,7 @@ internal static class FrameExplainer
     }
 
     /// <summary>The FINS header fields (the network ones only for a network header), the command code and its name.</summary>
-    private static void FinsFields(FrameExplanation x, FinsHeader h, ushort command)
+    private static void FinsFields(FrameExplanation x, FinsHeader h, ushort command, FinsCommandTable table)
     {
         x.Field("icf", Hex(h.Icf));
         if (h.IsNetwork)
@@ -424,7 +431,7 @@ internal static class FrameExplainer
         x.Field("sa2", Hex(h.Sa2));
         x.Field("sid", Hex(h.Sid));
         x.Field("command", command.ToString("X4", CultureInfo.InvariantCulture));
-        x.Name = FinsCommandTable.Standard.Name(command) is { } name ? $"FINS {command:X4} {name}" : $"FINS {command:X4}";
+        x.Name = table.Name(command) is { } name ? $"FINS {command:X4} {name}" : $"FINS {command:X4}";
     }
 
     private static string Hex(byte value) => value.ToString("X2", CultureInfo.InvariantCulture);
