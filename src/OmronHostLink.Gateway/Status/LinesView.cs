@@ -40,7 +40,7 @@ internal sealed class LinesView(IOptions<GatewayOptions> gateway, LinkStatistics
                 TransactionsPerSecond = rates.Sample(name, totals.Transactions),
                 Totals = totals,
                 Units = units.Where(u => u.Link == name).Select(u => Unit(name, u)).ToList(),
-                ScanClasses = ScanClasses(options),
+                ScanClasses = ScanClasses(options, totals.ScanClasses),
             });
         }
 
@@ -79,16 +79,25 @@ internal sealed class LinesView(IOptions<GatewayOptions> gateway, LinkStatistics
         return (line.PortName, speedEnd < 0 ? format : format.Insert(speedEnd, " bps"));
     }
 
-    /// <summary>The groups of each unit by interval, shortest first.</summary>
-    private static List<ScanClassView> ScanClasses(LinkOptions options)
+    /// <summary>The groups of each unit by interval, shortest first, each with its plan and cycle times from the statistics.</summary>
+    private static List<ScanClassView> ScanClasses(LinkOptions options, IReadOnlyList<ScanClassStatistics> measured)
         => options.Groups
             .GroupBy(g => (g.Value.Unit, g.Value.Interval))
             .OrderBy(c => c.Key.Unit).ThenBy(c => c.Key.Interval)
-            .Select(c => new ScanClassView
+            .Select(c =>
             {
-                Unit = c.Key.Unit,
-                IntervalMs = c.Key.Interval.TotalMilliseconds,
-                Groups = c.Select(g => g.Key).Order(StringComparer.Ordinal).ToList(),
+                ScanClassStatistics? figures = measured.FirstOrDefault(m => m.Unit == c.Key.Unit && m.IntervalMs == c.Key.Interval.TotalMilliseconds);
+                return new ScanClassView
+                {
+                    Unit = c.Key.Unit,
+                    IntervalMs = c.Key.Interval.TotalMilliseconds,
+                    Groups = c.Select(g => g.Key).Order(StringComparer.Ordinal).ToList(),
+                    MeasuredCycleMs = figures?.LastCycleMs,
+                    AverageCycleMs = figures?.AverageCycleMs,
+                    EstimatedCycleMs = figures is { Reads: > 0 } ? figures.EstimatedCycleMs : null,
+                    Reads = figures is { Reads: > 0 } ? figures.Reads : null,
+                    Overruns = figures?.Overruns ?? 0,
+                };
             })
             .ToList();
 }

@@ -107,8 +107,20 @@ internal sealed class ScanClassView
     /// <summary>The groups (tags) of the class.</summary>
     public required IReadOnlyList<string> Groups { get; init; }
 
-    /// <summary>The cycle measured for the class, in ms; null while the statistics do not measure it.</summary>
+    /// <summary>The last cycle's time (from its start to its last answer), in ms; null before the first cycle.</summary>
     public double? MeasuredCycleMs { get; init; }
+
+    /// <summary>The average cycle time, in ms; null before the first cycle.</summary>
+    public double? AverageCycleMs { get; init; }
+
+    /// <summary>The least time a cycle takes on the line as planned, in ms; null before the class is planned.</summary>
+    public double? EstimatedCycleMs { get; init; }
+
+    /// <summary>The commands a cycle, as planned; null before the class is planned.</summary>
+    public int? Reads { get; init; }
+
+    /// <summary>Cycles that ended after the next was due.</summary>
+    public long Overruns { get; init; }
 }
 
 /// <summary>A tag in the Tags view: in the first document every field, afterwards what changed.</summary>

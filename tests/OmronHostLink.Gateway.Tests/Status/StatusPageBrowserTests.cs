@@ -32,6 +32,9 @@ public sealed class StatusPageBrowserTests(StatusPageFixture page, ITestOutputHe
         long first = long.Parse(Text(browser, "article[data-link='plc'] .transactions")!, System.Globalization.CultureInfo.InvariantCulture);
         await browser.Until(b => long.Parse(Text(b, "article[data-link='plc'] .transactions")!, System.Globalization.CultureInfo.InvariantCulture) > first, "the transactions count up without a reload");
         Text(browser, "article[data-link='plc'] table.scan-classes").Should().Contain("setpoint").And.Contain("levels");
+        // Each scan class shows its measured cycle beside its interval once it has read.
+        string cycle = await browser.Until(b => Text(b, "article[data-link='plc'] table.scan-classes tr[data-scan-unit='0'] .cycle") is { } c && !c.StartsWith('—') ? c : null, "the measured cycle of unit 0's scan class is shown");
+        cycle.Should().MatchRegex(@"^\d+(\.\d+)? ms / \d+(\.\d+)? ms$");
         output.WriteLine(page.Screenshot("lines"));
     }
 

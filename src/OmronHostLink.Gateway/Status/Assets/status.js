@@ -101,7 +101,6 @@
     },
     link(link) {
       const t = link.totals;
-      const anyMeasured = link.scanClasses.some(c => c.measuredCycleMs !== undefined && c.measuredCycleMs !== null);
       return el('article', { class: 'card link', 'data-link': link.name },
         el('h2', null, link.name, ' ', badge(link.state)),
         el('dl', { class: 'facts' },
@@ -121,11 +120,13 @@
           el('tbody', null, ...link.units.map(u => this.unit(u))))),
         el('h3', null, 'Scan classes'),
         el('div', { class: 'scroll' }, el('table', { class: 'scan-classes' },
-          el('thead', null, el('tr', null, el('th', null, 'Unit'), el('th', null, 'Interval'), anyMeasured ? el('th', null, 'Measured cycle') : null, el('th', null, 'Groups'))),
-          el('tbody', null, ...link.scanClasses.map(c => el('tr', null,
-            el('td', null, c.unit), el('td', null, interval(c.intervalMs)),
-            anyMeasured ? el('td', { class: c.measuredCycleMs > c.intervalMs ? 'late' : null }, ms(c.measuredCycleMs)) : null,
-            el('td', null, c.groups.join(', '))))))));
+          el('thead', null, el('tr', null, ...['Unit', 'Interval', 'Cycle (last / avg)', 'Planned', 'Overruns', 'Groups'].map(h => el('th', null, h)))),
+          el('tbody', null, ...link.scanClasses.map(c => el('tr', { 'data-scan-unit': c.unit, 'data-interval-ms': c.intervalMs },
+            el('td', { 'data-label': 'Unit' }, c.unit), el('td', { 'data-label': 'Interval' }, interval(c.intervalMs)),
+            el('td', { 'data-label': 'Cycle', class: c.measuredCycleMs > c.intervalMs ? 'cycle late' : 'cycle' }, `${ms(c.measuredCycleMs)} / ${ms(c.averageCycleMs)}`),
+            el('td', { 'data-label': 'Planned' }, c.reads === null || c.reads === undefined ? '—' : `${c.reads} read${c.reads === 1 ? '' : 's'}, ≥ ${ms(c.estimatedCycleMs)}`),
+            el('td', { 'data-label': 'Overruns', class: c.overruns > 0 ? 'overruns late' : 'overruns' }, c.overruns),
+            el('td', { 'data-label': 'Groups' }, c.groups.join(', '))))))));
     },
     unit(u) {
       const f = u.figures;
