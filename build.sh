@@ -22,6 +22,8 @@ TOOLS=(
   "mosquitto-clients mosquitto_sub"      # its command-line clients
   "nodejs node"                          # Eclipse Tahu's JavaScript Sparkplug B library decodes the gateway's payloads
   "npm npm"                              # restores that library (tests/OmronHostLink.Gateway.Tests/Sparkplug/Tahu)
+  "chromium chromium"                    # the headless browser the gateway's status page is tested in
+  "chromium-driver chromedriver"         # its WebDriver, which the status-page tests drive it through (Selenium)
 )
 
 # npm folders whose packages the tests load, restored with npm ci from their package-lock.json.

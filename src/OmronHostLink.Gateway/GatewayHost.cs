@@ -8,6 +8,7 @@ using OmronHostLink.Gateway.Polling;
 using OmronHostLink.Gateway.Simulation;
 using OmronHostLink.Gateway.Sparkplug;
 using OmronHostLink.Gateway.Statistics;
+using OmronHostLink.Gateway.Status;
 using OmronHostLink.Gateway.Telemetry;
 
 namespace OmronHostLink.Gateway;
@@ -32,7 +33,7 @@ public static class GatewayHost
     /// <summary>The sections the gateway reads, besides the generic host's own.</summary>
     internal static readonly string[] Sections =
     [
-        GatewayOptions.SectionName, SimulatorOptions.SectionName, MqttOptions.SectionName, SparkplugOptions.SectionName, TelemetryOptions.SectionName, "Logging",
+        GatewayOptions.SectionName, SimulatorOptions.SectionName, MqttOptions.SectionName, SparkplugOptions.SectionName, StatusOptions.SectionName, TelemetryOptions.SectionName, "Logging",
     ];
 
     private static HostApplicationBuilder Configure(HostApplicationBuilder builder)
@@ -54,6 +55,9 @@ public static class GatewayHost
         services.AddLinkStatistics();
         services.AddMqttOutput(gateway, builder.Environment.ContentRootPath);
         services.AddSparkplugOutput(gateway);
+        // The status page reads the outputs and the statistics: it starts after them and before the links, so that it
+        // hears every link open, and stops after the links.
+        services.AddStatusPage(gateway);
         services.AddSingleton<PollingHostedService>();
         services.AddHostedService(sp => sp.GetRequiredService<PollingHostedService>());
         services.AddTelemetryExport(gateway);

@@ -17,8 +17,12 @@ internal sealed class MqttBrokerConnection : IAsyncDisposable
     private readonly TimeProvider _time;
     private readonly CancellationTokenSource _stop = new();
     private readonly List<Task> _loops = [];
+    private readonly object _stateGate = new();
     private TimeSpan _backoff;
     private volatile string? _certificateProblem;
+    private DateTimeOffset? _connectedSince;
+    private DateTimeOffset? _lastPublished;
+    private (string Reason, DateTimeOffset Time)? _lastFailure;
 
     /// <summary>Makes the client; nothing connects until a loop does.</summary>
     /// <param name="options">The validated broker settings.</param>
@@ -48,6 +52,42 @@ internal sealed class MqttBrokerConnection : IAsyncDisposable
 
     /// <summary>How many attempts have failed since the last connection (or since the start).</summary>
     public int FailedAttempts { get; private set; }
+
+    /// <summary>Since when the output has been connected (<see cref="Connected"/>); null while it is not.</summary>
+    public DateTimeOffset? ConnectedSince
+    {
+        get
+        {
+            lock (_stateGate)
+            {
+                return Client.IsConnected ? _connectedSince : null;
+            }
+        }
+    }
+
+    /// <summary>When the broker last took a message of the output (<see cref="Published"/>); null before the first.</summary>
+    public DateTimeOffset? LastPublished
+    {
+        get
+        {
+            lock (_stateGate)
+            {
+                return _lastPublished;
+            }
+        }
+    }
+
+    /// <summary>Why the last attempt failed or the last connection ended, and when; null when none has.</summary>
+    public (string Reason, DateTimeOffset Time)? LastFailure
+    {
+        get
+        {
+            lock (_stateGate)
+            {
+                return _lastFailure;
+            }
+        }
+    }
 
     /// <summary>Starts the client options: the broker, credentials and TLS, a refused certificate remembered for <see cref="FailedAsync"/>.</summary>
     public MqttClientOptionsBuilder ClientOptions()
@@ -79,7 +119,23 @@ internal sealed class MqttBrokerConnection : IAsyncDisposable
     }
 
     /// <summary>A connection is up: the next failure waits <see cref="BackoffOptions.Initial"/> again.</summary>
-    public void Connected() => FailedAttempts = 0;
+    public void Connected()
+    {
+        FailedAttempts = 0;
+        lock (_stateGate)
+        {
+            _connectedSince = _time.GetUtcNow();
+        }
+    }
+
+    /// <summary>The broker took a message of the output.</summary>
+    public void Published()
+    {
+        lock (_stateGate)
+        {
+            _lastPublished = _time.GetUtcNow();
+        }
+    }
 
     /// <summary>
     /// After a failed attempt or a lost connection: closes what is left of the connection, counts the failure and says
@@ -91,6 +147,12 @@ internal sealed class MqttBrokerConnection : IAsyncDisposable
         await DropAsync().ConfigureAwait(false);
         string reason = _certificateProblem is { } why ? "TLS: " + why : Describe(error);
         _certificateProblem = null;
+        lock (_stateGate)
+        {
+            _connectedSince = null;
+            _lastFailure = (reason, _time.GetUtcNow());
+        }
+
         return (reason, Backoff());
     }
 

@@ -76,6 +76,9 @@ internal sealed class MqttGateway : IHostedService, IAsyncDisposable
     /// <summary>Whether the client is connected to the broker now.</summary>
     public bool IsConnected => _connection.Client.IsConnected;
 
+    /// <summary>The broker connection: the server in use, since when it is connected, its last failure and publish.</summary>
+    public MqttBrokerConnection Connection => _connection;
+
     /// <inheritdoc/>
     public Task StartAsync(CancellationToken cancellationToken)
     {
@@ -299,6 +302,7 @@ internal sealed class MqttGateway : IHostedService, IAsyncDisposable
         if (result.ReasonCode is MqttClientPublishReasonCode.Success or MqttClientPublishReasonCode.NoMatchingSubscribers)
         {
             _metrics.Published();
+            _connection.Published();
         }
         else if (_refusedTopics.Add(message.Topic))
         {

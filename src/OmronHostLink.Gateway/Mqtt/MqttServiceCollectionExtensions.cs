@@ -60,6 +60,7 @@ internal static class MqttServiceCollectionExtensions
             sp.GetRequiredService<TimeProvider>()));
         services.AddSingleton<MqttGateway>();
         services.AddHostedService(sp => sp.GetRequiredService<MqttGateway>());
+        services.AddSingleton<IOutputStatus, MqttOutputStatus>();
         services.AddHostedService<StatisticsPublisher>();
         return services;
     }

@@ -46,6 +46,9 @@ internal sealed class OutboundQueueStore : IDisposable
     /// <summary>The state directory in effect.</summary>
     public string Directory { get; }
 
+    /// <summary>Whether the queue's messages are kept on disk (<c>DurableQueue:Enabled</c>).</summary>
+    public bool IsDurable => _journal is not null;
+
     private ILogger Logger { get; }
 
     /// <summary>
@@ -117,6 +120,16 @@ internal sealed class OutboundQueueStore : IDisposable
         }
 
         return queue;
+    }
+
+    /// <summary>
+    /// Of the messages <paramref name="queue"/> holds, those a crash would lose now: with the durable queue the ones
+    /// its database could not take (held in memory only), otherwise every one.
+    /// </summary>
+    public long AtRisk(OutboundQueue queue)
+    {
+        ArgumentNullException.ThrowIfNull(queue);
+        return _journal?.MemoryOnly ?? queue.Count;
     }
 
     /// <summary>Closes the files; the count and the durable queue stay in them for the next run.</summary>

@@ -51,6 +51,12 @@ internal sealed class SparkplugEdgeNode : IHostedService, IAsyncDisposable
     /// <summary>Whether the session is up (connected, births sent).</summary>
     public bool IsOnline { get; private set; }
 
+    /// <summary>The broker connection: the server in use, since when it is connected, its last failure and publish.</summary>
+    public MqttBrokerConnection Connection => _connection;
+
+    /// <summary>The primary host application whose online STATE the births wait for; null when they wait for none.</summary>
+    public string? PrimaryHostId => _primaryHost?.HostId;
+
     /// <inheritdoc/>
     public Task StartAsync(CancellationToken cancellationToken)
     {
@@ -278,6 +284,7 @@ internal sealed class SparkplugEdgeNode : IHostedService, IAsyncDisposable
         foreach (SparkplugMessage message in messages)
         {
             await client.PublishAsync(Message(message.Topic, message.Payload, MqttQualityOfServiceLevel.AtMostOnce), cancellationToken).ConfigureAwait(false);
+            _connection.Published();
         }
     }
 

@@ -42,6 +42,7 @@ internal static class SparkplugServiceCollectionExtensions
             sp.GetRequiredService<ILogger<SparkplugCommands>>()));
         services.AddSingleton<SparkplugEdgeNode>();
         services.AddHostedService(sp => sp.GetRequiredService<SparkplugEdgeNode>());
+        services.AddSingleton<IOutputStatus, SparkplugOutputStatus>();
         return services;
     }
 }

@@ -7,12 +7,14 @@ using OmronHostLink.Simulator;
 namespace OmronHostLink.Gateway.Tests.Mqtt;
 
 /// <summary>
-/// A <see cref="VirtualPlc"/> served over TCP on 127.0.0.1 that logs every frame it receives and counts the answers
-/// it sends: the tests read from it what reached the PLC, and drive memory changes in step with the worker's polls.
+/// A <see cref="VirtualPlc"/> served over TCP on 127.0.0.1 that logs every frame it receives and every frame it sends:
+/// the tests read from it what reached the PLC and what it answered, and drive memory changes in step with the worker's
+/// polls.
 /// </summary>
 public sealed class RecordingSimulator : IAsyncDisposable
 {
     private readonly List<string> _received = new();
+    private readonly List<string> _sent = new();
     private readonly object _gate = new();
     private readonly List<(TcpClient Client, Task Session)> _sessions = new();
     private TcpListener? _listener;
@@ -41,6 +43,18 @@ public sealed class RecordingSimulator : IAsyncDisposable
             lock (_received)
             {
                 return _received.ToArray();
+            }
+        }
+    }
+
+    /// <summary>Every frame sent (answers, and the bare CR asking for a command's next frame), without its CR, in order.</summary>
+    public IReadOnlyList<string> Sent
+    {
+        get
+        {
+            lock (_sent)
+            {
+                return _sent.ToArray();
             }
         }
     }
@@ -154,10 +168,11 @@ public sealed class RecordingSimulator : IAsyncDisposable
         }
     }
 
-    /// <summary>Passes bytes through, cutting what the PLC reads into frames at CR and counting the CRs it writes.</summary>
+    /// <summary>Passes bytes through, cutting what the PLC reads and writes into frames at CR and counting the CRs it writes.</summary>
     private sealed class RecordingStream(NetworkStream inner, RecordingSimulator owner) : PassThroughStream(inner)
     {
         private readonly StringBuilder _frame = new();
+        private readonly StringBuilder _answer = new();
 
         public override async ValueTask<int> ReadAsync(Memory<byte> buffer, CancellationToken cancellationToken = default)
         {
@@ -199,7 +214,17 @@ public sealed class RecordingSimulator : IAsyncDisposable
             {
                 if (b == '\r')
                 {
+                    lock (owner._sent)
+                    {
+                        owner._sent.Add(_answer.ToString());
+                    }
+
+                    _answer.Clear();
                     Interlocked.Increment(ref owner._answers);
+                }
+                else
+                {
+                    _answer.Append((char)b);
                 }
             }
         }

@@ -1,13 +1,13 @@
 using System.Text.Json.Serialization;
 using OmronHostLink.Protocol.Fins;
 
-namespace OmronHostLink.Cli;
+namespace OmronHostLink.Protocol.Explain;
 
 /// <summary>
-/// A decoded frame: what <c>explain</c> prints, and, property for property in this order, its JSON document (written by
-/// <see cref="ExplainJsonContext"/>).
+/// A decoded frame (<see cref="FrameExplainer"/>): what the console's <c>explain</c> prints and, property for property
+/// in this order, writes as its JSON document; what the gateway's line trace shows beside each frame.
 /// </summary>
-internal sealed class FrameExplanation : OmronHostLink.Protocol.ICommandFields
+internal sealed class FrameExplanation : ICommandFields
 {
     /// <summary><see cref="DirectionFrom"/>: the user said which way the frame goes.</summary>
     public const string FromOption = "option";
