@@ -53,7 +53,7 @@ public static class GatewayHost
         // The outputs (each an ITagOutput; the polling reports to all of them in registration order).
         services.AddLinkStatistics();
         services.AddMqttOutput(gateway, builder.Environment.ContentRootPath);
-        services.AddSparkplugOutput(gateway);
+        services.AddSparkplugOutput(gateway, builder.Environment.ContentRootPath);
         services.AddSingleton<PollingHostedService>();
         services.AddHostedService(sp => sp.GetRequiredService<PollingHostedService>());
         services.AddTelemetryExport(gateway);

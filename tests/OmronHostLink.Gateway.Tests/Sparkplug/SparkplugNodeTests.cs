@@ -1,3 +1,4 @@
+using Microsoft.Extensions.Logging.Abstractions;
 using Microsoft.Extensions.Time.Testing;
 using OmronHostLink.Gateway.Configuration;
 using OmronHostLink.Gateway.Sparkplug;
@@ -37,17 +38,19 @@ public sealed class SparkplugNodeTests
         options.Links["plc"] = new LinkOptions();
         options.Links["plc"].Groups["a"] = new PollGroupOptions { Address = "D1", Type = "int16" };
         options.Links["plc"].Groups["b"] = new PollGroupOptions { Address = "D2", Type = "int16" };
-        var node = new SparkplugNode(new SparkplugOptions { GroupId = "G", EdgeNodeId = "N" }, new Outputs.TagCatalog(options), new FakeTimeProvider(T0));
+        var sparkplug = new SparkplugOptions { GroupId = "G", EdgeNodeId = "N", StoreAndForward = { Enabled = false } };
+        var time = new FakeTimeProvider(T0);
+        var node = new SparkplugNode(sparkplug, new Outputs.TagCatalog(options), SparkplugHistory.Open(sparkplug, Path.GetTempPath(), time, NullLogger.Instance), time);
         node.TagChanged(Change("a", (short)1, TagQuality.Good));
         node.TagChanged(Change("b", (short)2, TagQuality.Good));
         node.Births(0).Select(m => m.Topic.Type).Should().Equal(SparkplugMessageType.NBIRTH, SparkplugMessageType.DBIRTH);
 
         // The polling reports every tag of the unit comm-error, then the unit: the publisher may take its messages in between.
         node.TagChanged(Change("a", null, TagQuality.CommError));
-        List<SparkplugMessage> first = node.TakeMessages(connected: true);
+        List<SparkplugMessage> first = node.TakeMessages();
         node.TagChanged(Change("b", null, TagQuality.CommError));
         node.UnitChanged("plc", 0, UnitState.CommError, "timeout");
-        List<SparkplugMessage> then = node.TakeMessages(connected: true);
+        List<SparkplugMessage> then = node.TakeMessages();
 
         first.Select(m => (m.Topic.Type, m.Topic.DeviceId)).Should().Equal((SparkplugMessageType.DDEATH, "plc-0"));
         then.Should().BeEmpty("the death said it all");
