@@ -1,6 +1,7 @@
 using System.Diagnostics;
 using System.Diagnostics.Metrics;
 using System.Globalization;
+using System.Text.Json;
 using Microsoft.Extensions.DependencyInjection;
 using Microsoft.Extensions.Diagnostics.Metrics.Testing;
 using Microsoft.Extensions.Hosting;
@@ -100,6 +101,18 @@ public sealed class ServerListTests(ITestOutputHelper output) : IAsyncLifetime
                 .Should().BeEquivalentTo([("mqtt", _second.Port), ("sparkplug", _second.Port)]);
         }
 
+        // The statistics say which server each output uses, and the node's births.
+        string outputsTopic = $"{MqttGatewayConfig.Prefix}/status/{ClientId}/outputs";
+        ReceivedMessage statistics = await onSecond.WaitForAsync(outputsTopic, m => m.Payload.Split($"\"state\":\"connected\",\"server\":\"{Address(_second)}\"").Length == 3);
+        using (JsonDocument document = JsonDocument.Parse(statistics.Payload))
+        {
+            JsonElement[] outputs = document.RootElement.GetProperty("outputs").EnumerateArray().ToArray();
+            outputs.Select(o => (o.GetProperty("output").GetString(), o.GetProperty("serverKey").GetString(), o.GetProperty("serverNumber").GetInt32())).Should().Equal(("mqtt", "Mqtt:Servers:1", 2), ("sparkplug", "Sparkplug:Servers:1", 2));
+            outputs[1].GetProperty("figures").GetProperty("births").GetInt64().Should().BeGreaterThanOrEqualTo(4, "NBIRTH and DBIRTH on each broker");
+            outputs[1].GetProperty("figures").GetProperty("rebirthsRequested").GetInt64().Should().Be(0);
+            outputs[0].GetProperty("connections").GetInt64().Should().Be(2);
+        }
+
         // Polling goes on, and its changes reach the second broker.
         _plc.WriteWords("D100", [42]);
         await onSecond.WaitForAsync(MqttGatewayConfig.Topic("level"), m => m.Payload.Contains("\"value\":42", StringComparison.Ordinal));
@@ -177,6 +190,7 @@ public sealed class ServerListTests(ITestOutputHelper output) : IAsyncLifetime
             config.Remove("Mqtt:Port");
             Servers(config, "Mqtt");
             config["Mqtt:KeepAlive"] = KeepAlive.ToString();
+            config["Mqtt:StatisticsInterval"] = "1s";
         }
 
         MqttGatewayConfig.Group(config, "level", "D100");
