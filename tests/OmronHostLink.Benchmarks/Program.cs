@@ -1,11 +1,13 @@
 using BenchmarkDotNet.Running;
 using OmronHostLink.Benchmarks;
 using OmronHostLink.Benchmarks.Demotion;
+using OmronHostLink.Benchmarks.Fleet;
 using OmronHostLink.Benchmarks.Scale;
 
 // dotnet run -c Release --project tests/OmronHostLink.Benchmarks -- wire [--runs N] [--baud N] [--no-plan | --plan-only | --tcp-only | --no-tcp] [--tcp-transactions N]
 // dotnet run -c Release --project tests/OmronHostLink.Benchmarks -- serial [--rounds N] [--reads N]
 // dotnet run -c Release --project tests/OmronHostLink.Benchmarks -- scale [--links 1,10,50,100] [--seconds 60] [--tags 10]
+// dotnet run -c Release --project tests/OmronHostLink.Benchmarks -- fleet [--gateways 20] [--links 5] [--seconds 60] [--kill-at 30] [--warmup 30] [--change-every 1s] [--poll 250ms]
 // dotnet run -c Release --project tests/OmronHostLink.Benchmarks -- demotion [--units 8] [--interval 1s] [--window 60s] [--set Demotion:After=3]
 // dotnet run -c Release --project tests/OmronHostLink.Benchmarks -- --filter '*'
 if (args.Length > 0 && args[0] == "wire")
@@ -21,6 +23,11 @@ if (args.Length > 0 && args[0] == "serial")
 if (args.Length > 0 && args[0] == "scale")
 {
     return await ScaleBenchmark.RunAsync(args[1..]);
+}
+
+if (args.Length > 0 && args[0] == "fleet")
+{
+    return await FleetRun.RunAsync(args[1..]);
 }
 
 if (args.Length > 0 && args[0] == "demotion")
