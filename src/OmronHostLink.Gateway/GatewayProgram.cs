@@ -12,6 +12,9 @@ namespace OmronHostLink.Gateway;
 /// </summary>
 public static class GatewayProgram
 {
+    /// <summary>The command-line switch that writes each link's plan (its scan classes and their reads) and exits.</summary>
+    internal const string PlanSwitch = "--plan";
+
     /// <summary>Runs the gateway until it is stopped (Ctrl+C, SIGTERM, a Windows service stop).</summary>
     /// <param name="args">The command line: configuration overrides such as <c>--Mqtt:Host=broker</c>.</param>
     /// <param name="error">Where configuration problems are written (the console's error stream).</param>
@@ -19,6 +22,11 @@ public static class GatewayProgram
     public static async Task<int> RunAsync(string[] args, TextWriter error)
     {
         ArgumentNullException.ThrowIfNull(error);
+        ArgumentNullException.ThrowIfNull(args);
+
+        // --plan: the configuration checked as for a start, then each link's plan written out; no PLC is asked.
+        bool planOnly = args.Contains(PlanSwitch, StringComparer.OrdinalIgnoreCase);
+        args = [.. args.Where(a => !a.Equals(PlanSwitch, StringComparison.OrdinalIgnoreCase))];
         HostApplicationBuilder builder;
         try
         {
@@ -54,6 +62,12 @@ public static class GatewayProgram
         if (problems.Count > 0)
         {
             return Invalid(error, problems);
+        }
+
+        if (planOnly)
+        {
+            await Polling.ScanPlanReport.WriteAsync(host.Services.GetRequiredService<IOptions<GatewayOptions>>().Value, Console.Out).ConfigureAwait(false);
+            return 0;
         }
 
         CancellationToken stopping = host.Services.GetRequiredService<IHostApplicationLifetime>().ApplicationStopping;

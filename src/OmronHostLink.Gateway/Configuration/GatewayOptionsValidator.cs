@@ -36,7 +36,7 @@ internal sealed class GatewayOptionsValidator(GatewayConfiguration gateway) : Se
 
     /// <summary>Why <paramref name="unit"/> is no unit number; null when it is one.</summary>
     internal static string? UnitProblem(int unit)
-        => unit is < 0 or > HostLinkUnit.MaxUnitNumber ? $"must be 0-{HostLinkUnit.MaxUnitNumber}; it is {unit}." : null;
+        => HostLinkRules.CheckUnitNumber(unit) is { } problem ? $"{problem}." : null;
 
     /// <summary>Why <paramref name="interval"/> is no poll interval; null when it is one.</summary>
     internal static string? IntervalProblem(TimeSpan interval)
@@ -115,7 +115,7 @@ internal sealed class GatewayOptionsValidator(GatewayConfiguration gateway) : Se
         PollGroupOptions group = configured.Options;
         if (UnitProblem(group.Unit) is { } unitProblem)
         {
-            failures.Add($"{configured.KeyOf("Unit")} {unitProblem}");
+            failures.Add($"{configured.KeyOf("Unit")}: {unitProblem}");
         }
 
         if (IntervalProblem(group.Interval) is { } intervalProblem)

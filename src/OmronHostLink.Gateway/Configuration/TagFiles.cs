@@ -26,7 +26,7 @@ internal static class TagFiles
             int before = link.TagFileProblems.Count;
             if (GatewayOptionsValidator.UnitProblem(file.Unit) is { } unitProblem)
             {
-                link.TagFileProblems.Add($"{key}:Unit {unitProblem}");
+                link.TagFileProblems.Add($"{key}:Unit: {unitProblem}");
             }
 
             if (GatewayOptionsValidator.IntervalProblem(file.Interval) is { } intervalProblem)

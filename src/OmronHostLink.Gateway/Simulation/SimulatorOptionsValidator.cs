@@ -25,9 +25,9 @@ internal sealed class SimulatorOptionsValidator(GatewayConfiguration gateway) : 
 
         foreach (int unit in options.UnitsOrDefault)
         {
-            if (unit is < 0 or > HostLinkUnit.MaxUnitNumber)
+            if (HostLinkRules.CheckUnitNumber(unit) is { } unitProblem)
             {
-                failures.Add($"{root}:Units: unit numbers are 0-{HostLinkUnit.MaxUnitNumber}; {unit} is not.");
+                failures.Add($"{root}:Units: {unitProblem}.");
             }
         }
 

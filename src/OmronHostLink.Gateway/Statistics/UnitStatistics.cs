@@ -54,6 +54,10 @@ internal sealed class UnitStatistics
     [JsonPropertyName("averageResponseMs")]
     public double? AverageResponseMs { get; init; }
 
+    /// <summary>The unit's scan classes (for the totals: every unit's), by unit and interval: plan and measured cycle times.</summary>
+    [JsonPropertyName("scanClasses")]
+    public IReadOnlyList<ScanClassStatistics> ScanClasses { get; init; } = [];
+
     /// <summary>When the counting started (the gateway's start).</summary>
     [JsonPropertyName("since")]
     [JsonConverter(typeof(UtcTimeJsonConverter))]

@@ -89,18 +89,7 @@ public sealed partial class GatewayArchitectureTests(ITestOutputHelper output)
     /// <summary>A source file of the gateway: where it lies and its code without comments and text (documentation references kept).</summary>
     private sealed record SourceFile(string Path, string Folder, string Namespace, string Code);
 
-    private static string GatewaySource()
-    {
-        for (DirectoryInfo? d = new(AppContext.BaseDirectory); d is not null; d = d.Parent)
-        {
-            if (File.Exists(System.IO.Path.Combine(d.FullName, "OmronHostLink.sln")))
-            {
-                return System.IO.Path.Combine(d.FullName, "src", "OmronHostLink.Gateway");
-            }
-        }
-
-        throw new InvalidOperationException("The repository root (OmronHostLink.sln) is not above " + AppContext.BaseDirectory);
-    }
+    private static string GatewaySource() => RepositoryRoot.Combine("src", "OmronHostLink.Gateway");
 
     private static List<SourceFile> Sources()
     {

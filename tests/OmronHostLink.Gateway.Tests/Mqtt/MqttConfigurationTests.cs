@@ -162,7 +162,5 @@ public sealed class MqttConfigurationTests
             .And.NotContain("Unspecified");
     }
 
-    private static IEnumerable<string> Messages(Exception e) => e is AggregateException a
-        ? a.InnerExceptions.SelectMany(Messages).Prepend(e.Message)
-        : e.InnerException is null ? [e.Message] : Messages(e.InnerException).Prepend(e.Message);
+    private static IEnumerable<string> Messages(Exception e) => ExceptionMessages.Of(e);
 }

@@ -153,6 +153,9 @@ public sealed class MqttWriteTests(ITestOutputHelper output) : IAsyncLifetime
     {
         Dictionary<string, string?> config = MqttGatewayConfig.Create(_simulator.Port, _broker);
         config["Mqtt:Writes:Enabled"] = writes ? "true" : "false";
+
+        // The frames' headers tell reads (R…) from writes: the link reads by area, without MM and QQ.
+        config["HostLink:Links:plc:UseCompoundRead"] = "Off";
         config["Mqtt:Writes:ReplyPrefixes:0"] = "replies";
         MqttGatewayConfig.Group(config, "setpoint", "D500", "int16", intervalMs: 50, writable: true);
         MqttGatewayConfig.Group(config, "readonly", "D600", "int16", intervalMs: 50);
@@ -170,12 +173,4 @@ public sealed class MqttWriteTests(ITestOutputHelper output) : IAsyncLifetime
         }
     }
 
-    private sealed class AsyncHost(IHost host) : IAsyncDisposable
-    {
-        public async ValueTask DisposeAsync()
-        {
-            await host.StopAsync();
-            host.Dispose();
-        }
-    }
 }

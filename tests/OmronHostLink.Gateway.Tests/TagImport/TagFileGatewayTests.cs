@@ -104,7 +104,5 @@ public sealed class TagFileGatewayTests : IDisposable
         }
     }
 
-    private static IEnumerable<string> Messages(Exception e) => e is AggregateException a
-        ? a.InnerExceptions.SelectMany(Messages).Prepend(e.Message)
-        : e.InnerException is null ? [e.Message] : Messages(e.InnerException).Prepend(e.Message);
+    private static IEnumerable<string> Messages(Exception e) => ExceptionMessages.Of(e);
 }

@@ -1,16 +1,12 @@
-using System.Text.Json.Serialization;
-using OmronHostLink.Protocol.Fins;
-
-namespace OmronHostLink.Cli;
+namespace OmronHostLink.Protocol.Fins;
 
 /// <summary>
-/// A FINS memory address as <c>explain</c> shows it: the area code and its name, the address in CX-Programmer form
+/// A FINS memory address as a row describes it for a diagnostic view (the console's <c>explain</c>): the area code and its name, the address in CX-Programmer form
 /// where the area has one (null for forced-status areas, registers, task flags and the EM current bank), word and bit.
 /// </summary>
 internal sealed record FinsAddressField(string AreaCode, string Area, string? Address, long Word, long Bit)
 {
-    /// <summary>What 2301 FORCED SET/RESET does to the bit; null for a plain address.</summary>
-    [JsonIgnore(Condition = JsonIgnoreCondition.WhenWritingNull)]
+    /// <summary>What 2301 FORCED SET/RESET does to the bit; null for a plain address (left out of JSON).</summary>
     public string? Action { get; init; }
 
     /// <summary>The field for <paramref name="address"/>.</summary>
@@ -19,6 +15,17 @@ internal sealed record FinsAddressField(string AreaCode, string Area, string? Ad
         {
             Action = action,
         };
+
+    /// <summary>Adds the fields of one address (areaCode, area, address, word, bit) to a command's fields.</summary>
+    public static void AddTo(ICommandFields fields, FinsMemoryAddress address)
+    {
+        FinsAddressField field = Of(address);
+        fields.Field("areaCode", field.AreaCode);
+        fields.Field("area", field.Area);
+        fields.Field("address", field.Address);
+        fields.Field("word", field.Word);
+        fields.Field("bit", field.Bit);
+    }
 
     /// <summary>For people: <c>D100 (DM word, area 82)</c>, or word.bit where the area has no CX-Programmer address.</summary>
     public override string ToString()

@@ -1,5 +1,4 @@
 using System.Globalization;
-using OmronHostLink.Transports;
 
 namespace OmronHostLink;
 
@@ -8,16 +7,23 @@ namespace OmronHostLink;
 /// console and the hosts all ask here. Each check returns what is wrong in the writer's words (without the setting's
 /// name, which the caller knows: a key path, a property or an option), or null when the value is good.
 /// </summary>
+/// <remarks>
+/// The bottom layer: the rules use no other part of the library (a setting's enum is checked by its defined names, a
+/// model name by <c>PlcModelProfile.CheckSetting</c>), so that the transports, the link and the protocol can use them.
+/// </remarks>
 internal static class SettingRules
 {
     /// <summary>The highest unit number Host Link addresses.</summary>
-    public const int MaxUnitNumber = HostLinkUnit.MaxUnitNumber;
+    public const int MaxUnitNumber = HostLinkRules.MaxUnitNumber;
+
+    /// <summary>The model setting that asks each unit its model (MM) instead of naming one.</summary>
+    public const string AutoModel = "auto";
 
     /// <summary>The most times a read or a write may be repeated.</summary>
     public const int MaxRetries = 10;
 
-    /// <summary>The highest FINS response wait, in units of 10 ms.</summary>
-    public const int MaxFinsResponseWait = Protocol.Fins.FinsHeader.MaxResponseWait;
+    /// <summary>The highest FINS response wait, in units of 10 ms (the 4 bits of an FA frame's wait field).</summary>
+    public const int MaxFinsResponseWait = 15;
 
     /// <summary>The longest turnaround allowance.</summary>
     public static readonly TimeSpan LongestTurnaround = TimeSpan.FromMinutes(1);
@@ -40,21 +46,20 @@ internal static class SettingRules
     /// <summary>The line speeds a serial port (and the line behind a serial-device server) may run at.</summary>
     public static readonly int[] StandardBaudRates = [300, 600, 1200, 1800, 2400, 4800, 9600, 19200, 38400, 57600, 115200, 230400];
 
-    public static string? UnitNumber(int unit)
-        => unit is < 0 or > MaxUnitNumber ? $"{unit} is not a unit number (0-{MaxUnitNumber})" : null;
+    public static string? UnitNumber(int unit) => HostLinkRules.CheckUnitNumber(unit);
 
     public static string? Retries(int retries)
         => retries is < 0 or > MaxRetries ? $"{retries} is not 0-{MaxRetries}" : null;
 
-    /// <summary>A PLC model profile name, or <c>auto</c> (ask the PLC with MM).</summary>
-    public static string? Model(string model)
-        => string.Equals(model, UnitModels.Auto, StringComparison.OrdinalIgnoreCase) || PlcModelProfile.TryParse(model, out _)
-            ? null
-            : $"'{model}' is not a known PLC model; use one of {PlcModelProfile.KnownNames()}, or auto to ask the PLC (MM)";
+    /// <summary>Whether a model setting is <see cref="AutoModel"/>.</summary>
+    public static bool IsAutoModel(string? model) => string.Equals(model, AutoModel, StringComparison.OrdinalIgnoreCase);
 
-    /// <summary>A Serial Communications Unit's Host Link-compatible device mode.</summary>
-    public static string? CompatibleMode(HostLinkCompatibleMode value)
-        => value is >= HostLinkCompatibleMode.ModeA and <= HostLinkCompatibleMode.ModeD ? null : $"{(int)value} is not ModeA, ModeB, ModeC or ModeD";
+    /// <summary>A value of an enum setting (command set, word order, parity, …): one of its named members.</summary>
+    public static string? Defined<TEnum>(TEnum value)
+        where TEnum : struct, Enum
+        => Enum.IsDefined(typeof(TEnum), value)
+            ? null
+            : $"{Convert.ToInt64(value, CultureInfo.InvariantCulture).ToString(CultureInfo.InvariantCulture)} is not {Or(Enum.GetNames(typeof(TEnum)))}";
 
     public static string? FinsResponseWait(int wait)
         => wait is < 0 or > MaxFinsResponseWait ? $"{wait} is not 0-{MaxFinsResponseWait} (units of 10 ms)" : null;
@@ -66,13 +71,26 @@ internal static class SettingRules
             ? $"{value.TotalMilliseconds.ToString("0.###", CultureInfo.InvariantCulture)} ms is not 0 to {LongestSendInterval.TotalSeconds.ToString(CultureInfo.InvariantCulture)} s"
             : null;
 
+    /// <summary>The per-unit send intervals: each key a unit number, each gap a <see cref="SendInterval"/>.</summary>
+    public static string? UnitSendIntervals(IDictionary<int, TimeSpan> intervals)
+    {
+        foreach (KeyValuePair<int, TimeSpan> unit in intervals)
+        {
+            if (HostLinkRules.CheckUnitNumber(unit.Key) is { } notUnit)
+            {
+                return $"names unit {unit.Key}: {notUnit}";
+            }
+
+            if (SendInterval(unit.Value) is { } tooLong)
+            {
+                return $"gives unit {unit.Key} {tooLong}";
+            }
+        }
+
+        return null;
+    }
+
     public static string? ConnectTimeout(TimeSpan value) => Positive(value, LongestConnectTimeout, "5 minutes");
-
-    public static string? CommandSet(HostLinkCommandSet value)
-        => value is HostLinkCommandSet.CMode or HostLinkCommandSet.Fins ? null : $"{(int)value} is not CMode or Fins";
-
-    public static string? WordOrder(WordOrder value)
-        => value is OmronHostLink.WordOrder.LowWordFirst or OmronHostLink.WordOrder.HighWordFirst ? null : $"{(int)value} is not LowWordFirst or HighWordFirst";
 
     public static string? PortName(string name)
         => name.Trim().Length == 0 ? "is empty; write the serial device, e.g. COM3 or /dev/ttyUSB0"
@@ -84,18 +102,9 @@ internal static class SettingRules
 
     public static string? DataBits(int bits) => bits is >= MinDataBits and <= MaxDataBits ? null : $"{bits} is not {MinDataBits} or {MaxDataBits}";
 
-    public static string? Parity(SerialParity value)
-        => value is SerialParity.None or SerialParity.Even or SerialParity.Odd ? null : $"{(int)value} is not None, Even or Odd";
-
-    public static string? StopBits(SerialStopBits value)
-        => value is SerialStopBits.One or SerialStopBits.Two ? null : $"{(int)value} is not One or Two";
-
-    public static string? Handshake(SerialHandshake value)
-        => value is SerialHandshake.None or SerialHandshake.RequestToSend or SerialHandshake.XOnXOff ? null : $"{(int)value} is not None, RequestToSend or XOnXOff";
-
-    /// <summary>RTS is the driver's with RTS/CTS flow control.</summary>
-    public static string? RtsEnable(bool rts, SerialHandshake handshake)
-        => rts && handshake == SerialHandshake.RequestToSend ? "cannot be true with Handshake RequestToSend: the driver controls RTS" : null;
+    /// <summary>RTS is the driver's with RTS/CTS flow control (<paramref name="requestToSendHandshake"/>).</summary>
+    public static string? RtsEnable(bool rts, bool requestToSendHandshake)
+        => rts && requestToSendHandshake ? "cannot be true with Handshake RequestToSend: the driver controls RTS" : null;
 
     public static string? Host(string host)
         => host.Trim().Length == 0 ? "is empty; write the serial-device server's host name or address" : null;
@@ -143,6 +152,10 @@ internal static class SettingRules
         port = number;
         return true;
     }
+
+    /// <summary><c>A, B or C</c>.</summary>
+    private static string Or(string[] names)
+        => names.Length < 2 ? string.Join("", names) : string.Join(", ", names, 0, names.Length - 1) + " or " + names[names.Length - 1];
 
     private static string? Positive(TimeSpan value, TimeSpan longest, string longestText)
         => value <= TimeSpan.Zero || value > longest
