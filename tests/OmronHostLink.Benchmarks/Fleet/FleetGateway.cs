@@ -1,7 +1,6 @@
 using System.ComponentModel;
 using System.Diagnostics;
 using System.Globalization;
-using System.Text.Json;
 using System.Text.Json.Nodes;
 using System.Text.RegularExpressions;
 using OmronHostLink.Benchmarks.Scale;
@@ -45,11 +44,7 @@ internal sealed partial class FleetGateway : ProgramProcess
     /// <summary>Writes <paramref name="settings"/> as the gateway's appsettings.json and starts it.</summary>
     public static async Task<FleetGateway> StartAsync(string assembly, string name, JsonObject settings, CancellationToken cancellationToken)
     {
-        string directory = NewDirectory("ohl-fleet-" + name + "-");
-        await File.WriteAllTextAsync(Path.Combine(directory, "appsettings.json"), settings.ToJsonString(new JsonSerializerOptions { WriteIndented = true }), cancellationToken).ConfigureAwait(false);
-        ProcessStartInfo start = DotnetStart(assembly, ["--contentRoot", directory]);
-        start.WorkingDirectory = directory;
-        start.Environment["DOTNET_ENVIRONMENT"] = "Production";
+        (ProcessStartInfo start, string directory) = await WorkerProcess.PrepareAsync(assembly, "ohl-fleet-" + name + "-", settings, cancellationToken).ConfigureAwait(false);
         var gateway = new FleetGateway(start, directory, name);
         try
         {
