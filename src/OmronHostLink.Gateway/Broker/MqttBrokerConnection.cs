@@ -155,7 +155,8 @@ internal sealed class MqttBrokerConnection : IAsyncDisposable
             return new BrokerStatus(
                 Section.ToLowerInvariant(),
                 ClientId,
-                _state,
+                // A connection the broker ended is no longer one, even before the output's loop has taken note.
+                _state == BrokerState.Connected && !Client.IsConnected ? BrokerState.Waiting : _state,
                 server.Address,
                 server.Key,
                 server.Index + 1,

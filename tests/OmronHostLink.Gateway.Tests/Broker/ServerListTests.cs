@@ -101,9 +101,12 @@ public sealed class ServerListTests(ITestOutputHelper output) : IAsyncLifetime
                 .Should().BeEquivalentTo([("mqtt", _second.Port), ("sparkplug", _second.Port)]);
         }
 
-        // The statistics say which server each output uses, and the node's births.
+        // The statistics say which server each output uses, and the node's births: a snapshot taken as the node
+        // connected may come before its births there, the next one (every second) follows them.
         string outputsTopic = $"{MqttGatewayConfig.Prefix}/status/{ClientId}/outputs";
-        ReceivedMessage statistics = await onSecond.WaitForAsync(outputsTopic, m => m.Payload.Split($"\"state\":\"connected\",\"server\":\"{Address(_second)}\"").Length == 3);
+        ReceivedMessage statistics = await onSecond.WaitForAsync(
+            outputsTopic,
+            m => m.Payload.Split($"\"state\":\"connected\",\"server\":\"{Address(_second)}\"").Length == 3 && SparkplugBirths(m.Payload) >= 4);
         using (JsonDocument document = JsonDocument.Parse(statistics.Payload))
         {
             JsonElement[] outputs = document.RootElement.GetProperty("outputs").EnumerateArray().ToArray();
@@ -203,5 +206,14 @@ public sealed class ServerListTests(ITestOutputHelper output) : IAsyncLifetime
         config[$"{section}:Servers:0:Port"] = _first.Port.ToString(CultureInfo.InvariantCulture);
         config[$"{section}:Servers:1:Host"] = "127.0.0.1";
         config[$"{section}:Servers:1:Port"] = _second.Port.ToString(CultureInfo.InvariantCulture);
+    }
+
+    private static long SparkplugBirths(string outputs)
+    {
+        using JsonDocument document = JsonDocument.Parse(outputs);
+        return document.RootElement.GetProperty("outputs").EnumerateArray()
+            .Where(o => o.GetProperty("output").GetString() == "sparkplug")
+            .Select(o => o.GetProperty("figures").GetProperty("births").GetInt64())
+            .FirstOrDefault();
     }
 }
