@@ -54,7 +54,7 @@ public static class GatewayHost
         // The outputs (each an ITagOutput; the polling reports to all of them in registration order).
         services.AddLinkStatistics();
         services.AddMqttOutput(gateway, builder.Environment.ContentRootPath);
-        services.AddSparkplugOutput(gateway);
+        services.AddSparkplugOutput(gateway, builder.Environment.ContentRootPath);
         // The status page reads the outputs and the statistics: it starts after them and before the links, so that it
         // hears every link open, and stops after the links.
         services.AddStatusPage(gateway);

@@ -27,6 +27,21 @@ public sealed class MosquittoSettings
     /// 100,000; a benchmark whose subscriber takes everything raises it.
     /// </summary>
     public int MaxQueuedMessages { get; set; } = 100_000;
+
+    /// <summary>
+    /// With <see cref="Tls"/>: require a client certificate signed by the test CA (<c>require_certificate true</c>), as a
+    /// plant that authenticates devices by certificate does. Default false.
+    /// </summary>
+    public bool RequireCertificate { get; set; }
+
+    /// <summary>
+    /// Also log to this file, each line starting with <see cref="LogTag"/> (its <c>log_timestamp_format</c>): brokers
+    /// that share one file write their lines in the order they happened, which no two pipes can tell.
+    /// </summary>
+    public string? SharedLogFile { get; set; }
+
+    /// <summary>What starts this broker's lines in <see cref="SharedLogFile"/>, before the time in seconds; default <c>broker</c>.</summary>
+    public string LogTag { get; set; } = "broker";
 }
 
 /// <summary>
@@ -186,6 +201,25 @@ public sealed class MosquittoBroker : IAsyncDisposable
         process.Dispose();
     }
 
+    /// <summary>Kills the broker with SIGKILL (no goodbye to its clients: their sockets close with the process) and waits until it has exited.</summary>
+    public async Task KillAsync()
+    {
+        Process? process = _process;
+        if (process is null)
+        {
+            return;
+        }
+
+        _process = null;
+        if (!process.HasExited)
+        {
+            process.Kill();
+            await process.WaitForExitAsync().ConfigureAwait(false);
+        }
+
+        process.Dispose();
+    }
+
     /// <summary>Stops the broker and deletes its directory.</summary>
     public async ValueTask DisposeAsync()
     {
@@ -271,6 +305,10 @@ public sealed class MosquittoBroker : IAsyncDisposable
             conf.AppendLine(CultureInfo.InvariantCulture, $"cafile {Path.Combine(Directory, "ca.pem")}");
             conf.AppendLine(CultureInfo.InvariantCulture, $"certfile {Path.Combine(Directory, "server.pem")}");
             conf.AppendLine(CultureInfo.InvariantCulture, $"keyfile {Path.Combine(Directory, "server.key")}");
+            if (Settings.RequireCertificate)
+            {
+                conf.AppendLine("require_certificate true");
+            }
         }
 
         if (Settings.Persistence)
@@ -285,6 +323,12 @@ public sealed class MosquittoBroker : IAsyncDisposable
 
         conf.AppendLine(CultureInfo.InvariantCulture, $"max_queued_messages {Settings.MaxQueuedMessages}");
         conf.AppendLine("log_dest stderr");
+        if (Settings.SharedLogFile is { } shared)
+        {
+            conf.AppendLine(CultureInfo.InvariantCulture, $"log_dest file {shared}");
+            conf.AppendLine(CultureInfo.InvariantCulture, $"log_timestamp_format {Settings.LogTag}:%s");
+        }
+
         conf.AppendLine("log_type error");
         conf.AppendLine("log_type warning");
         conf.AppendLine("log_type notice");

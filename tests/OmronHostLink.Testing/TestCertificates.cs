@@ -68,6 +68,58 @@ public sealed class TestCertificates : IDisposable
         File.WriteAllText(Path.Combine(directory, "server.key"), ServerKeyPem);
     }
 
+    /// <summary>A client certificate for <paramref name="name"/> signed by this CA, with its key, in memory (for a test's own MQTT client).</summary>
+    public X509Certificate2 CreateClient(string name)
+    {
+        string directory = Directory.CreateTempSubdirectory("ohl-client-").FullName;
+        try
+        {
+            (string certificate, string? key) = WriteClient(directory, name);
+            return X509Certificate2.CreateFromPemFile(certificate, key);
+        }
+        finally
+        {
+            Directory.Delete(directory, recursive: true);
+        }
+    }
+
+    /// <summary>
+    /// Makes a client certificate for <paramref name="name"/> signed by this CA (extended key usage: client
+    /// authentication), valid from <paramref name="notBefore"/> to <paramref name="notAfter"/> (by default from an hour
+    /// ago for 20 days; both must lie within the CA's own validity, which starts a day ago), and writes it into
+    /// <paramref name="directory"/>: a PEM certificate and its PKCS#8 PEM key, or with <paramref name="pkcs12Password"/>
+    /// a PKCS#12 file holding both.
+    /// </summary>
+    /// <returns>The certificate's file and its key's (null for PKCS#12).</returns>
+    public (string Certificate, string? Key) WriteClient(string directory, string name, DateTimeOffset? notBefore = null, DateTimeOffset? notAfter = null, string? pkcs12Password = null)
+    {
+        DateTimeOffset now = DateTimeOffset.UtcNow;
+        using RSA key = RSA.Create(2048);
+        var request = new CertificateRequest($"CN={name}", key, HashAlgorithmName.SHA256, RSASignaturePadding.Pkcs1);
+        request.CertificateExtensions.Add(new X509BasicConstraintsExtension(false, false, 0, critical: true));
+        request.CertificateExtensions.Add(new X509KeyUsageExtension(X509KeyUsageFlags.DigitalSignature | X509KeyUsageFlags.KeyEncipherment, critical: true));
+        request.CertificateExtensions.Add(new X509EnhancedKeyUsageExtension([new Oid("1.3.6.1.5.5.7.3.2", "Client Authentication")], critical: false));
+        request.CertificateExtensions.Add(X509AuthorityKeyIdentifierExtension.CreateFromCertificate(Authority, includeKeyIdentifier: true, includeIssuerAndSerial: false));
+        byte[] serial = RandomNumberGenerator.GetBytes(16);
+        serial[0] &= 0x7F;
+        // An RSA key signed by the ECDSA CA (the request's own algorithm differs from the issuer's).
+        using ECDsa issuerKey = Authority.GetECDsaPrivateKey()!;
+        using X509Certificate2 certificate = request.Create(Authority.SubjectName, X509SignatureGenerator.CreateForECDsa(issuerKey), notBefore ?? now.AddHours(-1), notAfter ?? now.AddDays(20), serial);
+        if (pkcs12Password is not null)
+        {
+            using X509Certificate2 withKey = certificate.CopyWithPrivateKey(key);
+            string pfx = Path.Combine(directory, name + ".p12");
+            File.WriteAllBytes(pfx, withKey.Export(X509ContentType.Pkcs12, pkcs12Password));
+            return (pfx, null);
+        }
+
+        string pem = Path.Combine(directory, name + ".pem");
+        string keyFile = Path.Combine(directory, name + ".key");
+        File.WriteAllText(pem, certificate.ExportCertificatePem());
+        File.WriteAllText(keyFile, key.ExportPkcs8PrivateKeyPem());
+        return (pem, keyFile);
+    }
+
     /// <inheritdoc/>
     public void Dispose()
     {

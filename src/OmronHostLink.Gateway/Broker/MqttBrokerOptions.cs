@@ -4,15 +4,23 @@ namespace OmronHostLink.Gateway.Broker;
 
 /// <summary>
 /// The broker connection of a section that publishes over MQTT (<c>Mqtt</c>, <c>Sparkplug</c>): the same keys, defaults
-/// and rules (<see cref="MqttBrokerOptionsValidator"/>) in each.
+/// and rules (<see cref="MqttBrokerOptionsValidator"/>) in each. One broker (<see cref="Host"/>, <see cref="Port"/>,
+/// <see cref="Tls"/>) or an ordered list of them (<see cref="Servers"/>), walked when one fails.
 /// </summary>
 internal abstract class MqttBrokerOptions
 {
-    /// <summary>The broker's host name or address. Required.</summary>
+    /// <summary>The broker's host name or address. Required unless <see cref="Servers"/> is set.</summary>
     public string Host { get; set; } = "";
 
     /// <summary>The broker's port. Default 1883, or 8883 with TLS.</summary>
     public int? Port { get; set; }
+
+    /// <summary>
+    /// An ordered list of brokers instead of <see cref="Host"/> and <see cref="Port"/>, each with its own port and TLS:
+    /// the connection starts with the first and walks to the next when one cannot be reached or its connection is
+    /// lost, one connection at a time. Empty by default.
+    /// </summary>
+    public List<MqttServerOptions> Servers { get; set; } = [];
 
     /// <summary>The MQTT client id, unique on the broker. Default: see <see cref="ClientIdOrDefault"/>.</summary>
     public string? ClientId { get; set; }
@@ -26,7 +34,7 @@ internal abstract class MqttBrokerOptions
     /// </summary>
     public string? Password { get; set; }
 
-    /// <summary>TLS to the broker.</summary>
+    /// <summary>TLS to the broker; with <see cref="Servers"/>, to each server that has no <c>Tls</c> of its own.</summary>
     public MqttTlsOptions Tls { get; set; } = new();
 
     /// <summary>
@@ -41,9 +49,32 @@ internal abstract class MqttBrokerOptions
     /// <summary>Delay between connection attempts: Initial, doubling up to Max. Default 1 s to 30 s.</summary>
     public BackoffOptions Reconnect { get; set; } = new();
 
-    /// <summary>The port in effect.</summary>
+    /// <summary>The port in effect for <see cref="Host"/>.</summary>
     public int PortOrDefault => Port ?? (Tls.Enabled ? 8883 : 1883);
 
     /// <summary>The client id in effect: <see cref="ClientId"/>, or the section's default when it is not set.</summary>
     public abstract string ClientIdOrDefault { get; }
+
+    /// <summary>
+    /// The brokers in effect, in order: the entries of <see cref="Servers"/> (each with the section's <see cref="Tls"/>
+    /// where it has none), or the one broker of <see cref="Host"/> and <see cref="Port"/>.
+    /// </summary>
+    /// <param name="section">The section's key (<c>Mqtt</c>, <c>Sparkplug</c>), which starts each server's key.</param>
+    public IReadOnlyList<MqttServer> ServersInEffect(string section)
+    {
+        if (Servers is not { Count: > 0 } servers)
+        {
+            return [new MqttServer(0, 1, Host, PortOrDefault, Tls ?? new MqttTlsOptions(), section)];
+        }
+
+        var list = new List<MqttServer>(servers.Count);
+        for (int i = 0; i < servers.Count; i++)
+        {
+            MqttServerOptions server = servers[i] ?? new MqttServerOptions();
+            MqttTlsOptions tls = server.Tls ?? Tls ?? new MqttTlsOptions();
+            list.Add(new MqttServer(i, servers.Count, server.Host, server.Port ?? (tls.Enabled ? 8883 : 1883), tls, $"{section}:Servers:{i}"));
+        }
+
+        return list;
+    }
 }

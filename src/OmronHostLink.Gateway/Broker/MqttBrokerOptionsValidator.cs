@@ -12,24 +12,44 @@ internal static class MqttBrokerOptionsValidator
     /// <param name="options">The section's options.</param>
     /// <param name="section">The section's key (<c>Mqtt</c>, <c>Sparkplug</c>), which starts every key named.</param>
     /// <param name="failures">Where the problems go, one message each.</param>
-    public static void Validate(MqttBrokerOptions options, string section, List<string> failures)
+    /// <param name="now">The time a client certificate must be valid at; the system's clock by default.</param>
+    public static void Validate(MqttBrokerOptions options, string section, List<string> failures, DateTimeOffset? now = null)
     {
-        if (string.IsNullOrWhiteSpace(options.Host))
+        DateTimeOffset at = now ?? DateTimeOffset.UtcNow;
+        if (options.Servers is { Count: > 0 } servers)
         {
-            failures.Add($"{section}:Host is empty; set the broker's host name or address (e.g. 127.0.0.1 or broker.plant.local).");
-        }
-        else if (options.Host.Any(char.IsWhiteSpace) || options.Host.Contains('/', StringComparison.Ordinal) || options.Host.Count(c => c == ':') == 1)
-        {
-            failures.Add($"{section}:Host '{options.Host}' is not a host name or address (no scheme, no port: the port is {section}:Port).");
-        }
-        else if (HostSyntax.Problem(options.Host) is { } hostProblem)
-        {
-            failures.Add($"{section}:Host '{options.Host}' is not a host name or address: {hostProblem}.");
-        }
+            if (!string.IsNullOrWhiteSpace(options.Host) || options.Port is not null)
+            {
+                string set = !string.IsNullOrWhiteSpace(options.Host) ? "Host" : "Port";
+                failures.Add($"{section}:{set} is set beside {section}:Servers; give either one broker ({section}:Host, {section}:Port) or the list ({section}:Servers:0:Host, {section}:Servers:1:Host, …), not both.");
+            }
 
-        if (options.Port is { } port && port is < 1 or > 65535)
+            var seen = new Dictionary<string, int>(StringComparer.OrdinalIgnoreCase);
+            for (int i = 0; i < servers.Count; i++)
+            {
+                string key = $"{section}:Servers:{i}";
+                MqttServerOptions server = servers[i] ?? new MqttServerOptions();
+                int problems = failures.Count;
+                ValidateHost(server.Host, key + ":Host", key + ":Port", failures);
+                ValidatePort(server.Port, key + ":Port", failures);
+                if (server.Tls is { } tls)
+                {
+                    ValidateTls(tls, key + ":Tls", failures, at);
+                }
+
+                MqttServer effective = options.ServersInEffect(section)[i];
+                if (failures.Count == problems && seen.TryGetValue(effective.Address, out int first))
+                {
+                    failures.Add($"{key} names {effective.Address} again ({section}:Servers:{first} does already); each broker is listed once.");
+                }
+
+                seen.TryAdd(effective.Address, i);
+            }
+        }
+        else
         {
-            failures.Add($"{section}:Port must be 1-65535; it is {port}.");
+            ValidateHost(options.Host, $"{section}:Host", $"{section}:Port", failures, section);
+            ValidatePort(options.Port, $"{section}:Port", failures);
         }
 
         if (!string.IsNullOrEmpty(options.Password) && string.IsNullOrEmpty(options.Username))
@@ -71,10 +91,35 @@ internal static class MqttBrokerOptionsValidator
             }
         }
 
-        ValidateTls(options.Tls, $"{section}:Tls", failures);
+        ValidateTls(options.Tls, $"{section}:Tls", failures, at);
     }
 
-    private static void ValidateTls(MqttTlsOptions? tls, string key, List<string> failures)
+    private static void ValidateHost(string? host, string key, string portKey, List<string> failures, string? section = null)
+    {
+        if (string.IsNullOrWhiteSpace(host))
+        {
+            string list = section is null ? "" : $" (or list several in {section}:Servers)";
+            failures.Add($"{key} is empty; set the broker's host name or address (e.g. 127.0.0.1 or broker.plant.local){list}.");
+        }
+        else if (host.Any(char.IsWhiteSpace) || host.Contains('/', StringComparison.Ordinal) || host.Count(c => c == ':') == 1)
+        {
+            failures.Add($"{key} '{host}' is not a host name or address (no scheme, no port: the port is {portKey}).");
+        }
+        else if (HostSyntax.Problem(host) is { } hostProblem)
+        {
+            failures.Add($"{key} '{host}' is not a host name or address: {hostProblem}.");
+        }
+    }
+
+    private static void ValidatePort(int? port, string key, List<string> failures)
+    {
+        if (port is { } p && p is < 1 or > 65535)
+        {
+            failures.Add($"{key} must be 1-65535; it is {p}.");
+        }
+    }
+
+    private static void ValidateTls(MqttTlsOptions? tls, string key, List<string> failures, DateTimeOffset now)
     {
         if (tls is null)
         {
@@ -83,7 +128,12 @@ internal static class MqttBrokerOptionsValidator
 
         if (!tls.Enabled)
         {
-            string? set = !string.IsNullOrEmpty(tls.CaFile) ? "CaFile" : tls.AllowUntrustedCertificates ? "AllowUntrustedCertificates" : !string.IsNullOrEmpty(tls.ServerName) ? "ServerName" : null;
+            string? set = !string.IsNullOrEmpty(tls.CaFile) ? "CaFile"
+                : tls.AllowUntrustedCertificates ? "AllowUntrustedCertificates"
+                : !string.IsNullOrEmpty(tls.ServerName) ? "ServerName"
+                : !string.IsNullOrEmpty(tls.ClientCertificateFile) ? "ClientCertificateFile"
+                : !string.IsNullOrEmpty(tls.ClientKeyFile) ? "ClientKeyFile"
+                : null;
             if (set is not null)
             {
                 failures.Add($"{key}:Enabled is false but {set} is set; set {key}:Enabled to true to use TLS.");
@@ -122,6 +172,18 @@ internal static class MqttBrokerOptionsValidator
             {
                 failures.Add($"{key}: set either CaFile or AllowUntrustedCertificates, not both (AllowUntrustedCertificates turns every check off).");
             }
+        }
+
+        if (!string.IsNullOrEmpty(tls.ClientCertificateFile))
+        {
+            if (ClientCertificate.Problem(tls, key, now) is { } certificateProblem)
+            {
+                failures.Add(certificateProblem);
+            }
+        }
+        else if (!string.IsNullOrEmpty(tls.ClientKeyFile))
+        {
+            failures.Add($"{key}:ClientKeyFile is set without {key}:ClientCertificateFile; set the certificate the key belongs to.");
         }
     }
 }

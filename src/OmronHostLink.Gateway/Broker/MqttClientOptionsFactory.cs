@@ -11,16 +11,18 @@ namespace OmronHostLink.Gateway.Broker;
 /// </summary>
 internal static class MqttClientOptionsFactory
 {
-    /// <summary>Starts the client options of a broker connection; the CA file is read here.</summary>
+    /// <summary>Starts the client options of a broker connection to one of its servers; the CA file is read here.</summary>
     /// <param name="options">The validated options.</param>
-    /// <param name="section">The section's key (<c>Mqtt</c>, <c>Sparkplug</c>), named in why a certificate was refused.</param>
+    /// <param name="server">The server to connect to (<see cref="MqttBrokerOptions.ServersInEffect"/>).</param>
+    /// <param name="clientCertificate">The client certificate to present (read by <see cref="ClientCertificate.Load"/>); null for none.</param>
     /// <param name="certificateRejected">Told why the broker's certificate was refused (TLS only).</param>
     /// <returns>The builder, for the output to add its protocol version, session and will to.</returns>
-    public static MqttClientOptionsBuilder Create(MqttBrokerOptions options, string section, Action<string>? certificateRejected = null)
+    public static MqttClientOptionsBuilder Create(MqttBrokerOptions options, MqttServer server, X509Certificate2? clientCertificate = null, Action<string>? certificateRejected = null)
     {
         ArgumentNullException.ThrowIfNull(options);
+        ArgumentNullException.ThrowIfNull(server);
         MqttClientOptionsBuilder builder = new MqttClientOptionsBuilder()
-            .WithTcpServer(options.Host, options.PortOrDefault)
+            .WithTcpServer(server.Host, server.Port)
             .WithClientId(options.ClientIdOrDefault)
             .WithKeepAlivePeriod(options.KeepAlive)
             .WithTimeout(options.Timeout);
@@ -29,17 +31,18 @@ internal static class MqttClientOptionsFactory
             builder = builder.WithCredentials(options.Username, options.Password ?? "");
         }
 
-        if (options.Tls.Enabled)
+        if (server.Tls.Enabled)
         {
-            MqttTlsOptions tls = options.Tls;
+            MqttTlsOptions tls = server.Tls;
+            string tlsKey = TlsKey(options, server);
             X509Certificate2Collection? authorities = string.IsNullOrEmpty(tls.CaFile) ? null : LoadAuthorities(tls.CaFile);
             builder = builder.WithTlsOptions(o =>
             {
                 o.UseTls()
-                    .WithTargetHost(string.IsNullOrEmpty(tls.ServerName) ? options.Host : tls.ServerName)
+                    .WithTargetHost(string.IsNullOrEmpty(tls.ServerName) ? server.Host : tls.ServerName)
                     .WithCertificateValidationHandler(e =>
                     {
-                        string? why = CertificateProblem(e.Certificate, e.Chain, e.SslPolicyErrors, authorities, tls.AllowUntrustedCertificates, section + ":Tls");
+                        string? why = CertificateProblem(e.Certificate, e.Chain, e.SslPolicyErrors, authorities, tls.AllowUntrustedCertificates, tlsKey);
                         if (why is not null)
                         {
                             certificateRejected?.Invoke(why);
@@ -47,10 +50,22 @@ internal static class MqttClientOptionsFactory
 
                         return why is null;
                     });
+                if (clientCertificate is not null)
+                {
+                    o.WithClientCertificates([clientCertificate]);
+                }
             });
         }
 
         return builder;
+    }
+
+    /// <summary>The key of the TLS settings <paramref name="server"/> uses: its own <c>Servers:N:Tls</c>, or the section's <c>Tls</c>.</summary>
+    public static string TlsKey(MqttBrokerOptions options, MqttServer server)
+    {
+        ArgumentNullException.ThrowIfNull(options);
+        ArgumentNullException.ThrowIfNull(server);
+        return ReferenceEquals(server.Tls, options.Tls) ? server.Key.Split(':')[0] + ":Tls" : server.Key + ":Tls";
     }
 
     /// <summary>The MQTTnet level for 0, 1 or 2.</summary>

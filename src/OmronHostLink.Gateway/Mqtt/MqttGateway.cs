@@ -40,11 +40,12 @@ internal sealed class MqttGateway : IHostedService, IAsyncDisposable
     private readonly ILogger _logger;
     private readonly TimeProvider _time;
     private readonly HashSet<string> _refusedTopics = new(StringComparer.Ordinal);
-    private MqttClientOptions? _clientOptions;
+    private readonly Dictionary<int, MqttClientOptions> _clientOptions = new();
     private volatile bool _stopping;
     private int _stopCalls;
     private bool _everConnected;
     private long _overflowSince;
+    private long _outageSince;
 
     /// <summary>Creates the gateway; nothing connects until it is started.</summary>
     public MqttGateway(
@@ -56,9 +57,11 @@ internal sealed class MqttGateway : IHostedService, IAsyncDisposable
         MqttMetrics metrics,
         MqttClientFactory factory,
         WriteCommandProcessor writes,
+        BrokerConnections connections,
         ILogger<MqttGateway> logger,
         TimeProvider timeProvider)
     {
+        ArgumentNullException.ThrowIfNull(connections);
         ArgumentNullException.ThrowIfNull(options);
         _options = options.Value;
         _topics = topics;
@@ -70,24 +73,29 @@ internal sealed class MqttGateway : IHostedService, IAsyncDisposable
         _writes = writes;
         _logger = logger;
         _time = timeProvider;
-        _connection = new MqttBrokerConnection(_options, MqttOptions.SectionName, factory, timeProvider);
+        _connection = new MqttBrokerConnection(_options, MqttOptions.SectionName, "MQTT", factory, timeProvider, logger)
+        {
+            Session = () => new BrokerSession(
+                IsConnected ? "online" : "offline",
+                new Dictionary<string, long> { ["queued"] = _queue.Count, ["dropped"] = _queue.TotalDropped }),
+        };
+        connections.Add(_connection);
     }
+
+    /// <summary>The broker connection: the server in use, its state.</summary>
+    public MqttBrokerConnection Connection => _connection;
 
     /// <summary>Whether the client is connected to the broker now.</summary>
     public bool IsConnected => _connection.Client.IsConnected;
 
-    /// <summary>The broker connection: the server in use, since when it is connected, its last failure and publish.</summary>
-    public MqttBrokerConnection Connection => _connection;
-
     /// <inheritdoc/>
     public Task StartAsync(CancellationToken cancellationToken)
     {
-        if (_options.Tls is { Enabled: true, AllowUntrustedCertificates: true })
+        foreach (MqttServer server in _connection.Servers.Where(s => s.Tls is { Enabled: true, AllowUntrustedCertificates: true }))
         {
-            MqttLog.UntrustedCertificates(_logger, _connection.Broker);
+            MqttLog.UntrustedCertificates(_logger, server.ToString());
         }
 
-        _clientOptions = ClientOptions();
         IMqttClient client = _connection.Client;
         client.DisconnectedAsync += _ =>
         {
@@ -140,14 +148,26 @@ internal sealed class MqttGateway : IHostedService, IAsyncDisposable
         EndOverflow(_queue.EndOverflowEpisode());
         // If the broker goes away meanwhile, its last will says offline instead.
         await _connection.CloseAsync((client, ct) => client.PublishAsync(Message(new OutboundMessage(_topics.WorkerStatus, Encoding.UTF8.GetBytes(Offline), Retain: true)), ct)).ConfigureAwait(false);
+        _connection.Stopped();
         MqttLog.Stopped(_logger, _queue.Count);
     }
 
     /// <inheritdoc/>
     public ValueTask DisposeAsync() => _connection.DisposeAsync();
 
-    /// <summary>MQTT 5, a clean start and the last will <c>offline</c> on the worker's status topic.</summary>
+    /// <summary>MQTT 5, a clean start and the last will <c>offline</c> on the worker's status topic, for the server in use.</summary>
     private MqttClientOptions ClientOptions()
+    {
+        int server = _connection.Server.Index;
+        if (!_clientOptions.TryGetValue(server, out MqttClientOptions? options))
+        {
+            _clientOptions[server] = options = NewClientOptions();
+        }
+
+        return options;
+    }
+
+    private MqttClientOptions NewClientOptions()
         => _connection.ClientOptions()
             .WithProtocolVersion(MqttProtocolVersion.V500)
             // No session kept by the broker: the worker's queue is the only store, and no stale command is delivered
@@ -162,22 +182,39 @@ internal sealed class MqttGateway : IHostedService, IAsyncDisposable
     private async Task RunAsync(CancellationToken cancellationToken)
     {
         IMqttClient client = _connection.Client;
-        long outageSince = 0;
+        bool connected = false;
         while (!cancellationToken.IsCancellationRequested)
         {
             try
             {
                 if (!client.IsConnected)
                 {
+                    if (connected)
+                    {
+                        // Lost while waiting or between messages: the same path as an error, so that it walks to the
+                        // next server and backs off rather than reconnecting at once.
+                        connected = false;
+                        if (!await FailedAsync(null).ConfigureAwait(false))
+                        {
+                            return;
+                        }
+
+                        continue;
+                    }
+
                     if (_stopping)
                     {
                         return;
                     }
 
+                    _connection.Connecting();
                     await ConnectAsync(client, cancellationToken).ConfigureAwait(false);
-                    if (_connection.FailedAttempts > 0)
+                    int failed = _connection.FailedAttempts;
+                    _connection.Connected();
+                    connected = true;
+                    if (failed > 0)
                     {
-                        MqttLog.Reconnected(_logger, _connection.Broker, _time.GetElapsedTime(outageSince).TotalSeconds, _connection.FailedAttempts, _queue.Count);
+                        MqttLog.Reconnected(_logger, _connection.Broker, _time.GetElapsedTime(_outageSince).TotalSeconds, failed, _queue.Count);
                     }
                     else if (!_everConnected)
                     {
@@ -185,7 +222,6 @@ internal sealed class MqttGateway : IHostedService, IAsyncDisposable
                     }
 
                     _everConnected = true;
-                    _connection.Connected();
                     continue;
                 }
 
@@ -210,23 +246,8 @@ internal sealed class MqttGateway : IHostedService, IAsyncDisposable
             {
                 // Unreachable, refused, TLS failure, an acknowledgement that did not come: start again from a fresh
                 // connection, so nothing half-done on the old one can reorder the queue.
-                (string reason, TimeSpan delay) = await _connection.FailedAsync(e).ConfigureAwait(false);
-                if (_stopping)
-                {
-                    return;
-                }
-
-                if (_connection.FailedAttempts == 1)
-                {
-                    outageSince = _time.GetTimestamp();
-                    MqttLog.Unreachable(_logger, _connection.Broker, reason, _queue.Count, delay.TotalSeconds, _options.Reconnect.Max.TotalSeconds);
-                }
-                else
-                {
-                    MqttLog.StillUnreachable(_logger, _connection.Broker, reason, delay.TotalSeconds);
-                }
-
-                if (!await _connection.DelayAsync(delay).ConfigureAwait(false))
+                connected = false;
+                if (!await FailedAsync(e).ConfigureAwait(false))
                 {
                     return;
                 }
@@ -234,9 +255,35 @@ internal sealed class MqttGateway : IHostedService, IAsyncDisposable
         }
     }
 
+    /// <summary>After a failed attempt or a lost connection: logs it (a warning once per outage) and waits; false when stopping.</summary>
+    private async Task<bool> FailedAsync(Exception? error)
+    {
+        ConnectionEnd end = await _connection.FailedAsync(error).ConfigureAwait(false);
+        if (_stopping)
+        {
+            return false;
+        }
+
+        if (end.FirstFailure)
+        {
+            _outageSince = _time.GetTimestamp();
+        }
+
+        if (end.Warn)
+        {
+            MqttLog.Unreachable(_logger, end.Server.ToString(), end.Problem, end.Reason, _queue.Count, end.NextStep, _options.Reconnect.Max.TotalSeconds);
+        }
+        else
+        {
+            MqttLog.StillUnreachable(_logger, end.Server.ToString(), end.FirstFailure ? end.Problem : "still not reachable", end.Reason, end.NextStep);
+        }
+
+        return await _connection.DelayAsync(end.Delay).ConfigureAwait(false);
+    }
+
     private async Task ConnectAsync(IMqttClient client, CancellationToken cancellationToken)
     {
-        MqttClientConnectResult result = await client.ConnectAsync(_clientOptions!, cancellationToken).ConfigureAwait(false);
+        MqttClientConnectResult result = await client.ConnectAsync(ClientOptions(), cancellationToken).ConfigureAwait(false);
         if (result.ResultCode != MqttClientConnectResultCode.Success)
         {
             string hint = result.ResultCode is MqttClientConnectResultCode.BadUserNameOrPassword or MqttClientConnectResultCode.NotAuthorized

@@ -14,6 +14,7 @@ namespace OmronHostLink.Gateway.Mqtt;
 [JsonSerializable(typeof(TagPayload))]
 [JsonSerializable(typeof(WriteResultPayload))]
 [JsonSerializable(typeof(LostMessagesPayload))]
+[JsonSerializable(typeof(OutputsPayload))]
 [JsonSerializable(typeof(ushort))]
 [JsonSerializable(typeof(short))]
 [JsonSerializable(typeof(int))]

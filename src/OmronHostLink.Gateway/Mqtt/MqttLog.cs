@@ -60,11 +60,11 @@ internal static partial class MqttLog
     [LoggerMessage(EventId = Events.Connected, Level = LogLevel.Information, Message = "MQTT: connected to {Broker} as {ClientId}; publishing under {Prefix}/")]
     internal static partial void Connected(ILogger logger, string broker, string clientId, string prefix);
 
-    [LoggerMessage(EventId = Events.Unreachable, Level = LogLevel.Warning, Message = "MQTT: broker {Broker} not reachable ({Reason}); {Queued} message(s) wait. Retrying in {RetryInSeconds:0.###} s, backing off up to {MaxBackoffSeconds:0.###} s.")]
-    internal static partial void Unreachable(ILogger logger, string broker, string reason, int queued, double retryInSeconds, double maxBackoffSeconds);
+    [LoggerMessage(EventId = Events.Unreachable, Level = LogLevel.Warning, Message = "MQTT: broker {Broker} {Problem} ({Reason}); {Queued} message(s) wait; {NextStep}, backing off up to {MaxBackoffSeconds:0.###} s")]
+    internal static partial void Unreachable(ILogger logger, string broker, string problem, string reason, int queued, string nextStep, double maxBackoffSeconds);
 
-    [LoggerMessage(EventId = Events.StillUnreachable, Level = LogLevel.Debug, Message = "MQTT: broker {Broker} still not reachable ({Reason}); next attempt in {RetryInSeconds:0.###} s")]
-    internal static partial void StillUnreachable(ILogger logger, string broker, string reason, double retryInSeconds);
+    [LoggerMessage(EventId = Events.StillUnreachable, Level = LogLevel.Debug, Message = "MQTT: broker {Broker} {Problem} ({Reason}); {NextStep}")]
+    internal static partial void StillUnreachable(ILogger logger, string broker, string problem, string reason, string nextStep);
 
     [LoggerMessage(EventId = Events.Reconnected, Level = LogLevel.Information, Message = "MQTT: connected to {Broker} again after {OutageSeconds:0.#} s ({Attempts} failed attempts); {Queued} message(s) to send")]
     internal static partial void Reconnected(ILogger logger, string broker, double outageSeconds, int attempts, int queued);

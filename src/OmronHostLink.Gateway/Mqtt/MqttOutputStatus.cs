@@ -16,7 +16,8 @@ internal sealed class MqttOutputStatus(IOptions<MqttOptions> options, MqttGatewa
     {
         MqttOptions o = options.Value;
         bool connected = gateway.IsConnected;
-        (string Reason, DateTimeOffset Time)? failure = gateway.Connection.LastFailure;
+        Broker.BrokerStatus broker = gateway.Connection.Status();
+        (string Reason, DateTimeOffset Time)? failure = broker.LastProblem is { } problem && broker.LastProblemAt is { } at ? (problem, at) : null;
         long depth = queue.Count;
         return new OutputStatus
         {
@@ -24,7 +25,7 @@ internal sealed class MqttOutputStatus(IOptions<MqttOptions> options, MqttGatewa
             Connected = connected,
             State = connected ? "connected" : failure is null ? "connecting" : "broker unreachable",
             Server = gateway.Connection.Broker,
-            ConnectedSince = gateway.Connection.ConnectedSince,
+            ConnectedSince = broker.ConnectedSince,
             LastError = failure?.Reason,
             LastErrorTime = failure?.Time,
             QueueDepth = depth,

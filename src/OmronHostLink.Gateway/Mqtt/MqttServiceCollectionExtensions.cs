@@ -1,8 +1,10 @@
 using Microsoft.Extensions.DependencyInjection;
+using Microsoft.Extensions.DependencyInjection.Extensions;
 using Microsoft.Extensions.Hosting;
 using Microsoft.Extensions.Logging;
 using Microsoft.Extensions.Options;
 using MQTTnet;
+using OmronHostLink.Gateway.Broker;
 using OmronHostLink.Gateway.Configuration;
 using OmronHostLink.Gateway.Outputs;
 using OmronHostLink.Gateway.Queue;
@@ -49,6 +51,7 @@ internal static class MqttServiceCollectionExtensions
         services.AddSingleton<MqttTagSink>();
         services.AddSingleton<ITagOutput>(sp => sp.GetRequiredService<MqttTagSink>());
         services.AddSingleton<MqttClientFactory>();
+        services.TryAddSingleton<BrokerConnections>();
         services.AddSingleton(sp => new WriteCommandProcessor(
             sp.GetRequiredService<IOptions<MqttOptions>>().Value,
             sp.GetRequiredService<MqttTopics>(),

@@ -24,6 +24,7 @@ internal sealed class MqttTopics
         Prefix = prefix;
         WorkerStatus = $"{prefix}/{StatusLevel}/{clientId}";
         WorkerLost = $"{WorkerStatus}/lost";
+        WorkerOutputs = $"{WorkerStatus}/outputs";
     }
 
     /// <summary>The first level(s) of every topic.</summary>
@@ -34,6 +35,9 @@ internal sealed class MqttTopics
 
     /// <summary>Where the worker announces at start how many messages its previous run may have lost (<see cref="LostMessagesPayload"/>).</summary>
     public string WorkerLost { get; }
+
+    /// <summary>Where the worker publishes its outputs' broker connections and figures (<see cref="OutputsPayload"/>), retained.</summary>
+    public string WorkerOutputs { get; }
 
     /// <summary>The value topic of a tag.</summary>
     public string Tag(string link, int unit, string tag) => $"{Prefix}/{link}/{unit.ToString(CultureInfo.InvariantCulture)}/{tag}";

@@ -2,6 +2,7 @@ using System.Globalization;
 using System.Text.Json;
 using Microsoft.Extensions.Hosting;
 using Microsoft.Extensions.Options;
+using OmronHostLink.Gateway.Broker;
 using OmronHostLink.Gateway.Queue;
 using OmronHostLink.Gateway.Statistics;
 
@@ -10,8 +11,11 @@ namespace OmronHostLink.Gateway.Mqtt;
 /// <summary>
 /// Publishes the statistics of every link and PLC unit as retained JSON: a unit's on
 /// <c>{prefix}/{link}/status/{unit}</c>, the link's totals on <c>{prefix}/{link}/status/statistics</c>, every
-/// <c>Mqtt:StatisticsInterval</c> and at once when a unit's state changes (comm-error, demoted, online). A topic whose
-/// last figures still wait in the queue (the broker is away) is not queued again: only the newest figures matter.
+/// <c>Mqtt:StatisticsInterval</c> and at once when a unit's state changes (comm-error, demoted, online). Beside them, the
+/// outputs' broker connections (the server in use, connections, a duplicate client id) and figures (Sparkplug births,
+/// rebirths requested, store-and-forward) on <c>{prefix}/status/{clientId}/outputs</c>, every interval while this
+/// output is connected, and at once when a connection changes with nothing waiting to be sent. A topic whose last figures still wait in the queue (the broker is away) is not queued again:
+/// only the newest figures matter.
 /// </summary>
 internal sealed class StatisticsPublisher : BackgroundService
 {
@@ -23,10 +27,13 @@ internal sealed class StatisticsPublisher : BackgroundService
     private readonly OutboundQueue _queue;
     private readonly TimeSpan _interval;
     private readonly TimeProvider _time;
+    private readonly BrokerConnections _connections;
 
     /// <summary>Creates the publisher.</summary>
-    public StatisticsPublisher(LinkStatistics statistics, MqttTopics topics, OutboundQueue queue, IOptions<MqttOptions> options, TimeProvider time)
+    public StatisticsPublisher(LinkStatistics statistics, MqttTopics topics, OutboundQueue queue, IOptions<MqttOptions> options, BrokerConnections connections, TimeProvider time)
     {
+        ArgumentNullException.ThrowIfNull(connections);
+        _connections = connections;
         ArgumentNullException.ThrowIfNull(statistics);
         ArgumentNullException.ThrowIfNull(options);
         _statistics = statistics;
@@ -46,6 +53,7 @@ internal sealed class StatisticsPublisher : BackgroundService
     protected override async Task ExecuteAsync(CancellationToken stoppingToken)
     {
         _statistics.UnitStateChanged += PublishUnit;
+        _connections.Changed += PublishOutputsOnChange;
         try
         {
             using var timer = new PeriodicTimer(_interval, _time);
@@ -62,6 +70,7 @@ internal sealed class StatisticsPublisher : BackgroundService
         finally
         {
             _statistics.UnitStateChanged -= PublishUnit;
+            _connections.Changed -= PublishOutputsOnChange;
         }
     }
 
@@ -76,6 +85,32 @@ internal sealed class StatisticsPublisher : BackgroundService
         {
             Enqueue(LinkTopic(link), _statistics.Link(link), always: false);
         }
+
+        PublishOutputs();
+    }
+
+    private void PublishOutputsOnChange()
+    {
+        // A snapshot must not take the place of a tag value in a queue that holds a backlog (or fills while the broker
+        // is away): at once only when nothing waits, else at the next interval.
+        if (_queue.Count == 0)
+        {
+            PublishOutputs();
+        }
+    }
+
+    private void PublishOutputs()
+    {
+        // While this output has no broker the snapshot would be stale when sent; its next connection publishes a new one.
+        IReadOnlyList<BrokerStatus> statuses = _connections.Statuses();
+        bool connected = statuses.Any(s => s.State == BrokerState.Connected && string.Equals(s.Output, MqttOptions.SectionName, StringComparison.OrdinalIgnoreCase));
+        if (!connected || _queue.HasPending(_topics.WorkerOutputs))
+        {
+            return;
+        }
+
+        OutputsPayload payload = OutputsPayload.From(statuses, _time.GetUtcNow());
+        _queue.Enqueue(new OutboundMessage(_topics.WorkerOutputs, JsonSerializer.SerializeToUtf8Bytes(payload, MqttJson.Context.OutputsPayload), Retain: true));
     }
 
     private void PublishUnit(string link, int unit)

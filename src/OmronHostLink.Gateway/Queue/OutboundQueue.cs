@@ -167,6 +167,56 @@ internal sealed class OutboundQueue
     }
 
     /// <summary>
+    /// Up to <paramref name="max"/> messages queued after the one of sequence <paramref name="after"/> (0: from the head),
+    /// in order, left in the queue: what follows messages already sent and not yet removed.
+    /// </summary>
+    public IReadOnlyList<OutboundMessage> PeekAfter(long after, int max)
+    {
+        var found = new List<OutboundMessage>();
+        long expired;
+        lock (_messages)
+        {
+            expired = Expire();
+            foreach (OutboundMessage message in _messages)
+            {
+                if (found.Count == max)
+                {
+                    break;
+                }
+
+                if (message.Sequence > after)
+                {
+                    found.Add(message);
+                }
+            }
+        }
+
+        RaiseExpired(expired);
+        return found;
+    }
+
+    /// <summary>
+    /// Moves the message at the head to the tail (one that cannot be sent yet, so that those behind it can), keeping when
+    /// it was queued: its age still counts.
+    /// </summary>
+    public void MoveHeadToTail()
+    {
+        lock (_messages)
+        {
+            if (!_messages.TryDequeue(out OutboundMessage? head))
+            {
+                return;
+            }
+
+            _journal?.Removed(head);
+            OutboundMessage moved = head with { };
+            moved.Sequence = ++_sequence;
+            _messages.Enqueue(moved);
+            _journal?.Added(moved);
+        }
+    }
+
+    /// <summary>
     /// Removes <paramref name="message"/> after the broker took it, if it is still at the head (an overflow may have
     /// dropped it meanwhile).
     /// </summary>

@@ -45,9 +45,9 @@ internal static partial class QueueStoreLog
     [LoggerMessage(EventId = Events.RecordUnavailable, Level = LogLevel.Warning, Message = "MQTT: the count of unsent messages cannot be kept in {Path} ({Reason}); messages lost in a crash will not be announced. Set Mqtt:StateDirectory to a directory the gateway may write")]
     public static partial void RecordUnavailable(ILogger logger, string path, string reason);
 
-    [LoggerMessage(EventId = Events.JournalFailed, Level = LogLevel.Error, Message = "MQTT: durable queue {Path} cannot be written ({Reason}); queued messages, from the one for {Topic} on, are kept in memory only, counted as at risk of loss, until it can take them")]
-    public static partial void JournalFailed(ILogger logger, string path, string topic, string reason);
+    [LoggerMessage(EventId = Events.JournalFailed, Level = LogLevel.Error, Message = "{Output}: durable queue {Path} cannot be written ({Reason}); queued messages, from the one for {Topic} on, are kept in memory only, counted as at risk of loss, until it can take them")]
+    public static partial void JournalFailed(ILogger logger, string output, string path, string topic, string reason);
 
-    [LoggerMessage(EventId = Events.JournalWritable, Level = LogLevel.Information, Message = "MQTT: durable queue {Path} is written again")]
-    public static partial void JournalWritable(ILogger logger, string path);
+    [LoggerMessage(EventId = Events.JournalWritable, Level = LogLevel.Information, Message = "{Output}: durable queue {Path} is written again")]
+    public static partial void JournalWritable(ILogger logger, string output, string path);
 }

@@ -24,9 +24,12 @@ internal sealed class SqliteOutboundJournal : IOutboundJournal, IDisposable
     private bool _failing;
     private bool _disposed;
 
-    private SqliteOutboundJournal(string path, SqliteConnection connection, ILogger logger, IOutboundJournal? atRisk)
+    private readonly string _output;
+
+    private SqliteOutboundJournal(string path, SqliteConnection connection, ILogger logger, IOutboundJournal? atRisk, string output)
     {
         Path = path;
+        _output = output;
         _connection = connection;
         _logger = logger;
         _atRisk = atRisk;
@@ -51,8 +54,9 @@ internal sealed class SqliteOutboundJournal : IOutboundJournal, IDisposable
     /// The most the database may grow to: a write beyond it fails as on a full disk. The queue's own size bound
     /// (<c>Mqtt:DurableQueue:MaxMegabytes</c>) drops the oldest messages long before; null for no limit.
     /// </param>
+    /// <param name="output">The output whose queue it is, as its logs start (<c>MQTT</c>, <c>Sparkplug</c>).</param>
     /// <exception cref="SqliteException">It cannot be opened or created, is no queue database, or another process holds it.</exception>
-    public static SqliteOutboundJournal Open(string path, ILogger logger, IOutboundJournal? atRisk = null, long? maxDatabaseBytes = null)
+    public static SqliteOutboundJournal Open(string path, ILogger logger, IOutboundJournal? atRisk = null, long? maxDatabaseBytes = null, string output = "MQTT")
     {
         ArgumentNullException.ThrowIfNull(path);
         var connection = new SqliteConnection(new SqliteConnectionStringBuilder { DataSource = path, Mode = SqliteOpenMode.ReadWriteCreate, Pooling = false, DefaultTimeout = 2 }.ToString());
@@ -73,7 +77,7 @@ internal sealed class SqliteOutboundJournal : IOutboundJournal, IDisposable
                 Execute(connection, $"PRAGMA max_page_count = {pages.ToString(System.Globalization.CultureInfo.InvariantCulture)}");
             }
 
-            return new SqliteOutboundJournal(path, connection, logger, atRisk);
+            return new SqliteOutboundJournal(path, connection, logger, atRisk, output);
         }
         catch
         {
@@ -83,7 +87,9 @@ internal sealed class SqliteOutboundJournal : IOutboundJournal, IDisposable
     }
 
     /// <summary>Why the database at <paramref name="path"/> cannot be the queue, in a few words; null when it can.</summary>
-    public static string? Problem(string path)
+    /// <param name="path">The database file.</param>
+    /// <param name="section">The section whose queue it is (<c>Mqtt</c>, <c>Sparkplug</c>), named in the advice.</param>
+    public static string? Problem(string path, string section = "Mqtt")
     {
         try
         {
@@ -93,7 +99,7 @@ internal sealed class SqliteOutboundJournal : IOutboundJournal, IDisposable
         }
         catch (SqliteException e) when (e.SqliteErrorCode is 5 or 6)
         {
-            return "another process holds it (a second gateway with the same Mqtt:ClientId and Mqtt:StateDirectory?)";
+            return $"another process holds it (a second gateway with the same {section}:ClientId and {section}:StateDirectory?)";
         }
         catch (SqliteException e)
         {
@@ -246,7 +252,7 @@ internal sealed class SqliteOutboundJournal : IOutboundJournal, IDisposable
             if (_failing)
             {
                 _failing = false;
-                QueueStoreLog.JournalWritable(_logger, Path);
+                QueueStoreLog.JournalWritable(_logger, _output, Path);
             }
 
             return true;
@@ -257,7 +263,7 @@ internal sealed class SqliteOutboundJournal : IOutboundJournal, IDisposable
             if (!_failing)
             {
                 _failing = true;
-                QueueStoreLog.JournalFailed(_logger, Path, message.Topic, e.Message);
+                QueueStoreLog.JournalFailed(_logger, _output, Path, message.Topic, e.Message);
             }
 
             return false;

@@ -14,7 +14,8 @@ internal sealed class SparkplugOutputStatus(SparkplugNode node, SparkplugEdgeNod
     public OutputStatus Status()
     {
         bool connected = edgeNode.Connection.Client.IsConnected;
-        (string Reason, DateTimeOffset Time)? failure = edgeNode.Connection.LastFailure;
+        Broker.BrokerStatus broker = edgeNode.Connection.Status();
+        (string Reason, DateTimeOffset Time)? failure = broker.LastProblem is { } problem && broker.LastProblemAt is { } at ? (problem, at) : null;
         string state = edgeNode.IsOnline ? "online (births sent)"
             : connected && edgeNode.PrimaryHostId is { } host ? $"connected, waiting for primary host {host} to be online"
             : connected ? "connected"
@@ -25,7 +26,7 @@ internal sealed class SparkplugOutputStatus(SparkplugNode node, SparkplugEdgeNod
             Connected = connected,
             State = state,
             Server = edgeNode.Connection.Broker,
-            ConnectedSince = edgeNode.Connection.ConnectedSince,
+            ConnectedSince = broker.ConnectedSince,
             LastError = failure?.Reason,
             LastErrorTime = failure?.Time,
             LastPublish = edgeNode.Connection.LastPublished,

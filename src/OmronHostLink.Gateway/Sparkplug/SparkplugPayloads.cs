@@ -15,17 +15,72 @@ internal static class SparkplugPayloads
     /// <summary>The node metric a host application sets to true to ask for new births.</summary>
     public const string Rebirth = "Node Control/Rebirth";
 
-    /// <summary>NBIRTH: seq 0, the bdSeq of this session and <c>Node Control/Rebirth</c>, then any node metrics.</summary>
-    public static byte[] NodeBirth(ulong bdSeq, DateTimeOffset time, IEnumerable<(SparkplugMetric Metric, object? Value)>? nodeMetrics = null)
+    /// <summary>
+    /// The node metric that says how many changes store-and-forward has dropped since the gateway started (a full or
+    /// too old store, a metric no longer configured): Int64, in NBIRTH and in NDATA when it grows.
+    /// </summary>
+    public const string Dropped = "Store and Forward/Dropped";
+
+    /// <summary>NBIRTH: seq 0, the bdSeq of this session and <c>Node Control/Rebirth</c>, then any node metrics (by name, Int64).</summary>
+    public static byte[] NodeBirth(ulong bdSeq, DateTimeOffset time, IEnumerable<(string Name, long Value)>? nodeMetrics = null)
     {
         var payload = new Payload { Timestamp = SparkplugValues.Timestamp(time), Seq = 0 };
         payload.Metrics.Add(new Payload.Types.Metric { Name = BirthDeathSequence, Datatype = (uint)SparkplugDataType.Int64, LongValue = bdSeq, Timestamp = SparkplugValues.Timestamp(time) });
         payload.Metrics.Add(new Payload.Types.Metric { Name = Rebirth, Datatype = (uint)SparkplugDataType.Boolean, BooleanValue = false, Timestamp = SparkplugValues.Timestamp(time) });
-        foreach ((SparkplugMetric metric, object? value) in nodeMetrics ?? [])
+        foreach ((string name, long value) in nodeMetrics ?? [])
         {
-            payload.Metrics.Add(Birth(metric, value, time, null));
+            payload.Metrics.Add(new Payload.Types.Metric { Name = name, Datatype = (uint)SparkplugDataType.Int64, LongValue = unchecked((ulong)value), Timestamp = SparkplugValues.Timestamp(time) });
         }
 
+        return payload.ToByteArray();
+    }
+
+    /// <summary>NDATA: node metrics that changed, by name (they have no alias), Int64.</summary>
+    public static byte[] NodeData(ulong seq, DateTimeOffset time, IEnumerable<(string Name, long Value)> nodeMetrics)
+    {
+        var payload = new Payload { Timestamp = SparkplugValues.Timestamp(time), Seq = seq };
+        foreach ((string name, long value) in nodeMetrics)
+        {
+            payload.Metrics.Add(new Payload.Types.Metric { Name = name, Datatype = (uint)SparkplugDataType.Int64, LongValue = unchecked((ulong)value), Timestamp = SparkplugValues.Timestamp(time) });
+        }
+
+        return payload.ToByteArray();
+    }
+
+    /// <summary>
+    /// A change kept by store-and-forward: the metric by name (aliases may change between runs), its data type, the time
+    /// it was read, its value and its quality.
+    /// </summary>
+    public static byte[] StoredChange(SparkplugMetricValue change)
+    {
+        ArgumentNullException.ThrowIfNull(change);
+        var metric = new Payload.Types.Metric { Name = change.Metric.Name, Datatype = (uint)change.Metric.DataType, Timestamp = SparkplugValues.Timestamp(change.Time) };
+        Fill(metric, change.Metric.DataType, change.Value, change.Quality);
+        return metric.ToByteArray();
+    }
+
+    /// <summary>Reads a change kept by store-and-forward; null when the bytes are not one.</summary>
+    internal static Payload.Types.Metric? TryParseStoredChange(byte[] bytes)
+    {
+        try
+        {
+            Payload.Types.Metric metric = Payload.Types.Metric.Parser.ParseFrom(bytes);
+            return metric.HasName && metric.HasDatatype && metric.HasTimestamp ? metric : null;
+        }
+        catch (InvalidProtocolBufferException)
+        {
+            return null;
+        }
+    }
+
+    /// <summary>
+    /// DDATA of stored changes: each metric by alias with its data type and the time it was read, marked
+    /// <c>is_historical</c> (not a current value: a host application stores it, and does not show it as live).
+    /// </summary>
+    public static byte[] HistoricalData(ulong seq, DateTimeOffset time, IEnumerable<Payload.Types.Metric> metrics)
+    {
+        var payload = new Payload { Timestamp = SparkplugValues.Timestamp(time), Seq = seq };
+        payload.Metrics.AddRange(metrics);
         return payload.ToByteArray();
     }
 

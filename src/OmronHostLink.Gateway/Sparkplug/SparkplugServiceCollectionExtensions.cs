@@ -1,6 +1,9 @@
 using Microsoft.Extensions.DependencyInjection;
+using Microsoft.Extensions.DependencyInjection.Extensions;
+using Microsoft.Extensions.Hosting;
 using Microsoft.Extensions.Logging;
 using Microsoft.Extensions.Options;
+using OmronHostLink.Gateway.Broker;
 using OmronHostLink.Gateway.Configuration;
 using OmronHostLink.Gateway.Outputs;
 using OmronHostLink.Gateway.Writes;
@@ -17,10 +20,10 @@ internal static class SparkplugServiceCollectionExtensions
     /// Call it before the polling service is added, so that the edge node stops after the links and can send their
     /// devices' deaths before its own.
     /// </summary>
-    public static IServiceCollection AddSparkplugOutput(this IServiceCollection services, GatewayConfiguration gateway)
+    public static IServiceCollection AddSparkplugOutput(this IServiceCollection services, GatewayConfiguration gateway, string contentRoot)
     {
         ArgumentNullException.ThrowIfNull(gateway);
-        new SparkplugOptionsValidator(gateway).AddTo(services);
+        new SparkplugOptionsValidator(gateway, contentRoot).AddTo(services);
         if (!gateway.IsEnabled(SparkplugOptions.SectionName))
         {
             return services;
@@ -29,9 +32,16 @@ internal static class SparkplugServiceCollectionExtensions
         gateway.AddGroupRule(new SparkplugNames());
         gateway.AddGroupRule(new WritableRule());
         services.AddOutputServices();
+        services.TryAddSingleton<BrokerConnections>();
+        services.AddSingleton(sp => SparkplugHistory.Open(
+            sp.GetRequiredService<IOptions<SparkplugOptions>>().Value,
+            sp.GetRequiredService<IHostEnvironment>().ContentRootPath,
+            sp.GetRequiredService<TimeProvider>(),
+            sp.GetRequiredService<ILogger<SparkplugHistory>>()));
         services.AddSingleton(sp => new SparkplugNode(
             sp.GetRequiredService<IOptions<SparkplugOptions>>().Value,
             sp.GetRequiredService<TagCatalog>(),
+            sp.GetRequiredService<SparkplugHistory>(),
             sp.GetRequiredService<TimeProvider>()));
         services.AddSingleton<ITagOutput>(sp => sp.GetRequiredService<SparkplugNode>());
         services.AddSingleton(sp => new SparkplugCommands(

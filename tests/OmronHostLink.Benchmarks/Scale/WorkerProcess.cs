@@ -55,16 +55,7 @@ internal sealed partial class WorkerProcess : ProgramProcess
     /// <summary>Writes <paramref name="settings"/> as the worker's appsettings.json and starts the worker.</summary>
     public static async Task<WorkerProcess> StartAsync(string workerAssembly, JsonObject settings, CancellationToken cancellationToken)
     {
-        string directory = NewDirectory("ohl-scale-worker-");
-        await File.WriteAllTextAsync(
-            Path.Combine(directory, "appsettings.json"),
-            settings.ToJsonString(new JsonSerializerOptions { WriteIndented = true }),
-            cancellationToken).ConfigureAwait(false);
-
-        // The generated file is the whole configuration: the content root is its directory, not the worker's own.
-        ProcessStartInfo start = DotnetStart(workerAssembly, ["--contentRoot", directory]);
-        start.WorkingDirectory = directory;
-        start.Environment["DOTNET_ENVIRONMENT"] = "Production";
+        (ProcessStartInfo start, string directory) = await PrepareAsync(workerAssembly, "ohl-scale-worker-", settings, cancellationToken).ConfigureAwait(false);
         var worker = new WorkerProcess(start, directory);
         try
         {
@@ -78,6 +69,23 @@ internal sealed partial class WorkerProcess : ProgramProcess
 
         ChildProcesses.Add(worker.Process);
         return worker;
+    }
+
+    /// <summary>
+    /// Writes <paramref name="settings"/> as <c>appsettings.json</c> in a new directory and makes the command that runs
+    /// the gateway on it: the generated file is the whole configuration (the content root is its directory).
+    /// </summary>
+    internal static async Task<(ProcessStartInfo Start, string Directory)> PrepareAsync(string gatewayAssembly, string directoryPrefix, JsonObject settings, CancellationToken cancellationToken)
+    {
+        string directory = NewDirectory(directoryPrefix);
+        await File.WriteAllTextAsync(
+            Path.Combine(directory, "appsettings.json"),
+            settings.ToJsonString(new JsonSerializerOptions { WriteIndented = true }),
+            cancellationToken).ConfigureAwait(false);
+        ProcessStartInfo start = DotnetStart(gatewayAssembly, ["--contentRoot", directory]);
+        start.WorkingDirectory = directory;
+        start.Environment["DOTNET_ENVIRONMENT"] = "Production";
+        return (start, directory);
     }
 
     /// <summary>Stops the worker as a service manager would (SIGTERM), killing it if it takes more than 20 s.</summary>

@@ -59,7 +59,10 @@ public sealed class MqttConfigurationTests
 
     public static TheoryData<string, string> BadSettings => new()
     {
-        { "Mqtt:Host=", "Mqtt:Host is empty" },
+        { "Mqtt:Host=", "Mqtt:Host is empty; set the broker's host name or address (e.g. 127.0.0.1 or broker.plant.local) (or list several in Mqtt:Servers)" },
+        { "Mqtt:Servers:0:Host=127.0.0.1", "Mqtt:Host is set beside Mqtt:Servers" },
+        { "Mqtt:Host=;Mqtt:Port=;Mqtt:Servers:0:Host=", "Mqtt:Servers:0:Host is empty" },
+        { "Mqtt:Host=;Mqtt:Port=;Mqtt:Servers:0:Host=127.0.0.1;Mqtt:Servers:0:Tls:Enabled=true;Mqtt:Servers:0:Tls:CaFile=/nonexistent/ca.pem", "Mqtt:Servers:0:Tls:CaFile '/nonexistent/ca.pem' does not exist" },
         { "Mqtt:Host=broker:1883", "Mqtt:Host 'broker:1883' is not a host name or address" },
         { "Mqtt:Port=70000", "Mqtt:Port must be 1-65535; it is 70000" },
         { "Mqtt:Port=0", "Mqtt:Port must be 1-65535; it is 0" },

@@ -14,7 +14,7 @@ public sealed class MqttSecurityTests(ITestOutputHelper output) : IAsyncLifetime
     private const string Acl = """
         # /etc/mosquitto/acl — one block per worker and per consumer
         user worker-a
-        topic readwrite test/status/worker-a
+        topic readwrite test/status/worker-a/#
         topic write test/plc/#
         topic read test/plc/+/+/set
 

@@ -100,7 +100,16 @@ public sealed class TestSubscriber : IAsyncDisposable
         if (broker.Settings.Tls is not null)
         {
             // The subscriber's own trust is not what is tested.
-            builder = builder.WithTlsOptions(o => o.UseTls().WithTargetHost("127.0.0.1").WithCertificateValidationHandler(_ => true));
+            // A broker that requires client certificates gets one of its own CA.
+            System.Security.Cryptography.X509Certificates.X509Certificate2? certificate = broker.Settings.RequireCertificate ? broker.Settings.Tls.CreateClient("test-subscriber") : null;
+            builder = builder.WithTlsOptions(o =>
+            {
+                o.UseTls().WithTargetHost("127.0.0.1").WithCertificateValidationHandler(_ => true);
+                if (certificate is not null)
+                {
+                    o.WithClientCertificates([certificate]);
+                }
+            });
         }
 
         var subscriber = new TestSubscriber(builder.Build(), filters ?? ["#"]);

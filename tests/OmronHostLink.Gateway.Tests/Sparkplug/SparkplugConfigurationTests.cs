@@ -38,7 +38,26 @@ public sealed class SparkplugConfigurationTests
         { "HostLink:Links:plc:Demotion:Period=0s", "HostLink:Links:plc:Demotion:Period must be more than 0 and at most 1 day" },
         { "HostLink:Links:plc:Demotion:Perod=5s", "HostLink:Links:plc:Demotion:Perod is not a setting here" },
         { "Sparkplug:Writes:Enabled=true", "" },
+        { "Sparkplug:Servers:0:Host=127.0.0.1", "Sparkplug:Host is set beside Sparkplug:Servers; give either one broker (Sparkplug:Host, Sparkplug:Port) or the list" },
+        { "Sparkplug:Host=;Sparkplug:Servers:0:Host=127.0.0.1", "Sparkplug:Port is set beside Sparkplug:Servers" },
+        { "Sparkplug:Host=;Sparkplug:Port=;Sparkplug:Servers:0:Host=127.0.0.1;Sparkplug:Servers:1:Host=mqtt://b", "Sparkplug:Servers:1:Host 'mqtt://b' is not a host name or address (no scheme, no port: the port is Sparkplug:Servers:1:Port)" },
+        { "Sparkplug:Host=;Sparkplug:Port=;Sparkplug:Servers:0:Host=127.0.0.1;Sparkplug:Servers:0:Port=70000", "Sparkplug:Servers:0:Port must be 1-65535; it is 70000" },
+        { "Sparkplug:Host=;Sparkplug:Port=;Sparkplug:Servers:0:Host=127.0.0.1;Sparkplug:Servers:1:Host=127.0.0.1", "Sparkplug:Servers:1 names 127.0.0.1:1883 again (Sparkplug:Servers:0 does already)" },
+        { "Sparkplug:Host=;Sparkplug:Port=;Sparkplug:Servers:0:Hots=127.0.0.1", "Sparkplug:Servers:0:Hots is not a setting here" },
+        { "Sparkplug:Host=;Sparkplug:Port=;Sparkplug:Servers:0:Host=127.0.0.1;Sparkplug:Servers:0:Tls:CaFile=/x/ca.pem", "Sparkplug:Servers:0:Tls:Enabled is false but CaFile is set" },
+        { "Sparkplug:Host=;Sparkplug:Port=;Sparkplug:Servers:first:Host=127.0.0.1", "Sparkplug:Servers:first: Sparkplug:Servers is a list; its items are numbered 0, 1, 2" },
+        { "Sparkplug:Host=;Sparkplug:Port=;Sparkplug:Servers:0:Host=127.0.0.1;Sparkplug:Servers:1:Host=127.0.0.2;Sparkplug:Servers:1:Port=8883;Sparkplug:Servers:1:Tls:Enabled=true", "" },
+        { "Sparkplug:PrimaryHostLegacyState=true", "Sparkplug:PrimaryHostLegacyState is set without Sparkplug:PrimaryHostId" },
+        { "Sparkplug:PrimaryHostId=IamHost;Sparkplug:PrimaryHostLegacyState=true", "" },
+        { "Sparkplug:StoreAndForward:Capacity=0", "Sparkplug:StoreAndForward:Capacity must be 1-10000000; it is 0" },
+        { "Sparkplug:StoreAndForward:MaxMegabytes=0", "Sparkplug:StoreAndForward:MaxMegabytes must be 1-1048576" },
+        { "Sparkplug:StoreAndForward:MaxAge=0s", "Sparkplug:StoreAndForward:MaxAge must be at least 1s" },
+        { "Sparkplug:StoreAndForward:Capasity=5", "Sparkplug:StoreAndForward:Capasity is not a setting here" },
+        { "Sparkplug:StoreAndForward:Enabled=false;Sparkplug:StoreAndForward:Durable=true", "Sparkplug:StoreAndForward:Durable is true but Sparkplug:StoreAndForward:Enabled is false" },
+        { $"Sparkplug:StoreAndForward:Durable=true;Sparkplug:StateDirectory={NotADirectory}/state", "Sparkplug:StoreAndForward:Durable: the store's database" },
     };
+
+    private static string NotADirectory => Path.Combine(AppContext.BaseDirectory, "OmronHostLink.Gateway.Tests.dll");
 
     [Theory]
     [MemberData(nameof(BadSettings))]

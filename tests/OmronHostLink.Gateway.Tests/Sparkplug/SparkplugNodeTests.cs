@@ -1,6 +1,8 @@
+using Microsoft.Extensions.Logging.Abstractions;
 using Microsoft.Extensions.Time.Testing;
 using OmronHostLink.Gateway.Configuration;
 using OmronHostLink.Gateway.Sparkplug;
+using OmronHostLink.Gateway.Sparkplug.Wire;
 
 namespace OmronHostLink.Gateway.Tests.Sparkplug;
 
@@ -37,20 +39,54 @@ public sealed class SparkplugNodeTests
         options.Links["plc"] = new LinkOptions();
         options.Links["plc"].Groups["a"] = new PollGroupOptions { Address = "D1", Type = "int16" };
         options.Links["plc"].Groups["b"] = new PollGroupOptions { Address = "D2", Type = "int16" };
-        var node = new SparkplugNode(new SparkplugOptions { GroupId = "G", EdgeNodeId = "N" }, new Outputs.TagCatalog(options), new FakeTimeProvider(T0));
+        var sparkplug = new SparkplugOptions { GroupId = "G", EdgeNodeId = "N", StoreAndForward = { Enabled = false } };
+        var time = new FakeTimeProvider(T0);
+        var node = new SparkplugNode(sparkplug, new Outputs.TagCatalog(options), SparkplugHistory.Open(sparkplug, Path.GetTempPath(), time, NullLogger.Instance), time);
         node.TagChanged(Change("a", (short)1, TagQuality.Good));
         node.TagChanged(Change("b", (short)2, TagQuality.Good));
         node.Births(0).Select(m => m.Topic.Type).Should().Equal(SparkplugMessageType.NBIRTH, SparkplugMessageType.DBIRTH);
 
         // The polling reports every tag of the unit comm-error, then the unit: the publisher may take its messages in between.
         node.TagChanged(Change("a", null, TagQuality.CommError));
-        List<SparkplugMessage> first = node.TakeMessages(connected: true);
+        List<SparkplugMessage> first = node.TakeMessages();
         node.TagChanged(Change("b", null, TagQuality.CommError));
         node.UnitChanged("plc", 0, UnitState.CommError, "timeout");
-        List<SparkplugMessage> then = node.TakeMessages(connected: true);
+        List<SparkplugMessage> then = node.TakeMessages();
 
         first.Select(m => (m.Topic.Type, m.Topic.DeviceId)).Should().Equal((SparkplugMessageType.DDEATH, "plc-0"));
         then.Should().BeEmpty("the death said it all");
+    }
+
+    [Fact]
+    public void A_tag_the_PLC_refuses_is_quality_0_bad_without_a_value_and_500_stale_with_its_last_one()
+    {
+        var options = new GatewayOptions();
+        options.Links["plc"] = new LinkOptions();
+        options.Links["plc"].Groups["a"] = new PollGroupOptions { Address = "D1", Type = "int16" };
+        options.Links["plc"].Groups["b"] = new PollGroupOptions { Address = "D2", Type = "int16" };
+        var sparkplug = new SparkplugOptions { GroupId = "G", EdgeNodeId = "N", StoreAndForward = { Enabled = false } };
+        var time = new FakeTimeProvider(T0);
+        var node = new SparkplugNode(sparkplug, new Outputs.TagCatalog(options), SparkplugHistory.Open(sparkplug, Path.GetTempPath(), time, NullLogger.Instance), time);
+        node.TagChanged(Change("a", (short)1, TagQuality.Good));
+        node.TagChanged(Change("b", null, TagQuality.Stale));
+
+        Payload birth = Payload.Parser.ParseFrom(node.Births(0)[1].Payload);
+        Payload.Types.Metric a = birth.Metrics.Single(m => m.Name == "a");
+        Payload.Types.Metric b = birth.Metrics.Single(m => m.Name == "b");
+        a.Properties.Should().BeNull("good (192) is not sent: the specification makes Quality optional when good");
+        b.IsNull.Should().BeTrue();
+        Quality(b).Should().Be((0u, 3u), "BAD (0) as an Int32 (type 3): no value at all");
+
+        node.TagChanged(Change("a", null, TagQuality.Stale));
+        Payload.Types.Metric stale = Payload.Parser.ParseFrom(node.TakeMessages().Single().Payload).Metrics.Single();
+        ((short)stale.IntValue).Should().Be(1, "the last value read stands");
+        Quality(stale).Should().Be((500u, 3u), "STALE (500): a value, no longer read");
+    }
+
+    private static (uint Value, uint Type) Quality(Payload.Types.Metric metric)
+    {
+        int i = metric.Properties.Keys.IndexOf("Quality");
+        return (metric.Properties.Values[i].IntValue, metric.Properties.Values[i].Type);
     }
 
     private static TagChange Change(string tag, object? value, TagQuality quality)

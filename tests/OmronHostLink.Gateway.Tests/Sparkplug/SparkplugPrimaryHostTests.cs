@@ -122,6 +122,31 @@ public sealed class SparkplugPrimaryHostTests(ITestOutputHelper output, TahuCode
         logs.WithEvent(Waiting).Should().ContainSingle("the node never reconnected");
     }
 
+    [Fact]
+    public async Task A_legacy_primary_host_is_followed_on_STATE_id_with_plain_ONLINE_and_OFFLINE()
+    {
+        const string hostId = "scada-legacy";
+        await using Rig rig = await Rig.StartAsync(hostId, online: null, output, legacy: true);
+        (_, _, TestSubscriber app, CapturingLoggerProvider logs, IHost host) = rig;
+        await MqttGatewayConfig.Eventually(() => logs.WithEvent(Waiting).Count == 1, "the node waits for the primary host", logs);
+        logs.WithEvent(Waiting)[0].Message.Should().Contain("(STATE/scada-legacy)", "Sparkplug 2.2's topic, outside spBv1.0");
+
+        // Sparkplug 3.0 JSON on the 3.0 topic is not what this host publishes: the node does not even listen there.
+        await app.PublishAsync(StateTopic(hostId), State(online: true, 1_700_000_000_000), retain: true);
+        await app.PublishAsync("STATE/" + hostId, "ONLINE", retain: true);
+
+        await app.WaitUntilAsync(ms => Has(ms, NBirth) && Has(ms, Device("DBIRTH", "plc-0")), "the births follow ONLINE");
+        logs.WithEvent(HostOnline).Should().ContainSingle();
+        host.Services.GetRequiredService<SparkplugEdgeNode>().IsOnline.Should().BeTrue();
+
+        await app.PublishAsync("STATE/" + hostId, "OFFLINE", retain: true);
+
+        await app.WaitUntilAsync(ms => Has(ms, NDeath), "OFFLINE ends the session with NDEATH");
+        await MqttGatewayConfig.Eventually(() => logs.WithEvent(Waiting).Count == 2, "the node reconnects and waits again", logs);
+        logs.WithEvent(HostOffline).Should().ContainSingle();
+        logs.WithEvent(StateIgnored).Should().BeEmpty();
+    }
+
     private async Task<JsonObject> DecodeAsync(TestSubscriber app, string topic)
         => await _tahu.DecodeAsync(app.Messages.Last(m => m.Topic == topic).Bytes!);
 
@@ -146,7 +171,7 @@ public sealed class SparkplugPrimaryHostTests(ITestOutputHelper output, TahuCode
 
         public IHost Host { get; private set; } = null!;
 
-        public static async Task<Rig> StartAsync(string hostId, long? online, ITestOutputHelper output)
+        public static async Task<Rig> StartAsync(string hostId, long? online, ITestOutputHelper output, bool legacy = false)
         {
             var rig = new Rig { _output = output };
             try
@@ -156,6 +181,11 @@ public sealed class SparkplugPrimaryHostTests(ITestOutputHelper output, TahuCode
                 rig.Simulator = await RecordingSimulator.StartAsync(rig.Plc);
                 Dictionary<string, string?> config = Config(rig.Simulator.Port, rig._broker);
                 config["Sparkplug:PrimaryHostId"] = hostId;
+                if (legacy)
+                {
+                    config["Sparkplug:PrimaryHostLegacyState"] = "true";
+                }
+
                 MqttGatewayConfig.Group(config, "level", "D100");
                 rig.App = await TestSubscriber.ConnectAsync(rig._broker, [Namespace + "/#"]);
                 if (online is { } timestamp)
