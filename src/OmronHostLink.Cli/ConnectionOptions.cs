@@ -26,6 +26,7 @@ internal sealed class ConnectionOptions
         ["ReadRetries"] = "--retries",
         ["Model"] = "--model",
         ["HostLinkCompatibleMode"] = "--compatible-mode",
+        ["LocalEcho"] = "--local-echo",
     };
 
     public ConnectionOptions(bool includeUnit = true, TimeSpan? defaultTimeout = null, int? defaultRetries = null)
@@ -47,6 +48,7 @@ internal sealed class ConnectionOptions
         Retries = OptionValues.OptionalInteger("--retries", $"Times a read is repeated after a timeout or damaged frame, 0-{SettingRules.MaxRetries} (writes are never repeated).", int.MinValue, int.MaxValue, "n");
         Fins = new Option<bool>("--fins") { Description = "Use FINS over Host Link (FA) where C-mode would otherwise be used: reads, writes, bit writes, status and mode." };
         CompatibleMode = OptionValues.OptionalChoice("--compatible-mode", "The Host Link-compatible device mode the PLC's Serial Communications Unit is set to (A: CS/CJ/C, B: CVM1/CV, C: C200H, D: C500/C120): each answer frame is checked to be framed as that mode frames it. Default: any framing.", "a|b|c|d", "a", "b", "c", "d");
+        LocalEcho = new Option<bool>("--local-echo") { Description = "The line echoes what is sent (a 2-wire RS-485 adapter without echo suppression; 'hostlink detect' tells): read our own frames back before each answer." };
         Model = new Option<string?>("--model") { Description = "The PLC model addresses and commands are checked against before anything is sent (CPM1A, CP1E-E, C200HS, CS1, ...: see 'hostlink model --list'), or auto to ask the PLC (MM).", HelpName = "name" };
     }
 
@@ -80,6 +82,8 @@ internal sealed class ConnectionOptions
 
     public Option<string?> CompatibleMode { get; }
 
+    public Option<bool> LocalEcho { get; }
+
     /// <summary>How 32- and 64-bit values lie in two or four words: Omron's own layout, low word first.</summary>
     public WordOrder WordOrder => WordOrder.LowWordFirst;
 
@@ -101,6 +105,7 @@ internal sealed class ConnectionOptions
         command.Add(Fins);
         command.Add(Model);
         command.Add(CompatibleMode);
+        command.Add(LocalEcho);
         command.Validators.Add(Validate);
     }
 
@@ -122,6 +127,7 @@ internal sealed class ConnectionOptions
             WordOrder = WordOrder,
             CommandSet = options.GetValue(Fins) ? HostLinkCommandSet.Fins : HostLinkCommandSet.CMode,
             Model = options.GetValue(Model),
+            LocalEcho = options.GetValue(LocalEcho) ? true : null,
             HostLinkCompatibleMode = options.GetValue(CompatibleMode) switch
             {
                 "a" => HostLinkCompatibleMode.ModeA,

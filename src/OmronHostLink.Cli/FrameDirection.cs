@@ -70,7 +70,7 @@ internal static class FrameDirection
     /// command that has one), no data after an error end code, and data of the shape the row's answer has (checked with
     /// the same decoders as <c>--response</c>).
     /// </summary>
-    private static bool IsCModeAnswer(string header, ReadOnlySpan<byte> text, bool final, CModeCommandTable table)
+    internal static bool IsCModeAnswer(string header, ReadOnlySpan<byte> text, bool final, CModeCommandTable table)
     {
         switch (header)
         {
@@ -133,7 +133,7 @@ internal static class FrameDirection
     }
 
     /// <summary>Whether the text is an FA answer: a Host Link end code alone, or 00 and a FINS part whose ICF marks a response.</summary>
-    private static bool IsFinsAnswer(ReadOnlySpan<byte> text, bool final)
+    internal static bool IsFinsAnswer(ReadOnlySpan<byte> text, bool final)
     {
         if (!final
             || text.Length < CModeResponse.EndCodeLength

@@ -36,6 +36,15 @@ internal static class Cli
         return new CliResult(exit, stdout.ToString(), stderr.ToString());
     }
 
+    /// <summary>Runs the command line with serial ports opened by <paramref name="serialPorts"/> (an emulated line), the arguments as given.</summary>
+    public static async Task<CliResult> RunAsync(Func<Transports.SerialLineSettings, Transports.IHostLinkTransport> serialPorts, params string[] args)
+    {
+        var stdout = new StringWriter();
+        var stderr = new StringWriter();
+        int exit = await CliApp.RunAsync(args, TextWriter.Synchronized(stdout), TextWriter.Synchronized(stderr), serialPorts, CancellationToken.None);
+        return new CliResult(exit, stdout.ToString(), stderr.ToString());
+    }
+
     /// <summary>
     /// The command line, with the lossless line's allowance (<see cref="Allowances.LosslessLine"/>) as <c>--timeout</c>
     /// where a command talks to a PLC (<c>--tcp</c> or <c>--port</c>) and the test sets no <c>--timeout</c>: the PLCs

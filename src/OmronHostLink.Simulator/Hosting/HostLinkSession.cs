@@ -17,6 +17,7 @@ internal sealed class HostLinkSession
     private readonly Dictionary<int, VirtualPlc> _plcs = new();
     private readonly HostLinkExchange _exchange;
     private readonly WirePacer _pacer;
+    private readonly SimulatorFrameLog? _log;
 
     public HostLinkSession(VirtualPlc plc)
         : this([plc])
@@ -39,6 +40,7 @@ internal sealed class HostLinkSession
 
         _exchange = new HostLinkExchange(responders);
         _pacer = new WirePacer(plcs[0].Options.BaudRate, plcs[0].Options.BitsPerCharacter);
+        _log = plcs[0].Options.FrameLog;
     }
 
     public async Task RunAsync(Stream stream, CancellationToken cancellationToken)
@@ -50,6 +52,7 @@ internal sealed class HostLinkSession
             while (true)
             {
                 ReadResult result = await reader.ReadAsync(cancellationToken).ConfigureAwait(false);
+                DateTimeOffset arrived = _log is null ? default : DateTimeOffset.UtcNow;
                 ReadOnlySequence<byte> buffer = result.Buffer;
                 while (true)
                 {
@@ -72,6 +75,7 @@ internal sealed class HostLinkSession
                     }
 
                     byte[] received = frame.ToArray();
+                    _log?.Received(received, arrived);
                     LinkReply reply = _exchange.Receive(received);
                     if (reply.Bytes is not null)
                     {
@@ -136,7 +140,7 @@ internal sealed class HostLinkSession
         if (plan.Echo)
         {
             // On a 2-wire line the host hears its own command; that happens while it is sent, before the turnaround.
-            await _pacer.WriteAsync(stream, received, cancellationToken).ConfigureAwait(false);
+            await WriteAsync(stream, received, framed: true, cancellationToken).ConfigureAwait(false);
         }
 
         if (plan.Late)
@@ -153,9 +157,16 @@ internal sealed class HostLinkSession
 
         if (plan.Noise is { } noise)
         {
-            await _pacer.WriteAsync(stream, noise, cancellationToken).ConfigureAwait(false);
+            await WriteAsync(stream, noise, framed: false, cancellationToken).ConfigureAwait(false);
         }
 
-        await _pacer.WriteAsync(stream, plan.Shape(reply.Bytes!), cancellationToken).ConfigureAwait(false);
+        await WriteAsync(stream, plan.Shape(reply.Bytes!), framed: plan.TruncateTo < 0, cancellationToken).ConfigureAwait(false);
+    }
+
+    /// <summary>Writes bytes at the line's pace and logs them with the times their first and last bytes went out.</summary>
+    private async Task WriteAsync(Stream stream, byte[] bytes, bool framed, CancellationToken cancellationToken)
+    {
+        DateTimeOffset first = await _pacer.WriteAsync(stream, bytes, cancellationToken).ConfigureAwait(false);
+        _log?.Sent(bytes, first, DateTimeOffset.UtcNow, framed);
     }
 }

@@ -30,6 +30,8 @@ internal sealed class HostLinkConnection : IAsyncDisposable, IDisposable
     private readonly Resynchroniser _resynchroniser;
     private readonly HostLinkInstruments _instruments;
 
+    private readonly CaptureTap? _trace;
+    private ObserverTap? _observer;
     private LinkStatus _status = new(LinkState.Closed);
     private int _sid;
 
@@ -44,6 +46,11 @@ internal sealed class HostLinkConnection : IAsyncDisposable, IDisposable
         _instruments = HostLinkInstruments.For(options.MeterFactory);
         LinkName = options.LinkName ?? (transport as SerialTransport)?.PortName ?? transport.Description;
         _transport = new LinkTransport(transport, _logger, _time, _instruments, LinkName);
+        if (options.TraceFile is { } traceFile)
+        {
+            _trace = CaptureTap.Create(traceFile);
+            Tap = _trace;
+        }
     }
 
     /// <summary>Where the link stands between transactions.</summary>
@@ -60,8 +67,19 @@ internal sealed class HostLinkConnection : IAsyncDisposable, IDisposable
     /// <summary>The link's name in metrics and traces.</summary>
     public string LinkName { get; }
 
-    /// <summary>Observes every frame sent and received (for the console's --verbose).</summary>
-    public Action<bool, ReadOnlyMemory<byte>>? FrameObserver { get; set; }
+    /// <summary>Observes every frame sent and received (for the console's --verbose); one subscriber of <see cref="Tap"/>.</summary>
+    public Action<bool, ReadOnlyMemory<byte>>? FrameObserver
+    {
+        get => _observer?.Observer;
+        set
+        {
+            _observer = value is null ? null : new ObserverTap(value);
+            Tap = FrameTap.Combine(_trace, _observer);
+        }
+    }
+
+    /// <summary>The link's frame tap: the trace file and the frame observer, told of every frame the link sends and takes.</summary>
+    public FrameTap? Tap { get; private set; }
 
     /// <summary>The next FINS service ID: every FINS exchange carries its own, so an answer to another one is refused.</summary>
     public byte NextSid() => unchecked((byte)Interlocked.Increment(ref _sid));
@@ -147,6 +165,8 @@ internal sealed class HostLinkConnection : IAsyncDisposable, IDisposable
             return;
         }
 
+        _trace?.Dispose();
+
         // Between exchanges the link is tidied here; during one, the exchange does it as it fails.
         if (_gate.Wait(0))
         {
@@ -177,6 +197,7 @@ internal sealed class HostLinkConnection : IAsyncDisposable, IDisposable
             {
                 await _transport.DisposeAsync().ConfigureAwait(false);
                 _status = new LinkStatus(LinkState.Disposed);
+                _trace?.Dispose();
             }
         }
         finally
@@ -205,8 +226,8 @@ internal sealed class HostLinkConnection : IAsyncDisposable, IDisposable
             _attempt.Reset();
             FrameChannel channel = _transport.OpenChannel() ?? await OpenAsync(cancellationToken).ConfigureAwait(false);
             await _spacing.WaitAsync(unit, cancellationToken).ConfigureAwait(false);
-            channel.FrameObserver = FrameObserver;
-            channel.Begin(cancellationToken);
+            channel.Tap = Tap;
+            channel.Begin(cancellationToken, unit, header);
             try
             {
                 TResult result = await exchange(this, channel, arg).ConfigureAwait(false);

@@ -35,6 +35,9 @@ internal sealed class HostLinkConnectionOptions
     /// <summary>How a Serial Communications Unit in a Host Link-compatible mode frames its answers, checked frame by frame; null for any framing.</summary>
     public CompatibleModeFraming? AnswerFraming { get; init; }
 
+    /// <summary>A capture file every frame is written to (pcap or JSON lines by its name); null for none.</summary>
+    public string? TraceFile { get; init; }
+
     /// <summary>The clock deadlines run on.</summary>
     public TimeProvider TimeProvider { get; init; } = TimeProvider.System;
 

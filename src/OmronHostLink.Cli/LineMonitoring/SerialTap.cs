@@ -1,0 +1,193 @@
+using System.Runtime.InteropServices;
+using System.Threading.Channels;
+using Microsoft.Win32.SafeHandles;
+using OmronHostLink.Transports;
+
+namespace OmronHostLink.Cli.LineMonitoring;
+
+/// <summary>
+/// Listens to one serial port without ever writing to it: a thread of its own reads whatever arrives and hands it on,
+/// stamped with the time the read returned, to a channel that never blocks the reader (a slow console cannot make the
+/// port's buffer overflow).
+/// </summary>
+/// <remarks>
+/// The port's speed and format are set with System.IO.Ports (a pseudo-terminal in the 8-bit framing it holds). On Linux
+/// and macOS the bytes are read from a descriptor of the device opened just before, with blocking reads: System.IO.Ports
+/// serves reads from one polling thread that sleeps a millisecond whenever no read is queued, and bytes arriving then
+/// are stamped up to a millisecond late, which is the whole error a latency reading may have. The descriptor is opened
+/// before System.IO.Ports, which then claims the device exclusively. On Windows the port's own stream is read.
+/// </remarks>
+internal sealed class SerialTap : IDisposable
+{
+    private const short PollIn = 0x1;
+    private const int PollMilliseconds = 100;
+
+    private readonly int _source;
+    private readonly ChannelWriter<TapChunk> _output;
+    private readonly SerialTransport _port;
+    private readonly FileStream? _raw;
+    private readonly Stream _stream;
+    private readonly Thread _reader;
+    private volatile bool _stopping;
+
+    private SerialTap(int source, SerialLineSettings settings, ChannelWriter<TapChunk> output, FileStream? raw, SerialTransport port, Stream stream)
+    {
+        _source = source;
+        _output = output;
+        _raw = raw;
+        _port = port;
+        _stream = stream;
+        Description = settings.ToString();
+        _reader = new Thread(Read) { IsBackground = true, Name = $"hostlink tap {settings.PortName}" };
+    }
+
+    /// <summary>The port and its settings.</summary>
+    public string Description { get; }
+
+    /// <summary>Bytes read so far.</summary>
+    public long Bytes => Interlocked.Read(ref _bytes);
+
+    private long _bytes;
+
+    /// <summary>Why reading stopped, when the port failed; null while it reads or after <see cref="Dispose"/>.</summary>
+    public Exception? Failure { get; private set; }
+
+    /// <summary>Opens the port at <paramref name="settings"/> and starts reading it.</summary>
+    /// <exception cref="HostLinkConnectionException">The port cannot be opened; the message names it and says why.</exception>
+    public static async Task<SerialTap> OpenAsync(int source, SerialLineSettings settings, ChannelWriter<TapChunk> output, CancellationToken cancellationToken)
+    {
+        FileStream? raw = null;
+        if (!RuntimeInformation.IsOSPlatform(OSPlatform.Windows))
+        {
+            try
+            {
+                raw = new FileStream(new SafeFileHandle(OpenReadOnly(settings.PortName), ownsHandle: true), FileAccess.Read, bufferSize: 0);
+            }
+            catch (IOException e)
+            {
+                throw new HostLinkConnectionException($"Cannot open {settings.PortName} to listen: {e.Message}", e);
+            }
+        }
+
+        var port = new SerialTransport(settings);
+        Stream stream;
+        try
+        {
+            stream = await port.OpenAsync(cancellationToken).ConfigureAwait(false);
+        }
+        catch
+        {
+            raw?.Dispose();
+            throw;
+        }
+
+        var tap = new SerialTap(source, settings, output, raw, port, stream);
+        tap._reader.Start();
+        return tap;
+    }
+
+    /// <summary>Stops reading and closes the port.</summary>
+    public void Dispose()
+    {
+        _stopping = true;
+        _port.Dispose();
+        if (_raw is null)
+        {
+            // Closing the port ended the blocking read.
+            _reader.Join(TimeSpan.FromSeconds(2));
+        }
+        else
+        {
+            // The reader polls in short steps and sees the flag.
+            _reader.Join(TimeSpan.FromMilliseconds(PollMilliseconds * 5));
+            _raw.Dispose();
+        }
+    }
+
+    private void Read()
+    {
+        var buffer = new byte[4096];
+        try
+        {
+            while (!_stopping)
+            {
+                if (_raw is not null && !Readable(_raw.SafeFileHandle))
+                {
+                    continue;
+                }
+
+                int n = _raw is not null ? _raw.Read(buffer, 0, buffer.Length) : _stream.Read(buffer, 0, buffer.Length);
+                long ticks = System.Diagnostics.Stopwatch.GetTimestamp();
+                if (n <= 0)
+                {
+                    throw new IOException($"{Description} hung up: the device is gone, or the other end of a pseudo-terminal closed.");
+                }
+
+                Interlocked.Add(ref _bytes, n);
+                _output.TryWrite(new TapChunk(_source, buffer.AsSpan(0, n).ToArray(), ticks));
+            }
+        }
+        catch (Exception e) when (e is IOException or ObjectDisposedException or InvalidOperationException or UnauthorizedAccessException)
+        {
+            if (!_stopping)
+            {
+                Failure = e;
+                _output.TryComplete(new HostLinkConnectionException($"Lost {Description}: {e.Message}", e));
+            }
+        }
+    }
+
+    /// <summary>Waits up to <see cref="PollMilliseconds"/> for bytes to read.</summary>
+    private static bool Readable(SafeFileHandle handle)
+    {
+        var fd = new PollFd { Fd = (int)handle.DangerousGetHandle(), Events = PollIn };
+        int ready = Poll(ref fd, 1, PollMilliseconds);
+        if (ready < 0)
+        {
+            int errno = Marshal.GetLastPInvokeError();
+            if (errno == 4)
+            {
+                // EINTR: a signal; poll again.
+                return false;
+            }
+
+            throw new IOException($"poll failed (errno {errno}).");
+        }
+
+        return ready > 0;
+    }
+
+    private static IntPtr OpenReadOnly(string path)
+    {
+        // O_RDONLY | O_NOCTTY | O_CLOEXEC: a serial device must not become the monitor's controlling terminal.
+        int flags = RuntimeInformation.IsOSPlatform(OSPlatform.OSX) ? 0x20000 | 0x1000000 : 0x100 | 0x80000;
+        int fd = OpenNative(path, flags);
+        if (fd < 0)
+        {
+            int errno = Marshal.GetLastPInvokeError();
+            throw new IOException(errno switch
+            {
+                2 => "there is no such device",
+                13 => "permission denied (on Linux, add the user to the dialout group)",
+                16 => "the device is in use by another program",
+                _ => $"open failed (errno {errno})",
+            });
+        }
+
+        return fd;
+    }
+
+    [StructLayout(LayoutKind.Sequential)]
+    private struct PollFd
+    {
+        public int Fd;
+        public short Events;
+        public short Revents;
+    }
+
+    [DllImport("libc", EntryPoint = "poll", SetLastError = true)]
+    private static extern int Poll(ref PollFd fds, uint count, int timeout);
+
+    [DllImport("libc", EntryPoint = "open", SetLastError = true, CharSet = CharSet.Ansi, BestFitMapping = false, ThrowOnUnmappableChar = true)]
+    private static extern int OpenNative(string path, int flags);
+}
