@@ -33,6 +33,9 @@ internal sealed class ExchangePairer
         AwaitAnswerContinuation,
     }
 
+    /// <summary>Whether the PLC speaks next: a command waits for its answer, or a divided exchange for the PLC's next frame or CR.</summary>
+    public bool PlcSpeaksNext => _state is State.AwaitAnswer or State.AwaitCommandHandshake or State.AwaitAnswerContinuation;
+
     /// <summary>Takes the next frame heard (its <see cref="MonitoredFrame.Direction"/> is set on return) and adds the events it completes.</summary>
     public void Take(MonitoredFrame frame, List<MonitorEvent> events)
     {

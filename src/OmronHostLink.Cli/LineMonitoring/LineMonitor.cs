@@ -4,14 +4,15 @@ namespace OmronHostLink.Cli.LineMonitoring;
 
 /// <summary>
 /// The monitor without its ports: chunks in, frames cut, exchanges paired, every frame written to the capture with its
-/// direction, events out. With two ports the frames of both are put back in the order they crossed the line (each
-/// port's reader runs on its own thread, so a frame of one may be handed over after a later frame of the other): a frame
-/// is held until <see cref="ReorderWindow"/> has passed since it ended.
+/// direction, events out. With two ports, each port's frames are in order but the two ports' readers run on threads of
+/// their own, so a frame of one may be handed over (and stamped) after a later frame of the other: the frames are merged
+/// as the protocol orders them, taking the host's next frame when the host speaks next and the PLC's when the PLC does;
+/// a frame of the side that does not speak next waits up to <see cref="ReorderWindow"/> for the other side's.
 /// </summary>
 internal sealed class LineMonitor
 {
-    /// <summary>How long a frame heard on one of two ports waits for earlier frames of the other.</summary>
-    public static readonly TimeSpan ReorderWindow = TimeSpan.FromMilliseconds(20);
+    /// <summary>How long a frame heard on one of two ports waits for the other side's frame that the protocol puts first.</summary>
+    public static readonly TimeSpan ReorderWindow = TimeSpan.FromMilliseconds(50);
 
     private readonly bool _twoPorts;
     private readonly FrameAssembler[] _assemblers;
@@ -20,7 +21,7 @@ internal sealed class LineMonitor
     private readonly CaptureWriter? _capture;
     private readonly Action<MonitorEvent> _report;
     private readonly List<MonitoredFrame> _cut = new();
-    private readonly List<MonitoredFrame> _held = new();
+    private readonly Queue<MonitoredFrame>[] _waiting = [new(), new()];
     private readonly List<MonitorEvent> _events = new();
     private readonly long _window;
 
@@ -42,8 +43,12 @@ internal sealed class LineMonitor
         _assemblers[chunk.Source].Take(chunk, _cut);
         if (_twoPorts)
         {
-            _held.AddRange(_cut);
-            Release(chunk.Ticks - _window);
+            foreach (MonitoredFrame frame in _cut)
+            {
+                _waiting[frame.Source].Enqueue(frame);
+            }
+
+            Merge(chunk.Ticks);
         }
         else
         {
@@ -54,12 +59,12 @@ internal sealed class LineMonitor
         }
     }
 
-    /// <summary>Time has passed with no bytes: frames held for reordering that are old enough go on.</summary>
+    /// <summary>Time has passed with no bytes: frames that waited long enough go on.</summary>
     public void Tick(long now)
     {
         if (_twoPorts)
         {
-            Release(now - _window);
+            Merge(now);
         }
     }
 
@@ -72,30 +77,45 @@ internal sealed class LineMonitor
             assembler.Flush(now, _cut);
         }
 
-        _held.AddRange(_cut);
-        Release(long.MaxValue);
+        foreach (MonitoredFrame frame in _cut)
+        {
+            _waiting[frame.Source].Enqueue(frame);
+        }
+
+        Merge(long.MaxValue);
         _events.Clear();
         _pairer.Flush(_events);
         Report();
     }
 
-    private void Release(long before)
+    /// <summary>Pairs the waiting frames of the two ports in the order the protocol gives them.</summary>
+    private void Merge(long now)
     {
-        if (_held.Count == 0)
+        Queue<MonitoredFrame> host = _waiting[0];
+        Queue<MonitoredFrame> plc = _waiting[1];
+        while (host.Count > 0 || plc.Count > 0)
         {
-            return;
+            Queue<MonitoredFrame> next = _pairer.PlcSpeaksNext ? plc : host;
+            Queue<MonitoredFrame> other = ReferenceEquals(next, plc) ? host : plc;
+            if (next.Count > 0 && (other.Count == 0 || !Long(other.Peek(), next.Peek().FirstTicks)))
+            {
+                Pair(next.Dequeue());
+            }
+            else if (other.Count > 0 && (next.Count > 0 || Long(other.Peek(), now)))
+            {
+                // The side that should speak has been silent too long (no answer; an answer nobody asked for), or its
+                // frame came a whole window after this one: this one goes first.
+                Pair(other.Dequeue());
+            }
+            else
+            {
+                return;
+            }
         }
-
-        _held.Sort(static (a, b) => a.LastTicks.CompareTo(b.LastTicks));
-        int released = 0;
-        while (released < _held.Count && _held[released].LastTicks <= before)
-        {
-            Pair(_held[released]);
-            released++;
-        }
-
-        _held.RemoveRange(0, released);
     }
+
+    /// <summary>Whether <paramref name="frame"/> ended a whole reorder window before <paramref name="time"/>.</summary>
+    private bool Long(MonitoredFrame frame, long time) => time - frame.LastTicks > _window;
 
     private void Pair(MonitoredFrame frame)
     {

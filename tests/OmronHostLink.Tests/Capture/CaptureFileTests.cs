@@ -62,7 +62,7 @@ public sealed class CaptureFileTests : IDisposable
         {
             writer.Write(t0, LineDirection.ToPlc, Command);
             writer.Write(t0.AddMilliseconds(3.5), LineDirection.FromPlc, Answer, CaptureFlags.None, TimeSpan.FromMilliseconds(2));
-            writer.Write(t0.AddMilliseconds(9), LineDirection.Unknown, "\x8F\x00"u8, CaptureFlags.NotFramed | CaptureFlags.LineError);
+            writer.Write(t0.AddMilliseconds(9), LineDirection.Unknown, [0x8F, 0x00], CaptureFlags.NotFramed | CaptureFlags.LineError);
         }
 
         IReadOnlyList<CapturedFrame> frames = CaptureReader.Read(path);
@@ -119,7 +119,7 @@ public sealed class CaptureFileTests : IDisposable
         using (CaptureWriter writer = CaptureWriter.Create(path))
         {
             writer.Write(t0, LineDirection.ToPlc, Command);
-            writer.Write(t0, LineDirection.FromPlc, "\x8F\r"u8, CaptureFlags.NotFramed);
+            writer.Write(t0, LineDirection.FromPlc, [0x8F, 0x0D], CaptureFlags.NotFramed);
         }
 
         string[] lines = File.ReadAllLines(path);

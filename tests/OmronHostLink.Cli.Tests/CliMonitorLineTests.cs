@@ -1,0 +1,188 @@
+using System.Diagnostics;
+using System.Globalization;
+using System.Text.Json;
+using OmronHostLink.Cli;
+using OmronHostLink.Simulator;
+using OmronHostLink.Simulator.Hosting;
+using OmronHostLink.Transports;
+
+namespace OmronHostLink.Cli.Tests;
+
+/// <summary>
+/// <c>monitor-line</c> on real pseudo-terminals: a client and the simulator talk over a line kept saturated at 115200
+/// bps, and the monitor, listening on the line's tap, must record every frame the simulator logged, pair each command with
+/// its answer, and time each answer within a millisecond of the simulator's own timestamps.
+/// </summary>
+/// <remarks>
+/// The session lasts <c>HOSTLINK_MONITOR_LINE_SECONDS</c> seconds (default 15); the acceptance run is 600
+/// (docs/field-diagnosis.md).
+/// </remarks>
+[Collection(TimingCollection.Name)]
+public sealed class CliMonitorLineTests : IDisposable
+{
+    private const int Baud = 115200;
+    private static readonly string[] LineSettings = ["--baud", "115200", "--data-bits", "8", "--parity", "none", "--stop-bits", "1"];
+
+    private readonly string _dir = Directory.CreateTempSubdirectory("ohl-monitor-").FullName;
+
+    public void Dispose() => Directory.Delete(_dir, recursive: true);
+
+    /// <summary>How long the saturated session runs.</summary>
+    public static TimeSpan SessionLength
+        => TimeSpan.FromSeconds(int.TryParse(Environment.GetEnvironmentVariable("HOSTLINK_MONITOR_LINE_SECONDS"), NumberStyles.None, CultureInfo.InvariantCulture, out int s) && s > 0 ? s : 15);
+
+    [Fact]
+    [Trait("Category", "Slow")]
+    public async Task On_one_port_every_frame_of_a_saturated_line_is_recorded_paired_and_timed_within_a_millisecond()
+    {
+        await using TappedSerialLine line = await TappedSerialLine.StartAsync(Baud, 10);
+
+        Result result = await MonitorSessionAsync(line, ["--port", line.TapPort!], SessionLength);
+
+        result.Check();
+    }
+
+    [Fact]
+    [Trait("Category", "Slow")]
+    public async Task On_two_ports_every_frame_is_recorded_and_paired()
+    {
+        await using TappedSerialLine line = await TappedSerialLine.StartAsync(Baud, 10, bothDirections: false, eachDirection: true);
+
+        Result result = await MonitorSessionAsync(line, ["--host-port", line.HostTapPort!, "--plc-port", line.PlcTapPort!], TimeSpan.FromSeconds(5));
+
+        result.Check();
+    }
+
+    /// <summary>Runs the monitor on the line's tap while a client keeps the line busy, then gathers what each side recorded.</summary>
+    private async Task<Result> MonitorSessionAsync(TappedSerialLine line, string[] where, TimeSpan length)
+    {
+        var log = new SimulatorFrameLog();
+        var plc = new VirtualPlc(new VirtualPlcOptions { FrameLog = log, BaudRate = Baud, BitsPerCharacter = 10 });
+        for (int i = 0; i < 100; i++)
+        {
+            plc.WriteWord(PlcArea.Dm, 100 + i, (ushort)(i * 31));
+        }
+
+        // The PLC's end is the line itself (see TappedSerialLine), so the simulator's timestamps are when bytes crossed it.
+        await using var host = new SerialSimulatorHost(plc, () => line.PlcStream);
+        await host.StartAsync();
+
+        // The monitor runs as a user runs it, a process of its own: its timestamps owe nothing to this process's
+        // collections of the client's and the simulator's garbage.
+        string capture = Path.Combine(_dir, "monitor.pcap");
+        await using HostlinkProcess monitor = HostlinkProcess.Start(["monitor-line", .. where, .. LineSettings, "--json", "--summary-every", "0", "--capture", capture]);
+        await monitor.ExpectOutputAsync("Listening", TimeSpan.FromSeconds(30), onStandardError: true);
+
+        var settings = new SerialLineSettings { PortName = line.HostPort, BaudRate = Baud, DataBits = 8, Parity = SerialParity.None, StopBits = SerialStopBits.One };
+        long exchanges = 0;
+        await using (HostLinkClient client = HostLinkClient.ForSerialPort(settings, new HostLinkClientOptions { TurnaroundAllowance = Allowances.LosslessLine }))
+        {
+            HostLinkUnit fins = client.Unit(0, HostLinkCommandSet.Fins);
+            ushort[] block = Enumerable.Range(0, 40).Select(i => (ushort)(i + 7)).ToArray();
+            var clock = Stopwatch.StartNew();
+            while (clock.Elapsed < length)
+            {
+                // One word, a divided answer (60 words: two frames), a divided command (40 words), status, TS, FINS.
+                (await client.ReadWordsAsync("D100", 1)).Should().Equal(0);
+                (await client.ReadWordsAsync("D100", 60))[59].Should().Be(59 * 31);
+                await client.WriteWordsAsync("D300", block);
+                await client.ReadStatusAsync();
+                await client.TestAsync("SATURATED");
+                (await fins.ReadWordsAsync("D101", 2)).Should().Equal(31, 62);
+                exchanges += 6;
+            }
+        }
+
+        long logged = log.Count;
+        (await WaitUntilAsync(() => FramesIn(monitor.Out) >= logged, TimeSpan.FromSeconds(30))).Should().BeTrue("the monitor hears the last frames within seconds: {0}", monitor.Err);
+        (await monitor.StopAsync(TimeSpan.FromSeconds(10))).Should().BeTrue("the monitor stops cleanly on SIGTERM");
+        await host.StopAsync();
+        string[] documents = monitor.Out.Split('\n', StringSplitOptions.RemoveEmptyEntries);
+        return new Result(monitor.ExitCode, monitor.Err, documents, capture, log.Frames, exchanges);
+    }
+
+    private static long FramesIn(string output)
+    {
+        long frames = 0;
+        foreach (string line in output.Split('\n', StringSplitOptions.RemoveEmptyEntries))
+        {
+            if (line.Contains("\"command\":[", StringComparison.Ordinal))
+            {
+                using JsonDocument doc = JsonDocument.Parse(line);
+                frames += doc.RootElement.GetProperty("command").GetArrayLength() + doc.RootElement.GetProperty("answer").GetArrayLength();
+            }
+        }
+
+        return frames;
+    }
+
+    private static async Task<bool> WaitUntilAsync(Func<bool> condition, TimeSpan timeout)
+    {
+        var clock = Stopwatch.StartNew();
+        while (!condition())
+        {
+            if (clock.Elapsed > timeout)
+            {
+                return false;
+            }
+
+            await Task.Delay(250);
+        }
+
+        return true;
+    }
+
+    /// <summary>What the simulator logged and what the monitor printed and captured.</summary>
+    private sealed record Result(int Exit, string Errors, string[] Output, string CapturePath, IReadOnlyList<SimulatorFrame> Logged, long Exchanges)
+    {
+        public void Check()
+        {
+            Exit.Should().Be(0, Errors);
+            List<JsonElement> documents = Output.Select(l => JsonDocument.Parse(l).RootElement.Clone()).ToList();
+            List<JsonElement> exchanges = documents.Where(d => d.TryGetProperty("command", out _)).ToList();
+            documents.Where(d => d.TryGetProperty("stray", out _) || d.TryGetProperty("noise", out _)).Should().BeEmpty("every byte on the line belongs to an exchange");
+
+            // The simulator's log cut into exchanges: a frame from the host that starts with '@' starts one.
+            var expected = new List<(List<SimulatorFrame> Command, List<SimulatorFrame> Answer)>();
+            foreach (SimulatorFrame f in Logged)
+            {
+                if (f.FromHost && f.Bytes.Span[0] == (byte)'@')
+                {
+                    expected.Add((new List<SimulatorFrame>(), new List<SimulatorFrame>()));
+                }
+
+                (f.FromHost ? expected[^1].Command : expected[^1].Answer).Add(f);
+            }
+
+            expected.Should().HaveCount((int)Exchanges, "the client made that many exchanges");
+            long monitored = exchanges.Sum(x => x.GetProperty("command").GetArrayLength() + x.GetProperty("answer").GetArrayLength());
+            monitored.Should().Be(Logged.Count, "the monitor records every frame the simulator logged");
+            exchanges.Should().HaveCount(expected.Count);
+
+            IReadOnlyList<Capture.CapturedFrame> captured = Capture.CaptureReader.Read(CapturePath);
+            captured.Should().HaveCount(Logged.Count, "the capture holds every frame too");
+            captured.Select(c => c.Direction == Capture.LineDirection.ToPlc).Should().Equal(Logged.Select(f => f.FromHost));
+
+            var differences = new List<(double Ms, string What)>();
+            for (int i = 0; i < expected.Count; i++)
+            {
+                JsonElement x = exchanges[i];
+                (List<SimulatorFrame> command, List<SimulatorFrame> answer) = expected[i];
+                x.GetProperty("command").EnumerateArray().Select(e => e.GetString()).Should().Equal(command.Select(f => f.Text), "exchange {0}'s command", i);
+                x.GetProperty("answer").EnumerateArray().Select(e => e.GetString()).Should().Equal(answer.Select(f => f.Text), "exchange {0}'s answer", i);
+                x.GetProperty("status").GetString().Should().Be("ok", "exchange {0}", i);
+
+                SimulatorFrame first = answer.First(f => f.Bytes.Span[0] == (byte)'@');
+                SimulatorFrame lastCommand = command.Where(f => f.Time <= first.FirstByteTime).OrderBy(f => f.Time).Last();
+                TimeSpan simulator = first.FirstByteTime - lastCommand.Time;
+                var heard = TimeSpan.FromMilliseconds(x.GetProperty("latencyMs").GetDouble());
+                differences.Add(((heard - simulator).TotalMilliseconds, $"exchange {i} ({x.GetProperty("header").GetString()}): the monitor heard {heard.TotalMilliseconds:0.000} ms, the simulator logged {simulator.TotalMilliseconds:0.000} ms"));
+            }
+
+            double[] sorted = differences.Select(d => Math.Abs(d.Ms)).Order().ToArray();
+            Console.WriteLine($"monitor-line: {expected.Count} exchanges, {Logged.Count} frames; |monitor - simulator| latency: median {sorted[sorted.Length / 2]:0.000} ms, 99th percentile {sorted[(int)(sorted.Length * 0.99)]:0.000} ms, worst {sorted[^1]:0.000} ms, over 1 ms: {sorted.Count(d => d > 1)}");
+            differences.Where(d => Math.Abs(d.Ms) > 1).Select(d => d.What).Should().BeEmpty("every answer latency the monitor heard is within 1 ms of the simulator's own");
+
+        }
+    }
+}
