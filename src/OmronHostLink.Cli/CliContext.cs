@@ -92,6 +92,7 @@ internal sealed class CliContext
     {
         string message = e switch
         {
+            HostLinkEndCodeException { EndCode: EndCode.NotExecutableInRunMode } => e.Message.Trim().TrimEnd('.') + ". A CS/CJ takes C-mode writes in PROGRAM or MONITOR mode only; MONITOR keeps its program running: switch with 'hostlink mode monitor --yes' and the same --port or --tcp, or write with --fins.",
             UsageException => e.Message,
             ArgumentException => Addresses.InCliWords(Addresses.FirstSentence(e.Message)),
             NotSupportedException => Addresses.InCliWords(e.Message), // the model lacks what was asked for

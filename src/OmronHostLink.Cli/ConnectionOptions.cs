@@ -48,6 +48,7 @@ internal sealed class ConnectionOptions
         Retries = OptionValues.OptionalInteger("--retries", $"Times a read is repeated after a timeout or damaged frame, 0-{SettingRules.MaxRetries} (writes are never repeated).", int.MinValue, int.MaxValue, "n");
         Fins = new Option<bool>("--fins") { Description = "Use FINS over Host Link (FA) where C-mode would otherwise be used: reads, writes, bit writes, status and mode." };
         CompatibleMode = OptionValues.OptionalChoice("--compatible-mode", "The Host Link-compatible device mode the PLC's Serial Communications Unit is set to (A: CS/CJ/C, B: CVM1/CV, C: C200H, D: C500/C120): each answer frame is checked to be framed as that mode frames it. Default: any framing.", "a|b|c|d", "a", "b", "c", "d");
+        Trace = new Option<string?>("--trace") { Description = "Write every frame sent and received, with its time and direction, to this file: a pcap for Wireshark (tools/wireshark/omron-hostlink.lua), or JSON lines for a name ending in .jsonl.", HelpName = "file" };
         LocalEcho = new Option<bool>("--local-echo") { Description = "The line echoes what is sent (a 2-wire RS-485 adapter without echo suppression; 'hostlink detect' tells): read our own frames back before each answer." };
         Model = new Option<string?>("--model") { Description = "The PLC model addresses and commands are checked against before anything is sent (CPM1A, CP1E-E, C200HS, CS1, ...: see 'hostlink model --list'), or auto to ask the PLC (MM).", HelpName = "name" };
     }
@@ -84,6 +85,8 @@ internal sealed class ConnectionOptions
 
     public Option<bool> LocalEcho { get; }
 
+    public Option<string?> Trace { get; }
+
     /// <summary>How 32- and 64-bit values lie in two or four words: Omron's own layout, low word first.</summary>
     public WordOrder WordOrder => WordOrder.LowWordFirst;
 
@@ -106,6 +109,7 @@ internal sealed class ConnectionOptions
         command.Add(Model);
         command.Add(CompatibleMode);
         command.Add(LocalEcho);
+        command.Add(Trace);
         command.Validators.Add(Validate);
     }
 
@@ -177,7 +181,21 @@ internal sealed class ConnectionOptions
             throw new UsageException(problem);
         }
 
-        HostLinkClient client = settings.CreateClient(configure);
+        string? trace = parse.GetValue(Trace);
+        HostLinkClient client;
+        try
+        {
+            client = settings.CreateClient(trace is null ? configure : o =>
+            {
+                configure?.Invoke(o);
+                o.TraceFile = trace;
+            });
+        }
+        catch (ArgumentException e) when (e.ParamName == nameof(HostLinkClientOptions.TraceFile))
+        {
+            throw new UsageException($"--trace: cannot create '{trace}': {e.InnerException?.Message ?? e.Message}", e);
+        }
+
         if (output.Verbose)
         {
             client.FrameObserver = output.FrameTrace();

@@ -156,6 +156,13 @@ internal sealed class ExchangePairer
             return true;
         }
 
+        if (!frame.Check.FcsMatches)
+        {
+            // A damaged frame where an answer is due is the answer, damaged (its unit or header may be what the damage
+            // hit): a host sends its next command only after its own deadline, and sends it sound.
+            return !frame.Bytes.AsSpan().SequenceEqual(open.CommandFrames[0].Bytes);
+        }
+
         if (frame.Unit != open.Unit)
         {
             return false;
@@ -170,12 +177,6 @@ internal sealed class ExchangePairer
         if (header != open.Header || frame.Check.FcsAt < 5)
         {
             return false;
-        }
-
-        if (!frame.Check.FcsMatches)
-        {
-            // A damaged frame of the same unit and header where an answer is due: the answer, damaged.
-            return !frame.Bytes.AsSpan().SequenceEqual(open.CommandFrames[0].Bytes);
         }
 
         ReadOnlySpan<byte> text = frame.Bytes.AsSpan(5, frame.Check.FcsAt - 5);
