@@ -7,6 +7,7 @@ using OmronHostLink.Benchmarks.Scale;
 // dotnet run -c Release --project tests/OmronHostLink.Benchmarks -- serial [--rounds N] [--reads N]
 // dotnet run -c Release --project tests/OmronHostLink.Benchmarks -- scale [--links 1,10,50,100] [--seconds 60] [--tags 10]
 // dotnet run -c Release --project tests/OmronHostLink.Benchmarks -- demotion [--units 8] [--interval 1s] [--window 60s] [--set Demotion:After=3]
+// dotnet run -c Release --project tests/OmronHostLink.Benchmarks -- monitor [--rounds 20000]
 // dotnet run -c Release --project tests/OmronHostLink.Benchmarks -- --filter '*'
 if (args.Length > 0 && args[0] == "wire")
 {
@@ -21,6 +22,11 @@ if (args.Length > 0 && args[0] == "serial")
 if (args.Length > 0 && args[0] == "scale")
 {
     return await ScaleBenchmark.RunAsync(args[1..]);
+}
+
+if (args.Length > 0 && args[0] == "monitor")
+{
+    return await MonitorThroughput.RunAsync(args[1..]);
 }
 
 if (args.Length > 0 && args[0] == "demotion")

@@ -14,8 +14,9 @@ namespace OmronHostLink.Cli.Tests;
 /// its answer, and time each answer within a millisecond of the simulator's own timestamps.
 /// </summary>
 /// <remarks>
-/// The session lasts <c>HOSTLINK_MONITOR_LINE_SECONDS</c> seconds (default 15); the acceptance run is 600
-/// (docs/field-diagnosis.md).
+/// The session lasts <c>HOSTLINK_MONITOR_LINE_SECONDS</c> seconds (default 15) after a 2-second warm-up; the
+/// acceptance run is 600 (docs/field-diagnosis.md). The monitor runs as its own process, as a user runs it; socat and
+/// the line's relay run with real-time scheduling where Linux allows it, as the monitor's reader does.
 /// </remarks>
 [Collection(TimingCollection.Name)]
 public sealed class CliMonitorLineTests : IDisposable
@@ -27,7 +28,14 @@ public sealed class CliMonitorLineTests : IDisposable
 
     public void Dispose() => Directory.Delete(_dir, recursive: true);
 
-    /// <summary>How long the saturated session runs.</summary>
+    /// <summary>
+    /// The first exchanges of a session, whose latencies are not compared: the first time each path runs (the monitor's
+    /// reader, the simulator's answer) it is compiled, which holds one side back by milliseconds. Their frames are
+    /// counted and paired like the others.
+    /// </summary>
+    private static readonly TimeSpan WarmUp = TimeSpan.FromSeconds(2);
+
+    /// <summary>How long the saturated session runs (after the warm-up).</summary>
     public static TimeSpan SessionLength
         => TimeSpan.FromSeconds(int.TryParse(Environment.GetEnvironmentVariable("HOSTLINK_MONITOR_LINE_SECONDS"), NumberStyles.None, CultureInfo.InvariantCulture, out int s) && s > 0 ? s : 15);
 
@@ -75,13 +83,19 @@ public sealed class CliMonitorLineTests : IDisposable
 
         var settings = new SerialLineSettings { PortName = line.HostPort, BaudRate = Baud, DataBits = 8, Parity = SerialParity.None, StopBits = SerialStopBits.One };
         long exchanges = 0;
+        long warmUp = 0;
         await using (HostLinkClient client = HostLinkClient.ForSerialPort(settings, new HostLinkClientOptions { TurnaroundAllowance = Allowances.LosslessLine }))
         {
             HostLinkUnit fins = client.Unit(0, HostLinkCommandSet.Fins);
             ushort[] block = Enumerable.Range(0, 40).Select(i => (ushort)(i + 7)).ToArray();
             var clock = Stopwatch.StartNew();
-            while (clock.Elapsed < length)
+            while (clock.Elapsed < length + WarmUp)
             {
+                if (clock.Elapsed < WarmUp)
+                {
+                    warmUp = exchanges + 6;
+                }
+
                 // One word, a divided answer (60 words: two frames), a divided command (40 words), status, TS, FINS.
                 (await client.ReadWordsAsync("D100", 1)).Should().Equal(0);
                 (await client.ReadWordsAsync("D100", 60))[59].Should().Be(59 * 31);
@@ -98,7 +112,7 @@ public sealed class CliMonitorLineTests : IDisposable
         (await monitor.StopAsync(TimeSpan.FromSeconds(10))).Should().BeTrue("the monitor stops cleanly on SIGTERM");
         await host.StopAsync();
         string[] documents = monitor.Out.Split('\n', StringSplitOptions.RemoveEmptyEntries);
-        return new Result(monitor.ExitCode, monitor.Err, documents, capture, log.Frames, exchanges);
+        return new Result(monitor.ExitCode, monitor.Err, documents, capture, log.Frames, exchanges, warmUp);
     }
 
     private static long FramesIn(string output)
@@ -133,7 +147,7 @@ public sealed class CliMonitorLineTests : IDisposable
     }
 
     /// <summary>What the simulator logged and what the monitor printed and captured.</summary>
-    private sealed record Result(int Exit, string Errors, string[] Output, string CapturePath, IReadOnlyList<SimulatorFrame> Logged, long Exchanges)
+    private sealed record Result(int Exit, string Errors, string[] Output, string CapturePath, IReadOnlyList<SimulatorFrame> Logged, long Exchanges, long WarmUp)
     {
         public void Check()
         {
@@ -176,11 +190,16 @@ public sealed class CliMonitorLineTests : IDisposable
                 SimulatorFrame lastCommand = command.Where(f => f.Time <= first.FirstByteTime).OrderBy(f => f.Time).Last();
                 TimeSpan simulator = first.FirstByteTime - lastCommand.Time;
                 var heard = TimeSpan.FromMilliseconds(x.GetProperty("latencyMs").GetDouble());
+                if (i < WarmUp)
+                {
+                    continue;
+                }
+
                 differences.Add(((heard - simulator).TotalMilliseconds, $"exchange {i} ({x.GetProperty("header").GetString()}): the monitor heard {heard.TotalMilliseconds:0.000} ms, the simulator logged {simulator.TotalMilliseconds:0.000} ms"));
             }
 
             double[] sorted = differences.Select(d => Math.Abs(d.Ms)).Order().ToArray();
-            Console.WriteLine($"monitor-line: {expected.Count} exchanges, {Logged.Count} frames; |monitor - simulator| latency: median {sorted[sorted.Length / 2]:0.000} ms, 99th percentile {sorted[(int)(sorted.Length * 0.99)]:0.000} ms, worst {sorted[^1]:0.000} ms, over 1 ms: {sorted.Count(d => d > 1)}");
+            Console.WriteLine($"monitor-line: {expected.Count} exchanges, {Logged.Count} frames; after {WarmUp} warm-up exchanges, |monitor - simulator| latency: median {sorted[sorted.Length / 2]:0.000} ms, 99th percentile {sorted[(int)(sorted.Length * 0.99)]:0.000} ms, worst {sorted[^1]:0.000} ms, over 1 ms: {sorted.Count(d => d > 1)}");
             differences.Where(d => Math.Abs(d.Ms) > 1).Select(d => d.What).Should().BeEmpty("every answer latency the monitor heard is within 1 ms of the simulator's own");
 
         }

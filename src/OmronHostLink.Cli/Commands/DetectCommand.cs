@@ -88,7 +88,7 @@ internal static class DetectCommand
             var detector = new LineDetector(open, where, turnaround);
             output.Note(overTcp
                 ? $"Looking for units on {where} (a serial-device server: its serial settings are its own; TS to {UnitWords(searchList)})..."
-                : $"Looking for the settings of {where}: TS to {UnitWords(searchList)} at {candidates.Count} speed and format{(candidates.Count == 1 ? "" : "s")}, {first.BaudRate} {first.Item2} first, then the fastest...");
+                : $"Looking for the settings of {where}: TS to {UnitWords(searchList)} at {candidates.Count} setting{(candidates.Count == 1 ? "" : "s")}, {first.BaudRate} {first.Item2} first, then the fastest...");
             LineDetector.Outcome outcome = await detector.SearchAsync(candidates, searchList, t => Report(output, t), ct).ConfigureAwait(false);
             List<string> diagnosis = LineDiagnosis.Describe(outcome, first, searchList, overTcp);
 
@@ -254,7 +254,7 @@ internal static class DetectCommand
         ProbeReply r = t.Reply;
         if (r.Silent)
         {
-            return $"silence ({Milliseconds(t.Elapsed)})";
+            return $"silence ({Milliseconds(t.Elapsed)}){(t.Confirming ? ": the copy before was the PLC's answer, not an echo" : "")}";
         }
 
         var parts = new List<string>();
@@ -423,7 +423,15 @@ internal static class DetectCommand
     }
 
     private static string UnitWords(IReadOnlyList<int> units)
-        => units.Count == 1 ? $"unit {units[0]:D2}" : $"{units.Count} unit numbers ({string.Join(",", units.Select(u => u.ToString("D2", CultureInfo.InvariantCulture)))})";
+    {
+        if (units.Count == 1)
+        {
+            return $"unit {units[0]:D2}";
+        }
+
+        bool run = units.Zip(units.Skip(1)).All(p => p.Second == p.First + 1);
+        return run ? $"units {units[0]:D2}-{units[^1]:D2}" : $"units {string.Join(",", units.Select(u => u.ToString("D2", CultureInfo.InvariantCulture)))}";
+    }
 
     private static string Milliseconds(TimeSpan t) => t.TotalMilliseconds.ToString("0.0", CultureInfo.InvariantCulture) + " ms";
 }

@@ -142,12 +142,16 @@ internal static class MonitorLineCommand
                 {
                     // Ctrl+C: the counts so far, and a clean exit.
                 }
+                catch (HostLinkConnectionException)
+                {
+                    // A port was lost: what was heard until then is reported before the loss is.
+                }
 
                 monitor.Flush(Stopwatch.GetTimestamp());
                 Summary(output, stats, Stopwatch.GetElapsedTime(started), final: true);
                 if (taps.FirstOrDefault(t => t.Failure is not null) is { } failed)
                 {
-                    throw new HostLinkConnectionException($"Lost {failed.Description}: {failed.Failure!.Message}", failed.Failure);
+                    throw new HostLinkConnectionException($"Lost {failed.Description}: {failed.Failure!.Message.TrimEnd('.')}.", failed.Failure);
                 }
             }
             finally
@@ -211,7 +215,7 @@ internal static class MonitorLineCommand
     /// <summary><c>09:14:02.118421  unit 00  RD  00      2.951 ms  ok</c>.</summary>
     internal static string Human(MonitorClock clock, MonitoredExchange x)
     {
-        string unit = x.Unit < 0 ? "??" : x.Unit.ToString("D2", CultureInfo.InvariantCulture);
+        string unit = x.Unit >= 0 ? x.Unit.ToString("D2", CultureInfo.InvariantCulture) : x.Header == "**" ? "--" : "??";
         string latency = x.Latency is { } l ? $"{MonitoredExchange.Milliseconds(l),9} ms" : new string(' ', 12);
         int frames = x.CommandFrames.Count + x.AnswerFrames.Count;
         string what = x.Status switch

@@ -44,11 +44,18 @@ internal sealed class LineDetector
     {
         var clock = Stopwatch.StartNew();
         var tries = new List<ProbeTry>();
+        var confirmed = new HashSet<(int Baud, int DataBits, Transports.SerialParity Parity, int Unit)>();
         bool? echo = null;
         foreach ((int baud, LineFormat format) in candidates)
         {
             foreach (int unit in units)
             {
+                if (confirmed.Contains((baud, format.DataBits, format.Parity, unit)))
+                {
+                    // Tried already, to learn that the line echoes: only the echo came back there.
+                    continue;
+                }
+
                 ProbeTry probe = await TryAsync(baud, format, unit, echo, confirming: false, cancellationToken).ConfigureAwait(false);
                 tries.Add(probe);
                 report(probe);
@@ -66,6 +73,7 @@ internal sealed class LineDetector
                     ProbeTry check = await TryAsync(baud, contrast, unit, echo, confirming: true, cancellationToken).ConfigureAwait(false);
                     tries.Add(check);
                     report(check);
+                    confirmed.Add((baud, contrast.DataBits, contrast.Parity, unit));
                     if (check.Reply.Copies == 0)
                     {
                         return new Outcome(tries, probe, false, clock.Elapsed);

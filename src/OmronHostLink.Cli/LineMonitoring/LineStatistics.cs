@@ -46,7 +46,7 @@ internal sealed class LineStatistics
         foreach ((int unit, UnitCounts c) in _units)
         {
             string latency = c.Answered == 0 ? "" : $"; latency mean {MonitoredExchange.Milliseconds(c.Mean)} ms, max {MonitoredExchange.Milliseconds(c.Max)} ms";
-            yield return $"  unit {(unit < 0 ? "??" : unit.ToString("D2", CultureInfo.InvariantCulture))}: {c.Exchanges} exchanges, {c.Ok} ok, {c.EndCodes} with an error end code, {c.Unanswered} unanswered, {c.Damaged} damaged{latency}";
+            yield return $"  {(unit < 0 ? "no unit (@**, or a unit number damaged beyond reading)" : "unit " + unit.ToString("D2", CultureInfo.InvariantCulture))}: {c.Exchanges} exchanges, {c.Ok} ok, {c.EndCodes} with an error end code, {c.Unanswered} unanswered, {c.Damaged} damaged{latency}";
         }
     }
 

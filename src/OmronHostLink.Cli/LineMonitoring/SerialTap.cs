@@ -125,7 +125,7 @@ internal sealed class SerialTap : IDisposable
                 long ticks = System.Diagnostics.Stopwatch.GetTimestamp();
                 if (n <= 0)
                 {
-                    throw new IOException($"{Description} hung up: the device is gone, or the other end of a pseudo-terminal closed.");
+                    throw new IOException("the device hung up (it is gone, or the other end of a pseudo-terminal closed)");
                 }
 
                 Interlocked.Add(ref _bytes, n);
