@@ -196,59 +196,52 @@ local function reset_state()
     remembered = {}
 end
 
--- The FINS part of an FA frame: header fields, command code, and for an answer the response code and data.
-local function describe_fins(tree, text, answer)
-    -- text: the characters after "FA" and before the FCS.
-    if answer then
-        local code = text:sub(1, 2)
-        if code ~= "00" or #text < 4 then return end
-        local icf = text:sub(3, 4)
-        tree:add(pf.fins_icf, icf)
-        local at = 5
-        if tonumber(icf, 16) and tonumber(icf, 16) >= 0x80 then
-            at = at + 8 * 2   -- RSV GCT DNA DA1 DA2 SNA SA1 SA2
-        else
-            tree:add(pf.fins_da2, text:sub(at, at + 1))
-            tree:add(pf.fins_sa2, text:sub(at + 2, at + 3))
-            at = at + 4
-        end
-        tree:add(pf.fins_sid, text:sub(at, at + 1))
-        local command = text:sub(at + 2, at + 5)
-        tree:add(pf.fins_command, command)
-        if fins_commands[command] then tree:add(pf.fins_command_name, fins_commands[command]) end
-        local response = text:sub(at + 6, at + 9)
-        if #response == 4 and is_hex(response) then
-            local value = tonumber(response, 16)
-            local main = string.format("%02X", math.floor(value / 256) % 128)
-            local flags = {}
-            if value >= 0x8000 then flags[#flags + 1] = "network relay error" end
-            if math.floor(value / 128) % 2 == 1 then flags[#flags + 1] = "fatal CPU error" end
-            if math.floor(value / 64) % 2 == 1 then flags[#flags + 1] = "non-fatal CPU error" end
-            tree:add(pf.fins_response_code, response)
-            local meaning = fins_main_codes[main] or "Unknown main code"
-            if #flags > 0 then meaning = meaning .. " (" .. table.concat(flags, ", ") .. ")" end
-            tree:add(pf.fins_response_meaning, meaning)
-            if #text > at + 9 then tree:add(pf.fins_data, text:sub(at + 10)) end
-        end
-        return response
+-- The FINS header after the ICF at `at` (the ICF's bit 7 marks the network form, with RSV, GCT, DNA, DA1, DA2, SNA,
+-- SA1 and SA2; else DA2 and SA2 only), the SID and the command code; returns where the parameters (or, in an answer,
+-- the response code) start.
+local function fins_header(tree, text, at)
+    local icf = text:sub(at, at + 1)
+    tree:add(pf.fins_icf, icf)
+    at = at + 2
+    if tonumber(icf, 16) and tonumber(icf, 16) >= 0x80 then
+        at = at + 8 * 2
     else
-        tree:add(pf.fins_wait, text:sub(1, 1))
-        local icf = text:sub(2, 3)
-        tree:add(pf.fins_icf, icf)
-        local at = 4
-        if tonumber(icf, 16) and tonumber(icf, 16) >= 0x80 then
-            at = at + 8 * 2   -- RSV GCT DNA DA1 DA2 SNA SA1 SA2
-        else
-            tree:add(pf.fins_da2, text:sub(at, at + 1))
-            tree:add(pf.fins_sa2, text:sub(at + 2, at + 3))
-            at = at + 4
-        end
-        tree:add(pf.fins_sid, text:sub(at, at + 1))
-        local command = text:sub(at + 2, at + 5)
-        tree:add(pf.fins_command, command)
-        if fins_commands[command] then tree:add(pf.fins_command_name, fins_commands[command]) end
-        if #text > at + 5 then tree:add(pf.fins_data, text:sub(at + 6)) end
+        tree:add(pf.fins_da2, text:sub(at, at + 1))
+        tree:add(pf.fins_sa2, text:sub(at + 2, at + 3))
+        at = at + 4
     end
+    tree:add(pf.fins_sid, text:sub(at, at + 1))
+    local command = text:sub(at + 2, at + 5)
+    tree:add(pf.fins_command, command)
+    if fins_commands[command] then tree:add(pf.fins_command_name, fins_commands[command]) end
+    return at + 6
+end
+
+-- The FINS part of an FA frame (text: the characters after "FA" and before the FCS): a command's response wait and
+-- parameters, an answer's response code with its flags and data. Returns an answer's response code.
+local function describe_fins(tree, text, answer)
+    if not answer then
+        tree:add(pf.fins_wait, text:sub(1, 1))
+        local at = fins_header(tree, text, 2)
+        if #text >= at then tree:add(pf.fins_data, text:sub(at)) end
+        return nil
+    end
+    if text:sub(1, 2) ~= "00" or #text < 4 then return nil end
+    local at = fins_header(tree, text, 3)
+    local response = text:sub(at, at + 3)
+    if #response ~= 4 or not is_hex(response) then return nil end
+    local value = tonumber(response, 16)
+    local main = string.format("%02X", math.floor(value / 256) % 128)
+    local flags = {}
+    if value >= 0x8000 then flags[#flags + 1] = "network relay error" end
+    if math.floor(value / 128) % 2 == 1 then flags[#flags + 1] = "fatal CPU error" end
+    if math.floor(value / 64) % 2 == 1 then flags[#flags + 1] = "non-fatal CPU error" end
+    tree:add(pf.fins_response_code, response)
+    local meaning = fins_main_codes[main] or "Unknown main code"
+    if #flags > 0 then meaning = meaning .. " (" .. table.concat(flags, ", ") .. ")" end
+    tree:add(pf.fins_response_meaning, meaning)
+    if #text >= at + 4 then tree:add(pf.fins_data, text:sub(at + 4)) end
+    return response
 end
 
 -- Decodes one frame (bytes up to and including CR) in tvb range `range`; returns a short summary for the Info column.

@@ -19,20 +19,19 @@ internal static class DetectCommand
     public static Command Create(CliContext context)
     {
         var command = new Command("detect", "Find a serial line's speed, format and units: TS at the usual speeds (1200-115200) and formats (7E2, 8N1, 7O2, 8E1, 8O1, 7N2), the given settings first, then the fastest; MM names each unit that answers. Sends nothing else. Says in words what it found or why nothing answers, and prints the settings as flags and configuration.");
-        var line = new SerialLineSettings();
+        var line = new LineSettingsOptions("the settings tried first, the ones configured now");
         var port = new Option<string?>("--port") { Description = "Serial port: COM3, /dev/ttyUSB0, or any device path.", HelpName = "name" };
         var tcp = new Option<string?>("--tcp") { Description = "A serial-device server as host:port: its serial settings are its own configuration, so only the units are looked for (the line settings below set the deadlines).", HelpName = "host:port" };
-        Option<int?> baud = OptionValues.OptionalInteger("--baud", $"The speed tried first: the one configured now (default {line.BaudRate}).", int.MinValue, int.MaxValue, "n");
-        Option<int?> dataBits = OptionValues.OptionalInteger("--data-bits", $"Data bits of the format tried first (default {line.DataBits}).", int.MinValue, int.MaxValue, "7|8");
-        Option<string?> parity = OptionValues.OptionalChoice("--parity", "Parity of the format tried first (default even).", "none|even|odd", "none", "even", "odd");
-        Option<int?> stopBits = OptionValues.OptionalInteger("--stop-bits", $"Stop bits of the format tried first (default {(int)line.StopBits}).", int.MinValue, int.MaxValue, "1|2");
         var speeds = new Option<string?>("--speeds") { Description = $"Speeds to try, e.g. 9600,19200 (default {string.Join(",", Speeds)}).", HelpName = "list" };
         var formats = new Option<string?>("--formats") { Description = $"Formats to try, e.g. 7E2,8N1 (default {string.Join(",", LineFormat.Usual)}).", HelpName = "list" };
         var searchUnits = new Option<string>("--search-units") { Description = "Unit numbers the TS goes to at each setting while the settings are unknown: a PLC at another number stays silent at every setting (0-31 tries every number, 32 times slower).", DefaultValueFactory = _ => "0", HelpName = "list" };
         var units = new Option<string>("--units") { Description = $"Unit numbers to look for once the settings are found: 0-{SettingRules.MaxUnitNumber}, 0,1,5 or 0-3,7.", DefaultValueFactory = _ => $"0-{SettingRules.MaxUnitNumber}", HelpName = "list" };
         Option<TimeSpan?> timeout = Durations.Option("--timeout", "Time a unit may take to start answering a TS (its wire time is added); each try waits no longer.", TimeSpan.FromMilliseconds(100), TimeSpan.FromMilliseconds(1), TimeSpan.FromMinutes(1));
         Option<bool> json = CliContext.JsonOption();
-        foreach (Option o in new Option[] { port, tcp, baud, dataBits, parity, stopBits, speeds, formats, searchUnits, units, timeout, json })
+        command.Add(port);
+        command.Add(tcp);
+        line.AddTo(command);
+        foreach (Option o in new Option[] { speeds, formats, searchUnits, units, timeout, json })
         {
             command.Add(o);
         }
@@ -48,23 +47,7 @@ internal static class DetectCommand
                     : "Give either --port or --tcp, not both.");
             }
 
-            var given = new SerialLineSettings
-            {
-                PortName = portName ?? "tcp",
-                BaudRate = parse.GetValue(baud) ?? line.BaudRate,
-                DataBits = parse.GetValue(dataBits) ?? line.DataBits,
-                Parity = parse.GetValue(parity) switch { "none" => SerialParity.None, "odd" => SerialParity.Odd, "even" => SerialParity.Even, _ => line.Parity },
-                StopBits = parse.GetValue(stopBits) is { } sb ? (SerialStopBits)sb : line.StopBits,
-            };
-            try
-            {
-                given.Validate();
-            }
-            catch (ArgumentException e)
-            {
-                throw new UsageException(OptionValues.SerialMessage(e), e);
-            }
-
+            SerialLineSettings given = line.Settings(parse, portName ?? "tcp");
             IReadOnlyList<int> searchList = Numbers.ParseUnits(parse.GetValue(searchUnits)!, "--search-units");
             IReadOnlyList<int> unitList = Numbers.ParseUnits(parse.GetValue(units)!, "--units");
             TimeSpan turnaround = parse.GetValue(timeout) ?? TimeSpan.FromMilliseconds(100);

@@ -21,20 +21,20 @@ internal static class MonitorLineCommand
     public static Command Create(CliContext context)
     {
         var command = new Command("monitor-line", "Listen to a Host Link line without sending: on one port (a half-duplex RS-485 line) or two (--host-port and --plc-port, the receive taps of an RS-232 line). Shows each exchange (time, unit, command, end code, latency, FCS and framing errors) and counts per unit; --capture writes a pcap for Wireshark. Ctrl+C stops.");
-        var line = new SerialLineSettings();
+        var line = new LineSettingsOptions("the line");
         var port = new Option<string?>("--port") { Description = "The port that hears both directions (a half-duplex RS-485 line).", HelpName = "name" };
         var hostPort = new Option<string?>("--host-port") { Description = "With --plc-port: the port that hears the host (its TX line).", HelpName = "name" };
         var plcPort = new Option<string?>("--plc-port") { Description = "With --host-port: the port that hears the PLC (its TX line).", HelpName = "name" };
-        Option<int?> baud = OptionValues.OptionalInteger("--baud", $"Line speed (default {line.BaudRate}).", int.MinValue, int.MaxValue, "n");
-        Option<int?> dataBits = OptionValues.OptionalInteger("--data-bits", $"Data bits (default {line.DataBits}).", int.MinValue, int.MaxValue, "7|8");
-        Option<string?> parity = OptionValues.OptionalChoice("--parity", "Parity (default even).", "none|even|odd", "none", "even", "odd");
-        Option<int?> stopBits = OptionValues.OptionalInteger("--stop-bits", $"Stop bits (default {(int)line.StopBits}).", int.MinValue, int.MaxValue, "1|2");
         var capture = new Option<string?>("--capture") { Description = "Write every frame heard, with its time and direction, to this file: a pcap for Wireshark (tools/wireshark/omron-hostlink.lua), or JSON lines for a name ending in .jsonl.", HelpName = "file" };
         Option<TimeSpan?> duration = Durations.Option("--duration", "Stop after this long (default: until Ctrl+C).", null, TimeSpan.FromMilliseconds(1), TimeSpan.FromDays(365));
         Option<int?> count = OptionValues.OptionalInteger("--count", "Stop after this many exchanges.", 1, int.MaxValue, "n");
         Option<TimeSpan?> summaryEvery = Durations.Option("--summary-every", "Print the counts per unit this often (0: only at the end).", TimeSpan.FromSeconds(10), TimeSpan.Zero, TimeSpan.FromDays(1));
         Option<bool> json = CliContext.JsonOption("Print one JSON document per line: each exchange, stray frame and run of noise, and the counts.");
-        foreach (Option o in new Option[] { port, hostPort, plcPort, baud, dataBits, parity, stopBits, capture, duration, count, summaryEvery, json })
+        command.Add(port);
+        command.Add(hostPort);
+        command.Add(plcPort);
+        line.AddTo(command);
+        foreach (Option o in new Option[] { capture, duration, count, summaryEvery, json })
         {
             command.Add(o);
         }
@@ -51,30 +51,8 @@ internal static class MonitorLineCommand
                     : "Give either --port, or both --host-port and --plc-port.");
             }
 
-            SerialLineSettings Settings(string name)
-            {
-                var s = new SerialLineSettings
-                {
-                    PortName = name,
-                    BaudRate = parse.GetValue(baud) ?? line.BaudRate,
-                    DataBits = parse.GetValue(dataBits) ?? line.DataBits,
-                    Parity = parse.GetValue(parity) switch { "none" => SerialParity.None, "odd" => SerialParity.Odd, "even" => SerialParity.Even, _ => line.Parity },
-                    StopBits = parse.GetValue(stopBits) is { } sb ? (SerialStopBits)sb : line.StopBits,
-                };
-                try
-                {
-                    s.Validate();
-                }
-                catch (ArgumentException e)
-                {
-                    throw new UsageException(OptionValues.SerialMessage(e), e);
-                }
-
-                return s;
-            }
-
             string[] names = one is not null ? [one] : [host!, plc!];
-            SerialLineSettings[] settings = names.Select(Settings).ToArray();
+            SerialLineSettings[] settings = names.Select(n => line.Settings(parse, n)).ToArray();
             CaptureWriter? writer = null;
             if (parse.GetValue(capture) is { } file)
             {

@@ -1,6 +1,4 @@
-using System.Buffers;
 using System.Diagnostics;
-using System.IO.Pipelines;
 using OmronHostLink.Protocol;
 using OmronHostLink.Simulator.Faults;
 using OmronHostLink.Simulator.Protocol;
@@ -43,70 +41,21 @@ internal sealed class HostLinkSession
         _log = plcs[0].Options.FrameLog;
     }
 
-    public async Task RunAsync(Stream stream, CancellationToken cancellationToken)
-    {
-        ArgumentNullException.ThrowIfNull(stream);
-        PipeReader reader = PipeReader.Create(stream, new StreamPipeReaderOptions(leaveOpen: true));
-        try
-        {
-            while (true)
+    public Task RunAsync(Stream stream, CancellationToken cancellationToken)
+        => FrameLoop.RunAsync(
+            stream,
+            () => _exchange.ExpectsFirstFrame,
+            async (received, arrived) =>
             {
-                ReadResult result = await reader.ReadAsync(cancellationToken).ConfigureAwait(false);
-                DateTimeOffset arrived = _log is null ? default : DateTimeOffset.UtcNow;
-                ReadOnlySequence<byte> buffer = result.Buffer;
-                while (true)
+                _log?.Received(received, arrived);
+                LinkReply reply = _exchange.Receive(received);
+                if (reply.Bytes is not null)
                 {
-                    FrameScanResult scan = FrameReader.TryReadFrame(ref buffer, _exchange.ExpectsFirstFrame, out ReadOnlySequence<byte> frame, out _);
-                    if (scan == FrameScanResult.NeedMoreData)
-                    {
-                        break;
-                    }
-
-                    if (scan == FrameScanResult.Overflow)
-                    {
-                        // No CR within the reception buffer: a real unit discards it silently and starts over.
-                        _exchange.Reset();
-                        if (buffer.Length > FrameReader.MaxFrameLength)
-                        {
-                            buffer = buffer.Slice(buffer.End);
-                        }
-
-                        continue;
-                    }
-
-                    byte[] received = frame.ToArray();
-                    _log?.Received(received, arrived);
-                    LinkReply reply = _exchange.Receive(received);
-                    if (reply.Bytes is not null)
-                    {
-                        await SendAsync(stream, received, reply, cancellationToken).ConfigureAwait(false);
-                    }
+                    await SendAsync(stream, received, reply, cancellationToken).ConfigureAwait(false);
                 }
-
-                reader.AdvanceTo(buffer.Start, buffer.End);
-                if (result.IsCompleted || result.IsCanceled)
-                {
-                    return;
-                }
-            }
-        }
-        catch (OperationCanceledException) when (cancellationToken.IsCancellationRequested)
-        {
-            // The session was stopped.
-        }
-        catch (IOException)
-        {
-            // The line went away.
-        }
-        catch (ObjectDisposedException)
-        {
-            // The stream was closed under us.
-        }
-        finally
-        {
-            await reader.CompleteAsync().ConfigureAwait(false);
-        }
-    }
+            },
+            _exchange.Reset,
+            cancellationToken);
 
     private static readonly TimeSpan OneMillisecond = TimeSpan.FromMilliseconds(1);
 

@@ -1,5 +1,3 @@
-using System.Buffers;
-using System.IO.Pipelines;
 using OmronHostLink.Capture;
 using OmronHostLink.Protocol;
 using OmronHostLink.Protocol.CMode;
@@ -73,112 +71,11 @@ public sealed class CaptureReplay
     /// <param name="stream">The PLC's end of a line.</param>
     /// <param name="cancellationToken">Ends the session.</param>
     /// <returns>A task that completes when the session ends (never faulted by line errors or a closed stream).</returns>
-    public async Task RunAsync(Stream stream, CancellationToken cancellationToken = default)
+    public Task RunAsync(Stream stream, CancellationToken cancellationToken = default)
     {
         ArgumentNullException.ThrowIfNull(stream);
-        var pacer = new WirePacer(BaudRate, BitsPerCharacter);
-        PipeReader reader = PipeReader.Create(stream, new StreamPipeReaderOptions(leaveOpen: true));
-        var command = new List<byte[]>();
-        Queue<byte[]>? answer = null;
-        try
-        {
-            while (true)
-            {
-                ReadResult result = await reader.ReadAsync(cancellationToken).ConfigureAwait(false);
-                ReadOnlySequence<byte> buffer = result.Buffer;
-                while (true)
-                {
-                    bool idle = command.Count == 0 && answer is null;
-                    FrameScanResult scan = FrameReader.TryReadFrame(ref buffer, idle, out ReadOnlySequence<byte> read, out _);
-                    if (scan == FrameScanResult.NeedMoreData)
-                    {
-                        break;
-                    }
-
-                    if (scan == FrameScanResult.Overflow)
-                    {
-                        command.Clear();
-                        answer = null;
-                        continue;
-                    }
-
-                    byte[] frame = read.ToArray();
-                    bool first = frame[0] == (byte)'@';
-                    if (CModeFrames.IsInitialize(frame))
-                    {
-                        command.Clear();
-                        answer = null;
-                        continue;
-                    }
-
-                    if (answer is not null)
-                    {
-                        if (!first || !IsAbort(frame))
-                        {
-                            // The host's CR (or, as the manuals allow, another command) asks for the next frame.
-                            await pacer.WriteAsync(stream, answer.Dequeue(), cancellationToken).ConfigureAwait(false);
-                            if (answer.Count == 0)
-                            {
-                                answer = null;
-                            }
-
-                            continue;
-                        }
-
-                        answer = null;
-                        continue;
-                    }
-
-                    if (first)
-                    {
-                        command.Clear();
-                    }
-                    else if (command.Count == 0)
-                    {
-                        continue;
-                    }
-
-                    command.Add(frame);
-                    if (!FrameCheck.Of(frame).IsFinal)
-                    {
-                        await pacer.WriteAsync(stream, "\r"u8.ToArray(), cancellationToken).ConfigureAwait(false);
-                        continue;
-                    }
-
-                    byte[][]? reply = Answer(command);
-                    command.Clear();
-                    if (reply is null)
-                    {
-                        continue;
-                    }
-
-                    await pacer.WriteAsync(stream, reply[0], cancellationToken).ConfigureAwait(false);
-                    if (reply.Length > 1)
-                    {
-                        answer = new Queue<byte[]>(reply.Skip(1));
-                    }
-                }
-
-                reader.AdvanceTo(buffer.Start, buffer.End);
-                if (result.IsCompleted || result.IsCanceled)
-                {
-                    return;
-                }
-            }
-        }
-        catch (OperationCanceledException) when (cancellationToken.IsCancellationRequested)
-        {
-        }
-        catch (IOException)
-        {
-        }
-        catch (ObjectDisposedException)
-        {
-        }
-        finally
-        {
-            await reader.CompleteAsync().ConfigureAwait(false);
-        }
+        var session = new Session(this, stream, new WirePacer(BaudRate, BitsPerCharacter), cancellationToken);
+        return FrameLoop.RunAsync(stream, session.ExpectsFirstFrame, session.TakeAsync, session.Reset, cancellationToken);
     }
 
     /// <summary>The answer to <paramref name="command"/>: the next one recorded for it, an echo for TS, or null.</summary>
@@ -228,6 +125,78 @@ public sealed class CaptureReplay
         }
 
         return [first, .. answer.Skip(1)];
+    }
+
+    /// <summary>One session's state: a divided command being received, or a divided answer being sent.</summary>
+    private sealed class Session(CaptureReplay replay, Stream stream, WirePacer pacer, CancellationToken cancellationToken)
+    {
+        private readonly List<byte[]> _command = new();
+        private Queue<byte[]>? _answer;
+
+        public bool ExpectsFirstFrame() => _command.Count == 0 && _answer is null;
+
+        public void Reset()
+        {
+            _command.Clear();
+            _answer = null;
+        }
+
+        public async Task TakeAsync(byte[] frame, DateTimeOffset arrived)
+        {
+            bool first = frame[0] == (byte)'@';
+            if (CModeFrames.IsInitialize(frame))
+            {
+                Reset();
+                return;
+            }
+
+            if (_answer is not null)
+            {
+                if (first && IsAbort(frame))
+                {
+                    _answer = null;
+                    return;
+                }
+
+                // The host's CR (or, as the manuals allow, another command) asks for the next frame.
+                await pacer.WriteAsync(stream, _answer.Dequeue(), cancellationToken).ConfigureAwait(false);
+                if (_answer.Count == 0)
+                {
+                    _answer = null;
+                }
+
+                return;
+            }
+
+            if (first)
+            {
+                _command.Clear();
+            }
+            else if (_command.Count == 0)
+            {
+                return;
+            }
+
+            _command.Add(frame);
+            if (!FrameCheck.Of(frame).IsFinal)
+            {
+                await pacer.WriteAsync(stream, "\r"u8.ToArray(), cancellationToken).ConfigureAwait(false);
+                return;
+            }
+
+            byte[][]? reply = replay.Answer(_command);
+            _command.Clear();
+            if (reply is null)
+            {
+                return;
+            }
+
+            await pacer.WriteAsync(stream, reply[0], cancellationToken).ConfigureAwait(false);
+            if (reply.Length > 1)
+            {
+                _answer = new Queue<byte[]>(reply.Skip(1));
+            }
+        }
     }
 
     private static bool IsAbort(byte[] frame) => frame.Length >= 5 && CModeHeaders.Is(frame.AsSpan(3, 2), CModeHeaders.Abort);
