@@ -61,7 +61,7 @@ public sealed class CliCaptureTests : IDisposable
     {
         await using TappedSerialLine line = await TappedSerialLine.StartAsync(115200, 10);
         var log = new SimulatorFrameLog();
-        var plc = new VirtualPlc(new VirtualPlcOptions { FrameLog = log, BaudRate = 115200, BitsPerCharacter = 10, Faults = new FaultOptions { Corrupt = 0.2, Seed = 5 } });
+        var plc = new VirtualPlc(new VirtualPlcOptions { FrameLog = log, Faults = new FaultOptions { Corrupt = 0.2, Seed = 5 } });
         await using var host = new SerialSimulatorHost(plc, () => line.PlcStream);
         await host.StartAsync();
         string capture = Path.Combine(_dir, "monitor.pcap");

@@ -12,9 +12,8 @@ namespace OmronHostLink.Testing;
 /// the taps.
 /// </summary>
 /// <remarks>
-/// The host's bytes cross at the line's character rate (in batches about a millisecond apart, each holding what the
-/// line would have carried by then), so a host that keeps the line busy saturates it; the PLC paces its own answers (the
-/// simulator's wire-time emulation). Each side's bytes reach the taps before the other side: the other side may answer
+/// Both sides' bytes cross at the line's character rate (in batches about a millisecond apart, each holding what the
+/// line would have carried by then), so a host that keeps the line busy saturates it. Each side's bytes reach the taps before the other side: the other side may answer
 /// at once, and its answer must not reach a tap before what it answers. The PLC's end has no pty and no thread of its
 /// own: what the host sends is handed to the PLC on the relay's thread as it crosses, and what the PLC writes goes to the
 /// taps and the host in the write itself, so the times a simulator stamps on its frames are the times the bytes crossed.
@@ -30,6 +29,8 @@ public sealed class TappedSerialLine : IAsyncDisposable
     private readonly double _secondsPerCharacter;
     private readonly Thread _relay;
     private readonly Pipe _toPlc = new(new PipeOptions(readerScheduler: PipeScheduler.Inline, writerScheduler: PipeScheduler.Inline, useSynchronizationContext: false, pauseWriterThreshold: 0));
+    private readonly Stopwatch _plcClock = Stopwatch.StartNew();
+    private double _plcLineFreeAt;
     private long _bytesToPlc;
     private long _bytesToHost;
 
@@ -154,28 +155,13 @@ public sealed class TappedSerialLine : IAsyncDisposable
                     return;
                 }
 
-                // The first character goes out when the line is free, the others at the line's rate after it.
-                double start = Math.Max(clock.Elapsed.TotalSeconds, lineFreeAt);
-                int sent = 0;
-                while (sent < n)
+                Pace(buffer.AsSpan(0, n).ToArray(), clock, ref lineFreeAt, bytes =>
                 {
-                    double now = clock.Elapsed.TotalSeconds;
-                    int due = _secondsPerCharacter == 0 ? n : Math.Min(n, (int)((now - start) / _secondsPerCharacter) + 1);
-                    if (due > sent)
-                    {
-                        ReadOnlySpan<byte> bytes = buffer.AsSpan(sent, due - sent);
-                        Tap(bytes, _hostTapInner);
-                        Interlocked.Add(ref _bytesToPlc, bytes.Length);
-                        _toPlc.Writer.Write(bytes);
-                        _ = _toPlc.Writer.FlushAsync().AsTask().GetAwaiter().GetResult();
-                        sent = due;
-                        continue;
-                    }
-
-                    Thread.Sleep(1);
-                }
-
-                lineFreeAt = start + (n * _secondsPerCharacter);
+                    Tap(bytes, _hostTapInner);
+                    Interlocked.Add(ref _bytesToPlc, bytes.Length);
+                    _toPlc.Writer.Write(bytes);
+                    _ = _toPlc.Writer.FlushAsync().AsTask().GetAwaiter().GetResult();
+                });
             }
         }
         catch (Exception e) when (e is IOException or ObjectDisposedException or InvalidOperationException)
@@ -184,12 +170,41 @@ public sealed class TappedSerialLine : IAsyncDisposable
         }
     }
 
-    /// <summary>What the PLC writes: to the taps, then to the host.</summary>
-    private void FromPlc(ReadOnlySpan<byte> bytes)
+    /// <summary>What the PLC writes: at the line's pace, in the write itself, to the taps, then to the host.</summary>
+    private void FromPlc(ReadOnlySpan<byte> written)
     {
-        Tap(bytes, _plcTapInner);
-        Interlocked.Add(ref _bytesToHost, bytes.Length);
-        _hostInner.Write(bytes);
+        Pace(written.ToArray(), _plcClock, ref _plcLineFreeAt, bytes =>
+        {
+            Tap(bytes, _plcTapInner);
+            Interlocked.Add(ref _bytesToHost, bytes.Length);
+            _hostInner.Write(bytes);
+        });
+    }
+
+    /// <summary>
+    /// Hands <paramref name="bytes"/> on at the line's rate: the first character when the line is free, the others in
+    /// batches about a millisecond apart, each holding the characters the line would have carried by then.
+    /// </summary>
+    private void Pace(byte[] bytes, Stopwatch clock, ref double lineFreeAt, Action<byte[]> carry)
+    {
+        int n = bytes.Length;
+        double start = Math.Max(clock.Elapsed.TotalSeconds, lineFreeAt);
+        int sent = 0;
+        while (sent < n)
+        {
+            double now = clock.Elapsed.TotalSeconds;
+            int due = _secondsPerCharacter == 0 ? n : Math.Min(n, (int)((now - start) / _secondsPerCharacter) + 1);
+            if (due > sent)
+            {
+                carry(bytes[sent..due]);
+                sent = due;
+                continue;
+            }
+
+            Thread.Sleep(1);
+        }
+
+        lineFreeAt = start + (n * _secondsPerCharacter);
     }
 
     private void Tap(ReadOnlySpan<byte> bytes, FileStream? oneWayTap)

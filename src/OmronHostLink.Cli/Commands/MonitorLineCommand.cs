@@ -89,44 +89,30 @@ internal static class MonitorLineCommand
                     Write(output, clock, e);
                 });
                 long started = Stopwatch.GetTimestamp();
-                long nextSummary = every > TimeSpan.Zero ? started + Ticks(every) : long.MaxValue;
                 using var ticker = new Timer(_ => chunks.Writer.TryWrite(new TapChunk(-1, [], Stopwatch.GetTimestamp())), null, TickInterval, TickInterval);
-                try
+
+                // Pairing, capturing and printing run on a thread of their own, with the readers' scheduling (see
+                // RealTimeScheduling): a collection this work needs runs on it, and the readers wait for it to end.
+                var finished = new TaskCompletionSource(TaskCreationOptions.RunContinuationsAsynchronously);
+                var consumer = new Thread(() =>
                 {
-                    await foreach (TapChunk chunk in chunks.Reader.ReadAllAsync(ct).ConfigureAwait(false))
+                    try
                     {
-                        if (chunk.Source < 0)
-                        {
-                            monitor.Tick(chunk.Ticks);
-                        }
-                        else
-                        {
-                            monitor.Take(chunk);
-                        }
-
-                        if (chunk.Ticks >= nextSummary)
-                        {
-                            Summary(output, stats, Stopwatch.GetElapsedTime(started), final: false);
-                            nextSummary += Ticks(every);
-                        }
-
-                        if ((stopAfter is { } d && Stopwatch.GetElapsedTime(started) >= d) || (maxExchanges is { } max && stats.Exchanges >= max))
-                        {
-                            break;
-                        }
+                        RealTimeScheduling.TryRaiseThisThread();
+                        Consume(chunks.Reader, monitor, output, stats, started, every, stopAfter, maxExchanges, ct);
+                        finished.SetResult();
                     }
-                }
-                catch (OperationCanceledException) when (ct.IsCancellationRequested)
+                    catch (Exception e)
+                    {
+                        finished.SetException(e);
+                    }
+                })
                 {
-                    // Ctrl+C: the counts so far, and a clean exit.
-                }
-                catch (HostLinkConnectionException)
-                {
-                    // A port was lost: what was heard until then is reported before the loss is.
-                }
-
-                monitor.Flush(Stopwatch.GetTimestamp());
-                Summary(output, stats, Stopwatch.GetElapsedTime(started), final: true);
+                    IsBackground = true,
+                    Name = "hostlink monitor-line",
+                };
+                consumer.Start();
+                await finished.Task.ConfigureAwait(false);
                 if (taps.FirstOrDefault(t => t.Failure is not null) is { } failed)
                 {
                     throw new HostLinkConnectionException($"Lost {failed.Description}: {failed.Failure!.Message.TrimEnd('.')}.", failed.Failure);
@@ -145,6 +131,58 @@ internal static class MonitorLineCommand
             return ExitCodes.Success;
         });
         return command;
+    }
+
+    /// <summary>Takes the chunks as they come until stopped, then reports what is left and the counts.</summary>
+    private static void Consume(ChannelReader<TapChunk> chunks, LineMonitor monitor, OutputWriter output, LineStatistics stats, long started, TimeSpan every, TimeSpan? stopAfter, int? maxExchanges, CancellationToken ct)
+    {
+        long nextSummary = every > TimeSpan.Zero ? started + Ticks(every) : long.MaxValue;
+        try
+        {
+            while (true)
+            {
+                if (!chunks.TryRead(out TapChunk chunk))
+                {
+                    if (!chunks.WaitToReadAsync(ct).AsTask().GetAwaiter().GetResult())
+                    {
+                        break;
+                    }
+
+                    continue;
+                }
+
+                if (chunk.Source < 0)
+                {
+                    monitor.Tick(chunk.Ticks);
+                }
+                else
+                {
+                    monitor.Take(chunk);
+                }
+
+                if (chunk.Ticks >= nextSummary)
+                {
+                    Summary(output, stats, Stopwatch.GetElapsedTime(started), final: false);
+                    nextSummary += Ticks(every);
+                }
+
+                if ((stopAfter is { } d && Stopwatch.GetElapsedTime(started) >= d) || (maxExchanges is { } max && stats.Exchanges >= max))
+                {
+                    break;
+                }
+            }
+        }
+        catch (OperationCanceledException) when (ct.IsCancellationRequested)
+        {
+            // Ctrl+C: the counts so far, and a clean exit.
+        }
+        catch (HostLinkConnectionException)
+        {
+            // A port was lost: what was heard until then is reported before the loss is.
+        }
+
+        monitor.Flush(Stopwatch.GetTimestamp());
+        Summary(output, stats, Stopwatch.GetElapsedTime(started), final: true);
     }
 
     private static long Ticks(TimeSpan t) => (long)(t.TotalSeconds * Stopwatch.Frequency);

@@ -16,7 +16,7 @@ namespace OmronHostLink.Cli.LineMonitoring;
 /// serves reads from one polling thread that sleeps a millisecond whenever no read is queued, and bytes arriving then
 /// are stamped up to a millisecond late, which is the whole error a latency reading may have. The descriptor is opened
 /// before System.IO.Ports, which then claims the device exclusively. On Linux the reader asks for real-time scheduling
-/// where it is allowed (<see cref="TryRealTime"/>). On Windows the port's own stream is read.
+/// where it is allowed (<see cref="RealTimeScheduling"/>). On Windows the port's own stream is read.
 /// </remarks>
 internal sealed class SerialTap : IDisposable
 {
@@ -110,7 +110,7 @@ internal sealed class SerialTap : IDisposable
 
     private void Read()
     {
-        RealTime = TryRealTime();
+        RealTime = RealTimeScheduling.TryRaiseThisThread();
         var buffer = new byte[4096];
         try
         {
@@ -140,22 +140,6 @@ internal sealed class SerialTap : IDisposable
                 _output.TryComplete(new HostLinkConnectionException($"Lost {Description}: {e.Message}", e));
             }
         }
-    }
-
-    /// <summary>
-    /// Asks Linux for real-time scheduling (SCHED_FIFO) for the calling thread, where it is allowed: the reader sleeps in
-    /// poll and read and takes almost no processor time, and a timestamp taken when it wakes is then not held back by
-    /// other processes keeping the processors busy.
-    /// </summary>
-    private static bool TryRealTime()
-    {
-        if (!RuntimeInformation.IsOSPlatform(OSPlatform.Linux))
-        {
-            return false;
-        }
-
-        var param = new SchedParam { Priority = 10 };
-        return SetScheduler(0, 1, ref param) == 0;
     }
 
     /// <summary>Waits up to <see cref="PollMilliseconds"/> for bytes to read.</summary>
@@ -205,15 +189,6 @@ internal sealed class SerialTap : IDisposable
         public short Events;
         public short Revents;
     }
-
-    [StructLayout(LayoutKind.Sequential)]
-    private struct SchedParam
-    {
-        public int Priority;
-    }
-
-    [DllImport("libc", EntryPoint = "sched_setscheduler", SetLastError = true)]
-    private static extern int SetScheduler(int pid, int policy, ref SchedParam param);
 
     [DllImport("libc", EntryPoint = "poll", SetLastError = true)]
     private static extern int Poll(ref PollFd fds, uint count, int timeout);
