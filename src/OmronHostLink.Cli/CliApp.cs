@@ -102,6 +102,7 @@ internal static class CliApp
         root.Add(MonitorCommand.Create(context));
         root.Add(MonitorLineCommand.Create(context));
         root.Add(ExplainCommand.Create(context));
+        root.Add(PlanCommand.Create(context));
         root.Add(RawCommand.Create(context));
         root.Add(SimulateCommand.Create(context));
         root.Add(DemoCommand.Create(context));

@@ -27,33 +27,44 @@ internal sealed class ConnectionOptions
         ["Model"] = "--model",
         ["HostLinkCompatibleMode"] = "--compatible-mode",
         ["LocalEcho"] = "--local-echo",
+        ["UseCompoundRead"] = "--compound-read",
     };
 
-    public ConnectionOptions(bool includeUnit = true, TimeSpan? defaultTimeout = null, int? defaultRetries = null)
+    public ConnectionOptions(bool includeUnit = true, TimeSpan? defaultTimeout = null, int? defaultRetries = null, bool plansReads = false)
     {
         IncludeUnit = includeUnit;
+        PlansReads = plansReads;
         DefaultTimeout = defaultTimeout;
         DefaultRetries = defaultRetries;
-        var line = new SerialLineSettings();
-        TimeSpan timeout = defaultTimeout ?? new HostLinkClientOptions().TurnaroundAllowance;
+        TimeSpan timeout = defaultTimeout ?? HostLinkClientSettings.TurnaroundAllowanceSetting.Default!.Value;
         Port = new Option<string?>("--port") { Description = "Serial port: COM3, /dev/ttyUSB0, or any device path (a pty).", HelpName = "name" };
-        Baud = OptionValues.OptionalInteger("--baud", $"Baud rate (default {line.BaudRate}).", int.MinValue, int.MaxValue, "n");
-        DataBits = OptionValues.OptionalInteger("--data-bits", $"Data bits: {SettingRules.MinDataBits} or {SettingRules.MaxDataBits} (default {line.DataBits}).", int.MinValue, int.MaxValue, $"{SettingRules.MinDataBits}|{SettingRules.MaxDataBits}");
+        Baud = OptionValues.OptionalInteger("--baud", $"Baud rate (default {HostLinkSerialSettings.BaudRateSetting.Default}).", int.MinValue, int.MaxValue, "n");
+        DataBits = OptionValues.OptionalInteger("--data-bits", $"Data bits: {SettingRules.MinDataBits} or {SettingRules.MaxDataBits} (default {HostLinkSerialSettings.DataBitsSetting.Default}).", int.MinValue, int.MaxValue, $"{SettingRules.MinDataBits}|{SettingRules.MaxDataBits}");
         string[] parities = Enum.GetNames(typeof(SerialParity)).Select(n => n.ToLowerInvariant()).ToArray();
-        Parity = OptionValues.OptionalChoice("--parity", $"Parity (default {line.Parity.ToString().ToLowerInvariant()}).", string.Join('|', parities), parities);
-        StopBits = OptionValues.OptionalInteger("--stop-bits", $"Stop bits: 1 or 2 (default {(int)line.StopBits}).", int.MinValue, int.MaxValue, "1|2");
+        Parity = OptionValues.OptionalChoice("--parity", $"Parity (default {HostLinkSerialSettings.ParitySetting.Default.ToString()!.ToLowerInvariant()}).", string.Join('|', parities), parities);
+        StopBits = OptionValues.OptionalInteger("--stop-bits", $"Stop bits: 1 or 2 (default {(int)HostLinkSerialSettings.StopBitsSetting.Default!.Value}).", int.MinValue, int.MaxValue, "1|2");
         Tcp = new Option<string?>("--tcp") { Description = "A serial device server or the simulator, as host:port.", HelpName = "host:port" };
         Unit = OptionValues.Integer("--unit", $"The PLC's unit number, 0-{SettingRules.MaxUnitNumber}.", 0, int.MinValue, int.MaxValue, "n");
         Timeout = Durations.Option("--timeout", "Time the PLC may take to start answering a frame (the wire time is added); default " + Durations.Format(timeout) + ".", null, TimeSpan.MinValue, TimeSpan.MaxValue);
-        Retries = OptionValues.OptionalInteger("--retries", $"Times a read is repeated after a timeout or damaged frame, 0-{SettingRules.MaxRetries} (writes are never repeated).", int.MinValue, int.MaxValue, "n");
+        Retries = OptionValues.OptionalInteger("--retries", $"Times a read is repeated after a timeout or damaged frame, 0-{SettingRules.MaxRetries} (default {DefaultRetries ?? HostLinkClientSettings.ReadRetriesSetting.Default}; writes are never repeated).", int.MinValue, int.MaxValue, "n");
         Fins = new Option<bool>("--fins") { Description = "Use FINS over Host Link (FA) where C-mode would otherwise be used: reads, writes, bit writes, status and mode." };
         CompatibleMode = OptionValues.OptionalChoice("--compatible-mode", "The Host Link-compatible device mode the PLC's Serial Communications Unit is set to (A: CS/CJ/C, B: CVM1/CV, C: C200H, D: C500/C120): each answer frame is checked to be framed as that mode frames it. Default: any framing.", "a|b|c|d", "a", "b", "c", "d");
         Trace = new Option<string?>("--trace") { Description = "Write every frame sent and received, with its time and direction, to this file: a pcap for Wireshark (tools/wireshark/omron-hostlink.lua), or JSON lines for a name ending in .jsonl.", HelpName = "file" };
         LocalEcho = new Option<bool>("--local-echo") { Description = "The line echoes what is sent (a 2-wire RS-485 adapter without echo suppression; 'hostlink detect' tells): read our own frames back before each answer." };
+        Set = new Option<string[]>("--set")
+        {
+            Description = "Any client setting as key=value, as in configuration (repeatable): --set UseCompoundRead=true, --set UnitSendIntervals:3=200ms, --set SendInterval=20ms. See docs/settings.md.",
+            HelpName = "key=value",
+            AllowMultipleArgumentsPerToken = false,
+        };
+        CompoundRead = CompoundReadOption();
         Model = new Option<string?>("--model") { Description = "The PLC model addresses and commands are checked against before anything is sent (CPM1A, CP1E-E, C200HS, CS1, ...: see 'hostlink model --list'), or auto to ask the PLC (MM).", HelpName = "name" };
     }
 
     public bool IncludeUnit { get; }
+
+    /// <summary>Whether the command plans its reads (and so takes <c>--compound-read</c>).</summary>
+    public bool PlansReads { get; }
 
     public TimeSpan? DefaultTimeout { get; }
 
@@ -87,6 +98,23 @@ internal sealed class ConnectionOptions
 
     public Option<string?> Trace { get; }
 
+    /// <summary><c>--set key=value</c>: every client setting, read as configuration reads it.</summary>
+    public Option<string[]> Set { get; }
+    public Option<string?> CompoundRead { get; }
+
+    /// <summary><c>--compound-read auto|on|off</c>: whether planned reads use QQ (the client setting UseCompoundRead).</summary>
+    public static Option<string?> CompoundReadOption()
+        => OptionValues.OptionalChoice("--compound-read", "Whether planned reads use QQ, the compound read: auto (default: where the PLC's model, given with --model or named by MM, has it), on, or off.", "auto|on|off", "auto", "on", "off");
+
+    /// <summary>The mode <paramref name="value"/> (an <see cref="CompoundReadOption"/> value) names; null when not given.</summary>
+    public static CompoundReadMode? CompoundReadOf(string? value) => value switch
+    {
+        "auto" => CompoundReadMode.Auto,
+        "on" => CompoundReadMode.On,
+        "off" => CompoundReadMode.Off,
+        _ => null,
+    };
+
     /// <summary>How 32- and 64-bit values lie in two or four words: Omron's own layout, low word first.</summary>
     public WordOrder WordOrder => WordOrder.LowWordFirst;
 
@@ -110,6 +138,12 @@ internal sealed class ConnectionOptions
         command.Add(CompatibleMode);
         command.Add(LocalEcho);
         command.Add(Trace);
+        command.Add(Set);
+        if (PlansReads)
+        {
+            command.Add(CompoundRead);
+        }
+
         command.Validators.Add(Validate);
     }
 
@@ -140,6 +174,7 @@ internal sealed class ConnectionOptions
                 "d" => HostLinkCompatibleMode.ModeD,
                 _ => null,
             },
+            UseCompoundRead = PlansReads ? CompoundReadOf(options.GetValue(CompoundRead)) : null,
         };
         settings.Serial.BaudRate = options.GetValue(Baud);
         settings.Serial.DataBits = options.GetValue(DataBits);
@@ -157,6 +192,8 @@ internal sealed class ConnectionOptions
             settings.Serial.PortName = options.GetValue(Port);
         }
 
+        // --set last: any client setting, read as configuration reads it, over what the options above say.
+        settings.Read(SetPairs(options.GetValue(Set)));
         return settings;
     }
 
@@ -217,11 +254,26 @@ internal sealed class ConnectionOptions
         }
     }
 
-    /// <summary>The settings' problems in the console's words: <c>--baud: 12345 is not a standard rate (…).</c></summary>
+    /// <summary>The settings' problems in the console's words: <c>--baud: 12345 is not a standard rate (…).</c>, <c>--set SendInterval: …</c>.</summary>
     private static IEnumerable<string> Problems(HostLinkClientSettings settings)
         => settings.Validate()
-            .Where(p => OptionOfKey.ContainsKey(p.Key))
-            .Select(p => $"{OptionOfKey[p.Key]}: {p.Message}.");
+            .Where(p => p.Key.Length > 0 && !p.Key.StartsWith("Tcp", StringComparison.OrdinalIgnoreCase) && !p.Key.Equals("Serial:PortName", StringComparison.OrdinalIgnoreCase))
+            .Select(p => OptionOfKey.TryGetValue(p.Key, out string? option) ? $"{option}: {p.Message}." : $"--set {p.Key}: {p.Message}.");
+
+    /// <summary>The <c>--set</c> values as configuration's key/value pairs.</summary>
+    private static IEnumerable<KeyValuePair<string, string?>> SetPairs(string[]? values)
+    {
+        foreach (string value in values ?? [])
+        {
+            int equals = value.IndexOf('=', StringComparison.Ordinal);
+            if (equals <= 0)
+            {
+                throw new UsageException($"--set '{value}': write key=value, for example --set UseCompoundRead=true.");
+            }
+
+            yield return new KeyValuePair<string, string?>(value[..equals].Trim(), value[(equals + 1)..]);
+        }
+    }
 
     private void Validate(CommandResult result)
     {

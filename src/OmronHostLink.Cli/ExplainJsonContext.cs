@@ -1,6 +1,7 @@
 using System.Text.Json;
 using System.Text.Json.Serialization;
 using System.Text.Json.Serialization.Metadata;
+using OmronHostLink.Protocol.Fins;
 
 namespace OmronHostLink.Cli;
 
@@ -28,6 +29,20 @@ internal sealed partial class ExplainJsonContext : JsonSerializerContext
         PropertyNamingPolicy = JsonNamingPolicy.CamelCase,
         TypeInfoResolver = JsonTypeInfoResolver.WithAddedModifier(Default, static info =>
         {
+            if (info.Type == typeof(FinsAddressField))
+            {
+                // A plain address has no action: the field is left out rather than written as null.
+                foreach (JsonPropertyInfo property in info.Properties)
+                {
+                    if (property.Name == "action")
+                    {
+                        property.ShouldSerialize = static (_, value) => value is not null;
+                    }
+                }
+
+                return;
+            }
+
             if (info.Type != typeof(FrameExplanation))
             {
                 return;

@@ -18,7 +18,7 @@ internal static class FrameDirection
     /// </summary>
     public static void Recognise(FrameExplanation x, string header, ReadOnlySpan<byte> text, CModeCommandTable table)
     {
-        bool fins = header == CModeHeaders.Fins;
+        bool fins = header == CModeCommands.Fins.Header;
         string? commandFault = fins ? FinsCommandFault(text) : CModeCommandFault(header, text, x.Final, table);
         bool answer = fins ? IsFinsAnswer(text, x.Final) : IsCModeAnswer(header, text, x.Final, table);
         if (answer && commandFault is not null)
@@ -31,7 +31,7 @@ internal static class FrameDirection
         {
             x.DirectionFrom = FrameExplanation.FromAmbiguous;
             int sub = table.Find(Encoding.ASCII.GetBytes(header), text)?.SubHeaderLength ?? 0;
-            string answerIs = header == CModeHeaders.Test ? "the PLC's echo of it" : $"an answer with end code {Encoding.ASCII.GetString(text.Slice(sub, CModeResponse.EndCodeLength))}";
+            string answerIs = header == CModeCommands.Test.Header ? "the PLC's echo of it" : $"an answer with end code {Encoding.ASCII.GetString(text.Slice(sub, CModeResponse.EndCodeLength))}";
             x.Notes.Add($"This frame is ambiguous: the same characters are a well-formed {header} command and {answerIs}. Explained as a command; give --response to explain it as the answer.");
         }
         else if (commandFault is null)
@@ -72,15 +72,15 @@ internal static class FrameDirection
     /// </summary>
     internal static bool IsCModeAnswer(string header, ReadOnlySpan<byte> text, bool final, CModeCommandTable table)
     {
-        switch (header)
+        if (header == CModeCommands.Test.Header || header == CModeCommands.Txd.Header)
         {
-            case CModeHeaders.Test:
-                // The echo, single-frame like the command.
-                return final;
-            case CModeHeaders.UndefinedCommand:
-                return final && text.IsEmpty;
-            case CModeHeaders.Txd:
-                return final;
+            // TS: the echo, single-frame like the command. EX: the PLC's text.
+            return final;
+        }
+
+        if (header == CModeCommands.UndefinedCommand.Header)
+        {
+            return final && text.IsEmpty;
         }
 
         CModeCommandRow? row = table.Find(Encoding.ASCII.GetBytes(header), text);

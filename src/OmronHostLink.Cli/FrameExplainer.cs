@@ -8,9 +8,9 @@ namespace OmronHostLink.Cli;
 
 /// <summary>
 /// Decodes captured frames without a PLC, with the library's own parsers: <see cref="FrameCheck"/> for shape, FCS and
-/// unit, <see cref="CModeHeaders"/> for header names, <see cref="CModeCommand.Parse"/> and <see cref="CModeResponse"/>
-/// for C-mode fields, <see cref="FinsMessage"/> and <see cref="FinsResponse"/> for FINS (parameters and answer data in
-/// <see cref="FinsExplainFields"/>). Without a direction from the user, <see cref="FrameDirection"/> tells it.
+/// unit, <see cref="CModeCommandTable"/> for header names, <see cref="CModeCommand.Parse"/> and <see cref="CModeResponse"/>
+/// for C-mode fields, <see cref="FinsMessage"/> and <see cref="FinsResponse"/> for FINS (parameters and answer data from
+/// the rows of <see cref="FinsCommandTable"/>). Without a direction from the user, <see cref="FrameDirection"/> tells it.
 /// </summary>
 internal static class FrameExplainer
 {
@@ -43,9 +43,10 @@ internal static class FrameExplainer
     /// <param name="response">True for an answer, false for a command, null to tell from the frame where it can.</param>
     public static FrameExplanation Explain(string input, bool? response) => Explain(input, response, CModeCommandTable.Standard);
 
-    /// <summary>Explains one frame, looking C-mode headers up in <paramref name="table"/>.</summary>
-    internal static FrameExplanation Explain(string input, bool? response, CModeCommandTable table)
+    /// <summary>Explains one frame, looking C-mode headers up in <paramref name="table"/> and FINS codes in <paramref name="fins"/> (default: the standard FINS table).</summary>
+    internal static FrameExplanation Explain(string input, bool? response, CModeCommandTable table, FinsCommandTable? fins = null)
     {
+        fins ??= FinsCommandTable.Standard;
         byte[] typed = Normalise(input);
         var x = new FrameExplanation
         {
@@ -60,8 +61,8 @@ internal static class FrameExplainer
                 x.DirectionFrom = FrameExplanation.FromShape;
             }
 
-            x.Header = CModeHeaders.Initialize;
-            x.Name = CModeHeaders.Name(CModeHeaders.Initialize);
+            x.Header = CModeCommands.Initialize.Header;
+            x.Name = CModeCommands.Initialize.Name;
             x.Notes.Add("INITIALIZE carries no unit number and no FCS; no unit answers it.");
             return x;
         }
@@ -117,14 +118,14 @@ internal static class FrameExplainer
             FrameDirection.Recognise(x, header, text, table);
         }
 
-        CheckLength(x, frame.Length, first: true, fins: header == CModeHeaders.Fins);
-        switch ((header == CModeHeaders.Fins, x.IsResponse))
+        CheckLength(x, frame.Length, first: true, fins: header == CModeCommands.Fins.Header);
+        switch ((header == CModeCommands.Fins.Header, x.IsResponse))
         {
             case (true, true):
-                ExplainFinsResponse(x, text, check.Unit);
+                ExplainFinsResponse(x, text, check.Unit, fins);
                 break;
             case (true, false):
-                ExplainFinsCommand(x, text, check.Unit);
+                ExplainFinsCommand(x, text, check.Unit, fins);
                 break;
             case (false, true):
                 ExplainResponse(x, header, text, table);
@@ -255,26 +256,31 @@ internal static class FrameExplainer
 
     private static void ExplainResponse(FrameExplanation x, string header, ReadOnlySpan<byte> text, CModeCommandTable table)
     {
-        switch (header)
+        if (header == CModeCommands.Test.Header)
         {
-            case CModeHeaders.Test:
-                x.Data = x.Text;
-                x.Field("echo", x.Text);
-                x.Notes.Add("A TS answer carries no end code: success is the text echoed unchanged.");
-                return;
-            case CModeHeaders.UndefinedCommand:
-                x.EndCodeMeaning = EndCode.UndefinedHeader.Meaning();
-                if (text.Length != 0)
-                {
-                    x.Problems.Add("An IC answer carries no text.");
-                }
+            x.Data = x.Text;
+            x.Field("echo", x.Text);
+            x.Notes.Add("A TS answer carries no end code: success is the text echoed unchanged.");
+            return;
+        }
 
-                return;
-            case CModeHeaders.Txd:
-                x.Data = x.Text;
-                x.Field("message", x.Text);
-                x.Notes.Add("EX is sent by the PLC (TXD in Host Link mode) and carries no end code.");
-                return;
+        if (header == CModeCommands.UndefinedCommand.Header)
+        {
+            x.EndCodeMeaning = EndCode.UndefinedHeader.Meaning();
+            if (text.Length != 0)
+            {
+                x.Problems.Add("An IC answer carries no text.");
+            }
+
+            return;
+        }
+
+        if (header == CModeCommands.Txd.Header)
+        {
+            x.Data = x.Text;
+            x.Field("message", x.Text);
+            x.Notes.Add("EX is sent by the PLC (TXD in Host Link mode) and carries no end code.");
+            return;
         }
 
         // A command with a sub-header (QQMR, QQIR) has it echoed before the end code.
@@ -321,7 +327,7 @@ internal static class FrameExplainer
         }
     }
 
-    private static void ExplainFinsCommand(FrameExplanation x, ReadOnlySpan<byte> text, int unit)
+    private static void ExplainFinsCommand(FrameExplanation x, ReadOnlySpan<byte> text, int unit, FinsCommandTable table)
     {
         FinsCommandMessage message;
         try
@@ -335,12 +341,12 @@ internal static class FrameExplainer
         }
 
         x.Field("responseWaitMs", (long)message.Header.ResponseWaitTime.TotalMilliseconds);
-        FinsFields(x, message.Header, message.CommandCode);
+        FinsFields(x, message.Header, message.CommandCode, table);
         x.Field("parameters", Hex(message.Parameters.Span));
         FinsCommand command;
         try
         {
-            command = message.ToCommand();
+            command = message.ToCommand(table);
         }
         catch (FinsFormatException e)
         {
@@ -350,10 +356,10 @@ internal static class FrameExplainer
             return;
         }
 
-        FinsExplainFields.AddParameters(x, command);
+        command.Row.DescribeCommand?.Invoke(command, x);
     }
 
-    private static void ExplainFinsResponse(FrameExplanation x, ReadOnlySpan<byte> text, int unit)
+    private static void ExplainFinsResponse(FrameExplanation x, ReadOnlySpan<byte> text, int unit, FinsCommandTable table)
     {
         if (!EndCodeOf(x, text, out EndCode endCode))
         {
@@ -377,7 +383,7 @@ internal static class FrameExplainer
             return;
         }
 
-        FinsFields(x, response.Header, response.CommandCode);
+        FinsFields(x, response.Header, response.CommandCode, table);
         x.Field("responseCode", response.EndCode.ToString());
         x.Field("responseMeaning", response.EndCode.Meaning);
         x.Field("networkRelayError", response.EndCode.NetworkRelayError);
@@ -388,7 +394,7 @@ internal static class FrameExplainer
         {
             try
             {
-                FinsExplainFields.AddAnswerData(x, response.CommandCode, response.Data.Span);
+                table.Find(response.CommandCode)?.DescribeAnswer?.Invoke(response.Data.Span, x);
             }
             catch (HostLinkFrameException e)
             {
@@ -417,7 +423,7 @@ internal static class FrameExplainer
     }
 
     /// <summary>The FINS header fields (the network ones only for a network header), the command code and its name.</summary>
-    private static void FinsFields(FrameExplanation x, FinsHeader h, ushort command)
+    private static void FinsFields(FrameExplanation x, FinsHeader h, ushort command, FinsCommandTable table)
     {
         x.Field("icf", Hex(h.Icf));
         if (h.IsNetwork)
@@ -438,7 +444,7 @@ internal static class FrameExplainer
         x.Field("sa2", Hex(h.Sa2));
         x.Field("sid", Hex(h.Sid));
         x.Field("command", command.ToString("X4", CultureInfo.InvariantCulture));
-        x.Name = FinsCommandTable.Standard.Name(command) is { } name ? $"FINS {command:X4} {name}" : $"FINS {command:X4}";
+        x.Name = table.Name(command) is { } name ? $"FINS {command:X4} {name}" : $"FINS {command:X4}";
     }
 
     private static string Hex(byte value) => value.ToString("X2", CultureInfo.InvariantCulture);

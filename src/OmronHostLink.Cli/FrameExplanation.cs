@@ -1,4 +1,5 @@
 using System.Text.Json.Serialization;
+using OmronHostLink.Protocol.Fins;
 
 namespace OmronHostLink.Cli;
 

@@ -1,9 +1,7 @@
-using Microsoft.Extensions.Configuration;
 using Microsoft.Extensions.DependencyInjection;
 using Microsoft.Extensions.DependencyInjection.Extensions;
 using Microsoft.Extensions.Hosting;
 using Microsoft.Extensions.Logging;
-using Microsoft.Extensions.Options;
 using OmronHostLink.Gateway.Configuration;
 using OmronHostLink.Gateway.Mqtt;
 using OmronHostLink.Gateway.Polling;
@@ -17,9 +15,6 @@ namespace OmronHostLink.Gateway;
 /// <summary>Builds the worker's generic host: options, validation, a client per link, the optional simulator and the link pollers.</summary>
 public static class GatewayHost
 {
-    /// <summary>The Windows service name (deploy/install-service.ps1 registers the service under it).</summary>
-    public const string ServiceName = "OmronHostLink.Gateway";
-
     /// <summary>A builder with the usual defaults (appsettings.json, appsettings.{Environment}.json, environment variables, command line, console logging).</summary>
     public static HostApplicationBuilder CreateBuilder(string[] args)
         => Configure(Host.CreateApplicationBuilder(args));
@@ -34,31 +29,22 @@ public static class GatewayHost
     /// <summary>The generic host's own log category, where a failed start is logged with its stack trace.</summary>
     private const string HostCategory = "Microsoft.Extensions.Hosting.Internal.Host";
 
+    /// <summary>The sections the gateway reads, besides the generic host's own.</summary>
+    internal static readonly string[] Sections =
+    [
+        GatewayOptions.SectionName, SimulatorOptions.SectionName, MqttOptions.SectionName, SparkplugOptions.SectionName, TelemetryOptions.SectionName, "Logging",
+    ];
+
     private static HostApplicationBuilder Configure(HostApplicationBuilder builder)
     {
         IServiceCollection services = builder.Services;
         services.TryAddSingleton(TimeProvider.System);
 
-        IConfigurationSection hostLink = builder.Configuration.GetSection(GatewayOptions.SectionName);
-        services.AddOptions<GatewayOptions>()
-            .Configure(options => LinkClients.Bind(hostLink, options))
-            .ValidateOnStart();
-        services.AddSingleton<IValidateOptions<GatewayOptions>, GatewayOptionsValidator>();
-        services.AddLinkClients(builder.Configuration);
-
-        IConfigurationSection simulator = builder.Configuration.GetSection(SimulatorOptions.SectionName);
-        services.AddOptions<SimulatorOptions>()
-            .Configure(options => ConfigurationSchema.Bind(simulator, options))
-            .ValidateDataAnnotations()
-            .ValidateOnStart();
-        services.AddSingleton<IValidateOptions<SimulatorOptions>, SimulatorOptionsValidator>();
-
-        if (!StartupCheck.Passes(builder.Configuration))
-        {
-            // The start is going to fail validation, and Program prints every failure, each naming its key. The host
-            // would first log "Hosting failed to start" with the framework's stack trace: that is all noise here.
-            builder.Logging.AddFilter(HostCategory, LogLevel.None);
-        }
+        // Read once: every check sees the links and groups the gateway polls, and each section is judged once.
+        var gateway = new GatewayConfiguration(builder.Configuration);
+        services.AddSingleton(gateway);
+        new GatewayOptionsValidator(gateway).AddTo(services, options => options.Links = gateway.HostLink.Links);
+        new SimulatorOptionsValidator(gateway).AddTo(services);
 
         // Order matters: hosted services start in registration order and stop in reverse, so the simulator listens
         // before the links connect and outlives them, and the MQTT output sends the links' last states.
@@ -66,17 +52,29 @@ public static class GatewayHost
         services.AddHostedService(sp => sp.GetRequiredService<SimulatorHostedService>());
         // The outputs (each an ITagOutput; the polling reports to all of them in registration order).
         services.AddLinkStatistics();
-        services.AddMqttOutput(builder.Configuration);
-        services.AddSparkplugOutput(builder.Configuration);
+        services.AddMqttOutput(gateway, builder.Environment.ContentRootPath);
+        services.AddSparkplugOutput(gateway);
         services.AddSingleton<PollingHostedService>();
         services.AddHostedService(sp => sp.GetRequiredService<PollingHostedService>());
-        services.AddTelemetryExport(builder.Configuration);
+        services.AddTelemetryExport(gateway);
+
+        // Once every output has added its rules to the HostLink section's check.
+        if (StartupCheck.Passes(gateway))
+        {
+            services.AddLinkClients(gateway);
+        }
+        else
+        {
+            // The start is going to fail validation, and Program prints every failure, each naming its key. The host
+            // would first log "Hosting failed to start" with the framework's stack trace: that is all noise here.
+            builder.Logging.AddFilter(HostCategory, LogLevel.None);
+        }
 
         // Each is a no-op unless its service manager started the process. Windows: reports SERVICE_RUNNING/STOPPED to
         // the service control manager, turns a service stop into a graceful shutdown and logs to the event log.
         // systemd: sd_notify READY=1 once every hosted service has started and STOPPING=1 on SIGTERM (Type=notify),
         // and journald-style console logs.
-        services.AddWindowsService(o => o.ServiceName = ServiceName);
+        services.AddWindowsService(o => o.ServiceName = GatewayNames.Service);
         services.AddSystemd();
         return builder;
     }

@@ -12,8 +12,8 @@ namespace OmronHostLink.Gateway;
 /// </summary>
 public static class GatewayProgram
 {
-    /// <summary>The exit code of a configuration that is not valid (a service manager should not restart on it).</summary>
-    public const int InvalidConfiguration = 2;
+    /// <summary>The command-line switch that writes each link's plan (its scan classes and their reads) and exits.</summary>
+    internal const string PlanSwitch = "--plan";
 
     /// <summary>Runs the gateway until it is stopped (Ctrl+C, SIGTERM, a Windows service stop).</summary>
     /// <param name="args">The command line: configuration overrides such as <c>--Mqtt:Host=broker</c>.</param>
@@ -22,6 +22,11 @@ public static class GatewayProgram
     public static async Task<int> RunAsync(string[] args, TextWriter error)
     {
         ArgumentNullException.ThrowIfNull(error);
+        ArgumentNullException.ThrowIfNull(args);
+
+        // --plan: the configuration checked as for a start, then each link's plan written out; no PLC is asked.
+        bool planOnly = args.Contains(PlanSwitch, StringComparer.OrdinalIgnoreCase);
+        args = [.. args.Where(a => !a.Equals(PlanSwitch, StringComparison.OrdinalIgnoreCase))];
         HostApplicationBuilder builder;
         try
         {
@@ -32,7 +37,7 @@ public static class GatewayProgram
             return Invalid(error, [problem]);
         }
 
-        List<string> problems = ConfigurationPreflight.Check(builder.Configuration);
+        List<string> problems = ConfigurationPreflight.Check(builder.Configuration, GatewayHost.Sections);
         if (ConfigurationPreflight.BadLogLevels(builder.Configuration) is { Count: > 0 } badLevels)
         {
             // Reported above; a valid level in their place lets the host be built and every other section be checked.
@@ -59,6 +64,12 @@ public static class GatewayProgram
             return Invalid(error, problems);
         }
 
+        if (planOnly)
+        {
+            await Polling.ScanPlanReport.WriteAsync(host.Services.GetRequiredService<IOptions<GatewayOptions>>().Value, Console.Out).ConfigureAwait(false);
+            return 0;
+        }
+
         CancellationToken stopping = host.Services.GetRequiredService<IHostApplicationLifetime>().ApplicationStopping;
         try
         {
@@ -81,7 +92,7 @@ public static class GatewayProgram
             error.WriteLine("  - " + problem);
         }
 
-        return InvalidConfiguration;
+        return ExitCodes.InvalidConfiguration;
     }
 
     private static List<string> Failures(Exception e) => e switch

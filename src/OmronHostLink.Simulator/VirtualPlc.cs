@@ -15,7 +15,7 @@ namespace OmronHostLink.Simulator;
 /// read-only auxiliary words A0-A447. The rules a host meets (writes refused in RUN mode, A0-A447 read-only, C-mode
 /// ranges) are applied by <see cref="Protocol.HostLinkResponder"/>.
 /// </remarks>
-public sealed class VirtualPlc : OmronHostLink.Protocol.CMode.ICModePlc
+public sealed class VirtualPlc : OmronHostLink.Protocol.Fins.IFinsPlc
 {
     /// <summary>The number of EM banks (0-C).</summary>
     public const int EmBankCount = PlcAreaInfo.EmBankCount;
@@ -624,6 +624,9 @@ public sealed class VirtualPlc : OmronHostLink.Protocol.CMode.ICModePlc
     }
 
     byte OmronHostLink.Protocol.CMode.ICModePlc.StatusLowByte => StatusLowByte;
+
+    /// <summary>What 0501 CPU UNIT DATA READ reports: a CJ1M's model name and the simulator's version text.</summary>
+    OmronHostLink.Protocol.Fins.FinsCpuUnitData OmronHostLink.Protocol.Fins.IFinsPlc.UnitData { get; } = new("CJ1M-CPU13", "OmronHostLink.Sim");
 
     void OmronHostLink.Protocol.CMode.ICModePlc.SetBit(PlcArea area, int word, int bit, bool value) => SetBit(area, word, bit, value);
 

@@ -21,6 +21,12 @@ public sealed class VirtualPlcOptions
     public string? Model { get; set; }
 
     /// <summary>
+    /// C-mode headers (such as <c>QQ</c>) the PLC answers with IC although its model lists them: a PLC that claims a
+    /// command it lacks, or a converter that does not pass it. Empty by default.
+    /// </summary>
+    public IReadOnlyCollection<string> RefusedCommands { get; set; } = [];
+
+    /// <summary>
     /// The Host Link-compatible device mode of a Serial Communications Unit to answer as (W336 4-6-2): the words each
     /// frame of an RR, RL, RH, RC, RD and RJ answer carries, the flags each RG frame carries, and whether MS sends the
     /// message characters as spaces when no FAL/FALS message is set. Null (the default): a CPU Unit's own port.
@@ -77,9 +83,9 @@ public sealed class VirtualPlcOptions
 
         foreach (int unit in Units)
         {
-            if ((uint)unit > HostLinkUnit.MaxUnitNumber)
+            if (HostLinkRules.CheckUnitNumber(unit) is { } unitProblem)
             {
-                throw new ArgumentException($"Unit numbers are 0-{HostLinkUnit.MaxUnitNumber}; {unit} is not.", nameof(Units));
+                throw new ArgumentException($"Units: {unitProblem}.", nameof(Units));
             }
         }
 
@@ -95,6 +101,11 @@ public sealed class VirtualPlcOptions
                     ? "HostLinkCompatibleMode ModeD is not emulated: the manual pages found do not say what its later RG frames carry or how it answers MS. Use ModeA, ModeB or ModeC."
                     : $"HostLinkCompatibleMode {(int)compatible} is not ModeA, ModeB or ModeC.",
                 nameof(HostLinkCompatibleMode));
+        }
+
+        if (RefusedCommands is null || RefusedCommands.Any(h => h is null || h.Length != 2))
+        {
+            throw new ArgumentException("RefusedCommands holds two-character C-mode headers such as QQ (empty for none).", nameof(RefusedCommands));
         }
 
         if (BaudRate < 0)

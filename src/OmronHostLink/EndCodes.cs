@@ -8,7 +8,7 @@ public static class EndCodes
     /// <summary>Parses the two characters of an end code (or <c>IC</c>).</summary>
     internal static bool TryParse(ReadOnlySpan<byte> text, out EndCode code)
     {
-        if (Protocol.CMode.CModeHeaders.Is(text, Protocol.CMode.CModeHeaders.UndefinedCommand))
+        if (Protocol.CMode.CModeHeaders.Is(text, Protocol.CMode.CModeCommands.UndefinedCommand.Header))
         {
             code = EndCode.UndefinedHeader;
             return true;
@@ -21,7 +21,7 @@ public static class EndCodes
 
     /// <summary>The code as the PLC sends it: two hex digits, or <c>IC</c>.</summary>
     public static string ToCode(this EndCode code)
-        => code == EndCode.UndefinedHeader ? Protocol.CMode.CModeHeaders.UndefinedCommand : ((int)code).ToString("X2", CultureInfo.InvariantCulture);
+        => code == EndCode.UndefinedHeader ? Protocol.CMode.CModeCommands.UndefinedCommand.Header : ((int)code).ToString("X2", CultureInfo.InvariantCulture);
 
     /// <summary>Whether the code is one the manuals define.</summary>
     public static bool IsDefined(EndCode code) => Describe(code) is not null;

@@ -2,6 +2,7 @@ using System.Text;
 using BenchmarkDotNet.Attributes;
 using Microsoft.Extensions.Logging.Abstractions;
 using OmronHostLink.Gateway.Mqtt;
+using OmronHostLink.Gateway.Queue;
 
 namespace OmronHostLink.Benchmarks;
 

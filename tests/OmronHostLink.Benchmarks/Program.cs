@@ -8,6 +8,8 @@ using OmronHostLink.Benchmarks.Scale;
 // dotnet run -c Release --project tests/OmronHostLink.Benchmarks -- scale [--links 1,10,50,100] [--seconds 60] [--tags 10]
 // dotnet run -c Release --project tests/OmronHostLink.Benchmarks -- demotion [--units 8] [--interval 1s] [--window 60s] [--set Demotion:After=3]
 // dotnet run -c Release --project tests/OmronHostLink.Benchmarks -- monitor [--rounds 20000]
+// dotnet run -c Release --project tests/OmronHostLink.Benchmarks -- polling [--tags 100] [--baud 9600] [--interval 1s] [--seconds 60] [--before path/OmronHostLink.Gateway.dll]
+// dotnet run -c Release --project tests/OmronHostLink.Benchmarks -- mixed [--links 4] [--units 2] [--baud 38400] [--window 10m] [--warmup 30s]
 // dotnet run -c Release --project tests/OmronHostLink.Benchmarks -- --filter '*'
 if (args.Length > 0 && args[0] == "wire")
 {
@@ -27,6 +29,16 @@ if (args.Length > 0 && args[0] == "scale")
 if (args.Length > 0 && args[0] == "monitor")
 {
     return await MonitorThroughput.RunAsync(args[1..]);
+}
+
+if (args.Length > 0 && args[0] == "polling")
+{
+    return await OmronHostLink.Benchmarks.Polling.PollingMeasurement.RunAsync(args[1..]);
+}
+
+if (args.Length > 0 && args[0] == "mixed")
+{
+    return await OmronHostLink.Benchmarks.Polling.MixedScanMeasurement.RunAsync(args[1..]);
 }
 
 if (args.Length > 0 && args[0] == "demotion")

@@ -133,7 +133,7 @@ internal static class WireEfficiency
         foreach (HostLinkCommandSet protocol in new[] { HostLinkCommandSet.CMode, HostLinkCommandSet.Fins })
         {
             await using var rig = await Rig.StartAsync(9600, turnaround, protocol);
-            ReadPlan plan = new ReadPlanner(protocol, new LineTiming(9600, Bits)) { UseCompoundRead = false }.Plan(tags);
+            ReadPlan plan = new ReadPlanner(protocol, new LineTiming(9600, Bits)) { UseCompoundRead = CompoundReadMode.Off }.Plan(tags);
             Measurement planned = await rig.MeasureAsync(runs, c => c.ReadTagsAsync(plan));
             Measurement naive = await rig.MeasureAsync(runs, async c =>
             {
@@ -153,7 +153,7 @@ internal static class WireEfficiency
 
             // QQ: the same tags with the compound read; the registration is paid by the first run (and the warm-up
             // below), so the median is a cycle of QQIRs and the area reads QQ does not cover.
-            ReadPlan qq = new ReadPlanner(protocol, new LineTiming(9600, Bits)).Plan(tags);
+            ReadPlan qq = new ReadPlanner(protocol, new LineTiming(9600, Bits)) { UseCompoundRead = CompoundReadMode.On }.Plan(tags);
             await rig.Client.ReadTagsAsync(qq);
             Measurement compound = await rig.MeasureAsync(runs, c => c.ReadTagsAsync(qq));
             Console.WriteLine($"| {name} | ReadTagsAsync with QQ (planned: {Kinds(qq)}) | {qq.TransactionCount} | {compound.Characters} | {compound.MedianMs:0} | {naive.MedianMs / compound.MedianMs:0.00}× |");
@@ -227,7 +227,7 @@ internal static class WireEfficiency
                 LineTiming = new LineTiming(baud, Bits),
                 TurnaroundAllowance = TimeSpan.FromMilliseconds(200) + turnaround,
                 CommandSet = protocol,
-                UseCompoundRead = true,
+                UseCompoundRead = CompoundReadMode.On,
             });
 
             // Warm-up: JIT, pools, the link's pump.

@@ -30,7 +30,6 @@ public sealed class CliMonitorTests
         await Until(() => Out().Contains("\"values\":[7]", StringComparison.Ordinal), Out);
         await first.StopAsync();
         await Until(() => Out().Contains("\"status\":\"lost\"", StringComparison.Ordinal) || run.IsCompleted, Out);
-        await Task.Delay(200);
         plc.WriteWord(PlcArea.Dm, 0, 8);
         await using var second = new TcpSimulatorHost(plc, new IPEndPoint(IPAddress.Loopback, port));
         await second.StartAsync();
@@ -111,7 +110,7 @@ public sealed class CliMonitorTests
         for (int i = 0; i < 5 && !process.HasExited; i++)
         {
             process.Signal(ProgramProcess.SigInt);
-            await Task.Delay(2);
+            await Task.Yield();
         }
 
         await process.WaitForExitAsync(TimeSpan.FromSeconds(15));
@@ -257,17 +256,5 @@ public sealed class CliMonitorTests
         return (run, () => { lock (output) { return stdout.ToString(); } }, stop);
     }
 
-    private static async Task Until(Func<bool> condition, Func<string> output)
-    {
-        var clock = Stopwatch.StartNew();
-        while (!condition())
-        {
-            if (clock.Elapsed > TimeSpan.FromSeconds(15))
-            {
-                throw new TimeoutException("Condition not met; output: " + output());
-            }
-
-            await Task.Delay(20);
-        }
-    }
+    private static Task Until(Func<bool> condition, Func<string> output) => Eventually.UntilAsync(condition, "the monitor prints it", output);
 }

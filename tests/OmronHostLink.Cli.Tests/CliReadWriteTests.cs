@@ -212,12 +212,5 @@ public sealed class CliReadWriteTests
         change.GetProperty("values")[1].GetInt32().Should().Be(99);
     }
 
-    private static async Task UntilAsync(Func<bool> condition)
-    {
-        using var patience = new CancellationTokenSource(TimeSpan.FromSeconds(30));
-        while (!condition())
-        {
-            await Task.Delay(20, patience.Token);
-        }
-    }
+    private static Task UntilAsync(Func<bool> condition) => Eventually.UntilAsync(condition);
 }

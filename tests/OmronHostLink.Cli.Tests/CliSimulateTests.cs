@@ -64,17 +64,8 @@ public sealed class CliSimulateTests
         await using HostlinkProcess process = HostlinkProcess.Start("simulate", "--tcp", "127.0.0.1:0", "--ready-file", ready);
         try
         {
-            var clock = Stopwatch.StartNew();
-            while (!File.Exists(ready))
-            {
-                if (process.HasExited)
-                {
-                    throw new InvalidOperationException("The simulator ended before it was ready: " + process.Err);
-                }
-
-                clock.Elapsed.Should().BeLessThan(TimeSpan.FromSeconds(20));
-                await Task.Delay(10);
-            }
+            await Eventually.UntilAsync(() => File.Exists(ready) || process.HasExited, "the simulator writes its ready file", () => process.Err);
+            File.Exists(ready).Should().BeTrue("the simulator ended before it was ready: " + process.Err);
 
             // As the README does: read the moment the file is there.
             string endpoint = (await File.ReadAllTextAsync(ready)).Trim();

@@ -92,18 +92,8 @@ public sealed class CliSimulatorCommandTests
 
     internal static async Task<string> WaitForEndpointAsync(Func<string> output)
     {
-        var deadline = DateTime.UtcNow.AddSeconds(10);
-        while (DateTime.UtcNow < deadline)
-        {
-            Match m = Regex.Match(output(), @"on (127\.0\.0\.1:\d+)\.");
-            if (m.Success)
-            {
-                return m.Groups[1].Value;
-            }
-
-            await Task.Delay(20);
-        }
-
-        throw new TimeoutException("The simulator did not report its end point: " + output());
+        Match Endpoint() => Regex.Match(output(), @"on (127\.0\.0\.1:\d+)\.");
+        await Eventually.UntilAsync(() => Endpoint().Success, "the simulator reports its end point", output);
+        return Endpoint().Groups[1].Value;
     }
 }

@@ -147,12 +147,7 @@ public sealed class HostLinkClientRegistrationTests
             await host.DisposeAsync();
         }
 
-        var clock = Stopwatch.StartNew();
-        while (sim.Host.ActiveSessions != 0 && clock.Elapsed < Patience)
-        {
-            await Task.Delay(20);
-        }
-
+        await Eventually.UntilAsync(() => sim.Host.ActiveSessions == 0, "the simulator has no session left", patience: Patience);
         sim.Host.ActiveSessions.Should().Be(0, "disposing the container closes the client's connection");
     }
 

@@ -148,7 +148,7 @@ public class FinsSimulatorTests
         await using RawHost host = RawHost.Start(plc);
         (await TransactAsync(host, new RunCommand(FinsCpuMode.Run))).EndCode.Raw.Should().Be(0);
         plc.Mode.Should().Be(PlcMode.Run);
-        FinsCpuStatus status = FinsCpuStatus.Read((await TransactAsync(host, new CpuUnitStatusReadCommand())).Data.Span);
+        FinsCpuStatus status = FinsCpuStatus.Read((await TransactAsync(host, FinsCommands.CpuUnitStatusReadCommand)).Data.Span);
         status.Mode.Should().Be(FinsCpuMode.Run);
         status.IsRunning.Should().BeTrue();
         status.ErrorMessage.Should().Be("HELLO");
@@ -173,7 +173,7 @@ public class FinsSimulatorTests
 
         var when = new DateTime(2024, 5, 17, 13, 45, 30);
         (await TransactAsync(host, new ClockWriteCommand(when))).EndCode.Code.Should().Be(0);
-        FinsClock clock = FinsClock.Read((await TransactAsync(host, new ClockReadCommand())).Data.Span);
+        FinsClock clock = FinsClock.Read((await TransactAsync(host, FinsCommands.ClockReadCommand)).Data.Span);
         clock.Time.Should().BeCloseTo(when, TimeSpan.FromSeconds(2));
 
         FinsCycleTime.Read((await TransactAsync(host, new CycleTimeReadCommand())).Data.Span).Average.Should().Be(TimeSpan.FromMilliseconds(1));
@@ -190,7 +190,7 @@ public class FinsSimulatorTests
         (await TransactAsync(host, new ForcedSetResetCommand(FinsForceAction.ForceSet, new FinsMemoryAddress(FinsMemoryArea.CioBit, 1, 3)))).EndCode.Raw.Should().Be(0);
         host.Plc.WriteWord(PlcArea.Cio, 1, 0);
         (await host.TransactAsync(RawHost.Command("@00RR00010001"))).Should().Be(RawHost.Command("@00RR000008"));
-        (await TransactAsync(host, new ForcedSetResetCancelCommand())).EndCode.Raw.Should().Be(0);
+        (await TransactAsync(host, FinsCommands.ForcedCancelCommand)).EndCode.Raw.Should().Be(0);
         host.Plc.HasForcedBits.Should().BeFalse();
 
         host.Plc.Mode = PlcMode.Run;
@@ -220,7 +220,7 @@ public class FinsSimulatorTests
         await using RawHost host = RawHost.Start();
         FinsHeader header = FinsHeader.Direct(sid: 0x2A, responseWait: 10);
         var clock = System.Diagnostics.Stopwatch.StartNew();
-        FinsResponse r = await TransactAsync(host, new CpuUnitStatusReadCommand(), header);
+        FinsResponse r = await TransactAsync(host, FinsCommands.CpuUnitStatusReadCommand, header);
         clock.Elapsed.Should().BeGreaterThanOrEqualTo(TimeSpan.FromMilliseconds(95));
         r.Header.Sid.Should().Be(0x2A);
     }

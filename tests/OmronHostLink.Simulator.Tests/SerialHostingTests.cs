@@ -58,7 +58,7 @@ public sealed class SerialHostingTests
             }
 
             await pair.CloseAsync();
-            await Task.Delay(300);
+            await Eventually.UntilAsync(() => { lock (reports) { return reports.Count > 0; } }, "the host reports the lost line");
             host.Completion.IsCompleted.Should().BeFalse("the host waits for the line to come back");
             again = await pair.RestartAsync();
 

@@ -63,8 +63,12 @@ public sealed class InProcessLine : IAsyncDisposable
     /// <summary>Frames the client has sent.</summary>
     public int FramesSent => Volatile.Read(ref _sent);
 
+    /// <remarks>
+    /// Without <paramref name="options"/> the client reads by area only (<see cref="CompoundReadMode.Off"/>), so that
+    /// tests which count frames count the reads they are about, not an MM and a QQ registration.
+    /// </remarks>
     public static InProcessLine Start(HostLinkClientOptions? options = null, VirtualPlcOptions? plcOptions = null)
-        => new(new VirtualPlc(plcOptions), options ?? new HostLinkClientOptions { LineTiming = new LineTiming(115200, 11) });
+        => new(new VirtualPlc(plcOptions), options ?? new HostLinkClientOptions { LineTiming = new LineTiming(115200, 11), UseCompoundRead = CompoundReadMode.Off });
 
     public async ValueTask DisposeAsync()
     {

@@ -136,6 +136,7 @@ public sealed class MosquittoBroker : IAsyncDisposable
 
         // Ready when the port accepts connections; a broker that exits (port taken, bad configuration) fails at once.
         var clock = Stopwatch.StartNew();
+        using var tick = new PeriodicTimer(TimeSpan.FromMilliseconds(50));
         while (true)
         {
             if (exited.Task.IsCompleted)
@@ -153,7 +154,7 @@ public sealed class MosquittoBroker : IAsyncDisposable
                 throw new InvalidOperationException($"mosquitto did not listen on 127.0.0.1:{Port} within {StartTimeout.TotalSeconds} s.\n{Log}");
             }
 
-            await Task.WhenAny(exited.Task, Task.Delay(50)).ConfigureAwait(false);
+            await Task.WhenAny(exited.Task, tick.WaitForNextTickAsync().AsTask()).ConfigureAwait(false);
         }
     }
 

@@ -25,7 +25,6 @@ public class ProgramProcess : IAsyncDisposable
     /// <summary>SIGTERM, what a service manager sends to stop a service.</summary>
     public const int SigTerm = 15;
 
-    private static readonly TimeSpan PollInterval = TimeSpan.FromMilliseconds(20);
 
     private readonly Process _process;
     private readonly Queue<(string Text, bool FromStandardError)> _lines = new();
@@ -237,24 +236,21 @@ public class ProgramProcess : IAsyncDisposable
     protected async Task<bool> WaitUntilAsync(Func<bool> condition, TimeSpan timeout)
     {
         ArgumentNullException.ThrowIfNull(condition);
-        var clock = Stopwatch.StartNew();
-        while (!condition())
+        try
         {
-            if (_process.HasExited)
-            {
-                await WaitForExitAsync(TimeSpan.FromSeconds(5)).ConfigureAwait(false);
-                return condition();
-            }
-
-            if (clock.Elapsed > timeout)
-            {
-                return false;
-            }
-
-            await Task.Delay(PollInterval).ConfigureAwait(false);
+            await Eventually.UntilAsync(() => condition() || _process.HasExited, "the program prints it or exits", patience: timeout).ConfigureAwait(false);
+        }
+        catch (TimeoutException)
+        {
+            return false;
         }
 
-        return true;
+        if (!condition() && _process.HasExited)
+        {
+            await WaitForExitAsync(TimeSpan.FromSeconds(5)).ConfigureAwait(false);
+        }
+
+        return condition();
     }
 
     /// <summary>Called with each line as it comes (on a thread of the output reader, for either stream).</summary>

@@ -30,6 +30,9 @@ public sealed class ScriptedPlc : IAsyncDisposable
 
     public ConcurrentQueue<string> Received { get; } = new();
 
+    /// <summary>The clock a <see cref="Reply.Delay"/> is kept on. Default the system's.</summary>
+    public TimeProvider Time { get; init; } = TimeProvider.System;
+
     public int ReceivedCount(Func<string, bool> predicate) => Received.Count(predicate);
 
     private async Task RunAsync()
@@ -68,8 +71,9 @@ public sealed class ScriptedPlc : IAsyncDisposable
 
                 if (reply.Delay > TimeSpan.Zero)
                 {
-                    // A late answer: later frames wait in the link meanwhile, so answers stay in order as on a real line.
-                    await Task.Delay(reply.Delay, _stop.Token);
+                    // A late answer (the emulated PLC's latency, on its clock): later frames wait in the link meanwhile,
+                    // so answers stay in order as on a real line.
+                    await Task.Delay(reply.Delay, Time, _stop.Token);
                 }
 
                 await SendAsync(reply);

@@ -1,5 +1,6 @@
 using System.CommandLine;
 using System.Globalization;
+using OmronHostLink.Protocol.Fins;
 
 namespace OmronHostLink.Cli.Commands;
 

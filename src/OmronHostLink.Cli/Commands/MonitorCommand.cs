@@ -10,7 +10,7 @@ internal static class MonitorCommand
     public static Command Create(CliContext context)
     {
         var command = new Command("monitor", "Poll memory and print the values that change (all of them on the first poll). Ctrl+C stops.");
-        var connection = new ConnectionOptions();
+        var connection = new ConnectionOptions(plansReads: true);
         connection.AddTo(command);
         var address = new Argument<string>("address") { Description = "D100, CIO100.05, W30, H10, A448, T5, C7, E1_100." };
         var count = new Argument<string?>("count") { Description = "Number of values (default 1).", Arity = ArgumentArity.ZeroOrOne };

@@ -226,7 +226,7 @@ internal static class SimulateCommand
         var serial = new SerialLineSettings
         {
             PortName = portName,
-            BaudRate = baudRate ?? 9600,
+            BaudRate = baudRate ?? HostLinkSerialSettings.BaudRateSetting.Default!.Value,
             DataBits = parse.GetValue(dataBits),
             Parity = parse.GetValue(parity) switch { "none" => SerialParity.None, "odd" => SerialParity.Odd, _ => SerialParity.Even },
             StopBits = (SerialStopBits)parse.GetValue(stopBits),

@@ -1,5 +1,6 @@
 using System.Globalization;
 using OmronHostLink.Protocol;
+using OmronHostLink.Protocol.CMode;
 
 namespace OmronHostLink.Cli.Detection;
 
@@ -99,11 +100,11 @@ internal sealed class ProbeReply
 
         ReadOnlySpan<byte> header = frame.Slice(3, 2);
         int textLength = check.FirstFrameTextLength;
-        if (header.SequenceEqual("IC"u8) && textLength == 0)
+        if (CModeHeaders.Is(header, CModeCommands.UndefinedCommand.Header) && textLength == 0)
         {
             Ic = true;
         }
-        else if (header.SequenceEqual("TS"u8) && textLength == 2 && HexAscii.TryParseByte(frame.Slice(5, 2), out byte code))
+        else if (CModeHeaders.Is(header, CModeCommands.Test.Header) && textLength == 2 && HexAscii.TryParseByte(frame.Slice(5, 2), out byte code))
         {
             EndCode = code.ToString("X2", CultureInfo.InvariantCulture);
         }

@@ -126,7 +126,7 @@ internal sealed class ExchangePairer
     {
         frame.Direction = LineDirection.ToPlc;
         var exchange = new MonitoredExchange(frame);
-        if (frame.IsInitialize || exchange.Header == CModeHeaders.Abort)
+        if (frame.IsInitialize || exchange.Header == CModeCommands.Abort.Header)
         {
             exchange.Close(ExchangeStatus.NoAnswerExpected);
             events.Add(new MonitorEvent.Exchanged(exchange));
@@ -169,7 +169,7 @@ internal sealed class ExchangePairer
         }
 
         string? header = frame.Header;
-        if (header == "IC")
+        if (header == CModeCommands.UndefinedCommand.Header)
         {
             return true;
         }
@@ -180,13 +180,13 @@ internal sealed class ExchangePairer
         }
 
         ReadOnlySpan<byte> text = frame.Bytes.AsSpan(5, frame.Check.FcsAt - 5);
-        if (header == CModeHeaders.Test)
+        if (header == CModeCommands.Test.Header)
         {
             // The echo of the command, or an error answer (an end code alone).
             return frame.Bytes.AsSpan().SequenceEqual(open.CommandFrames[0].Bytes) || text.Length == 2;
         }
 
-        return header == CModeHeaders.Fins
+        return header == CModeCommands.Fins.Header
             ? FrameDirection.IsFinsAnswer(text, frame.IsFinal)
             : FrameDirection.IsCModeAnswer(header, text, frame.IsFinal, CModeCommandTable.Standard);
     }

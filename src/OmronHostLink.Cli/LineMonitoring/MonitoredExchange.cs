@@ -125,13 +125,13 @@ internal sealed class MonitoredExchange
     private void ReadEndCode(byte[] answer)
     {
         string? header = Answer!.Header;
-        if (header == "IC")
+        if (header == CModeCommands.UndefinedCommand.Header)
         {
             EndCode = "IC";
             return;
         }
 
-        if (header == CModeHeaders.Test)
+        if (header == CModeCommands.Test.Header)
         {
             // TS is answered with its own text; an error answer carries the end code alone.
             int length = Answer.Check.FirstFrameTextLength;
@@ -151,7 +151,7 @@ internal sealed class MonitoredExchange
             EndCode = Encoding.ASCII.GetString(text.Slice(sub, 2));
         }
 
-        if (header == CModeHeaders.Fins && EndCode == "00")
+        if (header == CModeCommands.Fins.Header && EndCode == "00")
         {
             try
             {

@@ -2,25 +2,17 @@ using System.Text.Json;
 using Microsoft.Extensions.Configuration;
 using Microsoft.Extensions.Configuration.Json;
 using Microsoft.Extensions.Logging;
-using OmronHostLink.Gateway.Mqtt;
-using OmronHostLink.Gateway.Simulation;
-using OmronHostLink.Gateway.Sparkplug;
-using OmronHostLink.Gateway.Telemetry;
 
 namespace OmronHostLink.Gateway.Configuration;
 
 /// <summary>
-/// The checks that no options validator can make, run before the host is built: a configuration file that cannot be
+/// The checks that no section's validator can make, run before the host is built: a configuration file that cannot be
 /// read (a JSON syntax error, a key given twice, also in another case), a misspelt or unknown section, a log level
-/// that does not exist, a misspelt key of a disabled output. Each problem names its file and line, or its key.
+/// that does not exist (the host could not even be built). Each problem names its file and line, or its key. Every
+/// key within a section is the section's validator's (<see cref="SectionValidator{TOptions}"/>).
 /// </summary>
-public static class ConfigurationPreflight
+internal static class ConfigurationPreflight
 {
-    /// <summary>The sections the gateway reads, besides the generic host's own.</summary>
-    public static readonly string[] Sections =
-    [
-        GatewayOptions.SectionName, SimulatorOptions.SectionName, MqttOptions.SectionName, SparkplugOptions.SectionName, TelemetryExport.SectionName, "Logging",
-    ];
 
     /// <summary>Keys the generic host reads at the top level of the configuration files.</summary>
     private static readonly string[] HostKeys = ["AllowedHosts", "urls", "environment", "applicationName", "contentRoot", "Kestrel"];
@@ -72,33 +64,19 @@ public static class ConfigurationPreflight
     }
 
     /// <summary>Problems of the configuration as a whole, each naming its key.</summary>
-    public static List<string> Check(IConfiguration configuration)
+    /// <param name="configuration">The whole configuration.</param>
+    /// <param name="sections">The sections the gateway reads, besides the generic host's own.</param>
+    public static List<string> Check(IConfiguration configuration, IReadOnlyList<string> sections)
     {
         ArgumentNullException.ThrowIfNull(configuration);
+        ArgumentNullException.ThrowIfNull(sections);
         var failures = new List<string>();
-        CheckSections(configuration, failures);
+        CheckSections(configuration, sections, failures);
         CheckLogLevels(configuration, failures);
-        failures.AddRange(ConfigurationSchema.Check(configuration.GetSection(TelemetryExport.SectionName), typeof(TelemetryExport.Settings)));
-        failures.AddRange(TelemetryExport.EndpointProblems(configuration));
-        CheckDisabledOutput(configuration.GetSection(MqttOptions.SectionName), typeof(MqttOptions), failures);
-        CheckDisabledOutput(configuration.GetSection(SparkplugOptions.SectionName), typeof(SparkplugOptions), failures);
         return failures;
     }
 
-    /// <summary>
-    /// An output section with <c>Enabled: false</c> is never bound or validated, yet a misspelt key or a wrong type in it
-    /// is still a mistake that would surface only when the output is switched on: its keys and types are checked here.
-    /// An enabled section is checked by its own validator.
-    /// </summary>
-    private static void CheckDisabledOutput(IConfigurationSection section, Type options, List<string> failures)
-    {
-        if (section.Exists() && bool.TryParse(section["Enabled"], out bool enabled) && !enabled)
-        {
-            failures.AddRange(ConfigurationSchema.Check(section, options));
-        }
-    }
-
-    private static void CheckSections(IConfiguration configuration, List<string> failures)
+    private static void CheckSections(IConfiguration configuration, IReadOnlyList<string> sections, List<string> failures)
     {
         // A file's top level is the gateway's to define; environment variables and the command line also carry the
         // machine's own (PATH, HOME), so there only a near miss of a section's name is taken for a typo.
@@ -116,19 +94,19 @@ public static class ConfigurationPreflight
 
         foreach (IConfigurationSection section in configuration.GetChildren())
         {
-            if (Sections.Contains(section.Key, StringComparer.OrdinalIgnoreCase) || HostKeys.Contains(section.Key, StringComparer.OrdinalIgnoreCase))
+            if (sections.Contains(section.Key, StringComparer.OrdinalIgnoreCase) || HostKeys.Contains(section.Key, StringComparer.OrdinalIgnoreCase))
             {
                 continue;
             }
 
-            string? near = Sections.FirstOrDefault(s => Distance(s.ToUpperInvariant(), section.Key.ToUpperInvariant()) <= 2);
+            string? near = sections.FirstOrDefault(s => Distance(s.ToUpperInvariant(), section.Key.ToUpperInvariant()) <= 2);
             if (near is not null && (section.GetChildren().Any() || fromFiles.Contains(section.Key)))
             {
-                failures.Add($"{section.Key} is not a section the gateway reads; did you mean {near}? The sections are {string.Join(", ", Sections)}.");
+                failures.Add($"{section.Key} is not a section the gateway reads; did you mean {near}? The sections are {string.Join(", ", sections)}.");
             }
             else if (near is null && fromFiles.Contains(section.Key))
             {
-                failures.Add($"{section.Key} is not a section the gateway reads; the sections are {string.Join(", ", Sections)}.");
+                failures.Add($"{section.Key} is not a section the gateway reads; the sections are {string.Join(", ", sections)}.");
             }
         }
     }

@@ -15,7 +15,7 @@ namespace OmronHostLink.Gateway.Configuration;
 /// <c>2s</c>, <c>1.5min</c> or <c>00:00:02</c>; a bare number is refused rather than guessed. <see cref="Bind"/> reads
 /// them so; the binder alone would not. Enums take their member names in any case, not numbers. Empty values count as unset.
 /// </remarks>
-public static class ConfigurationSchema
+internal static class ConfigurationSchema
 {
     /// <summary>The problems of <paramref name="section"/> read as <paramref name="type"/>, each naming its key.</summary>
     /// <param name="section">The section (<c>HostLink</c>, <c>Simulator</c>).</param>

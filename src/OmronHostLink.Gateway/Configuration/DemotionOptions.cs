@@ -5,7 +5,7 @@ namespace OmronHostLink.Gateway.Configuration;
 /// a multidrop line keep their poll rate (the watch's <see cref="WatchOptions.DemoteAfter"/> and
 /// <see cref="WatchOptions.DemotionPeriod"/>).
 /// </summary>
-public sealed class DemotionOptions
+internal sealed class DemotionOptions
 {
     /// <summary>
     /// After how many polls in a row the unit did not answer (each with the link's read retries) it is demoted: its

@@ -1,7 +1,7 @@
 namespace OmronHostLink.Gateway.Configuration;
 
 /// <summary>The <c>HostLink</c> section: the links the worker polls.</summary>
-public sealed class GatewayOptions
+internal sealed class GatewayOptions
 {
     /// <summary>The configuration section these options bind to.</summary>
     public const string SectionName = "HostLink";
@@ -15,7 +15,7 @@ public sealed class GatewayOptions
 /// and <see cref="Groups"/>, the link's section holds the client's settings as the library reads them everywhere
 /// (<see cref="Client"/>: <c>Serial</c>, <c>Tcp</c>, <c>CommandSet</c>, <c>TurnaroundAllowance</c>, <c>ReadRetries</c>, …).
 /// </summary>
-public sealed class LinkOptions
+internal sealed class LinkOptions
 {
     /// <summary>False to keep the link in the file without polling it (for example in one environment only). Default true.</summary>
     public bool Enabled { get; set; } = true;
@@ -48,7 +48,7 @@ public sealed class LinkOptions
 }
 
 /// <summary>Capped exponential backoff: <see cref="Initial"/>, doubling up to <see cref="Max"/>.</summary>
-public sealed class BackoffOptions
+internal sealed class BackoffOptions
 {
     /// <summary>The first wait after a PLC stops answering. Default 1 s.</summary>
     public TimeSpan Initial { get; set; } = TimeSpan.FromSeconds(1);
@@ -58,7 +58,7 @@ public sealed class BackoffOptions
 }
 
 /// <summary>A block of PLC memory read every <see cref="Interval"/> and logged.</summary>
-public sealed class PollGroupOptions
+internal sealed class PollGroupOptions
 {
     /// <summary>The PLC's Host Link unit number, 0-31. Default 0.</summary>
     public int Unit { get; set; }
@@ -78,12 +78,18 @@ public sealed class PollGroupOptions
     /// <summary>EveryPoll (default) or OnChange (only values that differ from the last ones logged).</summary>
     public string Log { get; set; } = nameof(PollLogMode.EveryPoll);
 
-    /// <summary>Allow writes to this group from MQTT (with <c>Mqtt:Writes:Enabled</c>). Default false.</summary>
+    /// <summary>Allow writes to this group from MQTT and Sparkplug B (with their <c>Writes:Enabled</c>). Default false.</summary>
     public bool Writable { get; set; }
+
+    /// <summary>
+    /// For a group made from a row of a tag file: the file and line (<c>TagFiles:0:Path /etc/tags.csv, line 3</c>), which
+    /// messages name instead of a key under <c>Groups</c>; null for a group under <c>Groups</c>.
+    /// </summary>
+    internal string? Row { get; init; }
 }
 
 /// <summary>When a poll group's values are logged.</summary>
-public enum PollLogMode
+internal enum PollLogMode
 {
     /// <summary>After every successful poll.</summary>
     EveryPoll,

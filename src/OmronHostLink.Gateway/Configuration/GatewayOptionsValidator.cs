@@ -1,51 +1,28 @@
-using Microsoft.Extensions.Configuration;
-using Microsoft.Extensions.Options;
 using OmronHostLink.Transports;
-using OmronHostLink.Gateway.Polling;
 
 namespace OmronHostLink.Gateway.Configuration;
 
 /// <summary>
 /// Checks the <c>HostLink</c> section before anything starts, naming each bad field by its configuration path
-/// (<c>HostLink:Links:line1:Groups:levels:Address</c>) so the message points at the line to fix.
+/// (<c>HostLink:Links:line1:Groups:levels:Address</c>, or a tag file's path and line) so the message points at the line
+/// to fix; every group is checked as the gateway will poll it, and so is every rule the outputs add (<see cref="IGroupRule"/>).
 /// </summary>
-public sealed class GatewayOptionsValidator : IValidateOptions<GatewayOptions>
+/// <param name="gateway">The configuration as the gateway reads it.</param>
+internal sealed class GatewayOptionsValidator(GatewayConfiguration gateway) : SectionValidator<GatewayOptions>(gateway, GatewayOptions.SectionName)
 {
     /// <summary>The longest poll interval or retry wait the library's watch accepts.</summary>
     private static readonly TimeSpan LongestWait = TimeSpan.FromDays(1);
 
-    private readonly IConfiguration? _configuration;
-
-    /// <summary>Checks the bound options only.</summary>
-    public GatewayOptionsValidator()
-    {
-    }
-
-    /// <summary>Checks the section as written first (<see cref="ConfigurationSchema"/>), then the bound options.</summary>
-    /// <param name="configuration">The configuration the options are bound from.</param>
-    public GatewayOptionsValidator(IConfiguration configuration)
-    {
-        _configuration = configuration;
-    }
-
     /// <inheritdoc/>
-    public ValidateOptionsResult Validate(string? name, GatewayOptions options)
+    protected override void Check(GatewayOptions options, List<string> failures)
     {
-        ArgumentNullException.ThrowIfNull(options);
-        if (_configuration is not null
-            && ConfigurationSchema.Check(_configuration.GetSection(GatewayOptions.SectionName), typeof(GatewayOptions)) is { Count: > 0 } written)
-        {
-            // The bound options miss what could not be read; judging them would only add consequences of these.
-            return ValidateOptionsResult.Fail(written);
-        }
-
-        var failures = new List<string>();
         const string root = GatewayOptions.SectionName + ":Links";
         if (!options.Links.Values.Any(l => l is { Enabled: true }))
         {
             failures.Add($"{root}: no enabled link is configured; add at least one link with a Serial or Tcp setting and a poll group.");
         }
 
+        IReadOnlyList<IGroupRule> rules = Gateway.GroupRules;
         foreach ((string linkName, LinkOptions? link) in options.Links)
         {
             if (link is null || !link.Enabled)
@@ -53,23 +30,37 @@ public sealed class GatewayOptionsValidator : IValidateOptions<GatewayOptions>
                 continue;
             }
 
-            ValidateLink($"{root}:{linkName}", link, failures);
+            ValidateLink(linkName, $"{root}:{linkName}", link, rules, failures);
         }
-
-        return failures.Count == 0 ? ValidateOptionsResult.Success : ValidateOptionsResult.Fail(failures);
     }
 
-    private static void ValidateLink(string path, LinkOptions link, List<string> failures)
+    /// <summary>Why <paramref name="unit"/> is no unit number; null when it is one.</summary>
+    internal static string? UnitProblem(int unit)
+        => HostLinkRules.CheckUnitNumber(unit) is { } problem ? $"{problem}." : null;
+
+    /// <summary>Why <paramref name="interval"/> is no poll interval; null when it is one.</summary>
+    internal static string? IntervalProblem(TimeSpan interval)
+        => interval <= TimeSpan.Zero || interval > LongestWait ? $"must be more than 0 and at most 1 day; it is {interval}." : null;
+
+    /// <summary>Why <paramref name="log"/> is no log mode; null when it is one.</summary>
+    internal static string? LogProblem(string? log)
+        => !Enum.TryParse(log, ignoreCase: true, out PollLogMode mode) || !Enum.IsDefined(mode) || int.TryParse(log, out _)
+            ? $"'{log}' is not EveryPoll or OnChange."
+            : null;
+
+    private static void ValidateLink(string linkName, string path, LinkOptions link, IReadOnlyList<IGroupRule> rules, List<string> failures)
     {
+        // The client's keys were checked with the section as written, by the library's one validation.
         failures.AddRange(link.TagFileProblems.Select(p => $"{path}:{p}"));
-
-        // The client's keys: the library's one validation, as the DI package reports it.
-        failures.AddRange(link.Client.Validate().Select(p => p.Key.Length == 0 ? $"{path}: {p.Message}." : $"{path}:{p.Key}: {p.Message}."));
-
         // A URL or a dotted number that is no IPv4 address would be looked up as a host name, and retried for ever.
         if (link.Client.Tcp.Host is { Length: > 0 } host && HostSyntax.Problem(host.Trim()) is { } problem)
         {
             failures.Add($"{path}:Tcp '{host}' does not name a host: {problem}.");
+        }
+
+        if (link.CommandSet == HostLinkCommandSet.Fins && link.Client.HostLinkCompatibleMode is { } mode)
+        {
+            failures.Add($"{path}:HostLinkCompatibleMode {mode} checks how a unit frames C-mode answers; with CommandSet Fins it would be ignored. Remove it, or set CommandSet CMode.");
         }
 
         if (link.Backoff is null)
@@ -94,61 +85,74 @@ public sealed class GatewayOptionsValidator : IValidateOptions<GatewayOptions>
         }
 
         DemotionOptions.Validate(path, link.Demotion, failures);
-        if (link.Groups.Count == 0)
+        if (link.Groups.Count == 0 && link.TagFileProblems.Count == 0)
         {
             failures.Add($"{path}:Groups: the link has no poll group.");
         }
 
-        foreach ((string groupName, PollGroupOptions? group) in link.Groups)
+        foreach (IGroupRule rule in rules)
         {
-            if (group is not null)
+            rule.CheckLink(linkName, path, failures);
+        }
+
+        foreach (ConfiguredGroup group in ConfiguredGroup.Of(linkName, link))
+        {
+            // The outputs' rules judge groups the section accepts: a group that cannot be read has one problem to fix first.
+            if (ValidateGroup(group, link.CommandSet, failures))
             {
-                ValidateGroup($"{path}:Groups:{groupName}", group, link.CommandSet, failures);
+                foreach (IGroupRule rule in rules)
+                {
+                    rule.CheckGroup(group, link, failures);
+                }
             }
         }
     }
 
-    private static void ValidateGroup(string path, PollGroupOptions group, HostLinkCommandSet protocol, List<string> failures)
+    /// <summary>Adds the group's problems to <paramref name="failures"/>; true when it has none.</summary>
+    private static bool ValidateGroup(ConfiguredGroup configured, HostLinkCommandSet protocol, List<string> failures)
     {
-        if (group.Unit is < 0 or > HostLinkUnit.MaxUnitNumber)
+        int before = failures.Count;
+        PollGroupOptions group = configured.Options;
+        if (UnitProblem(group.Unit) is { } unitProblem)
         {
-            failures.Add($"{path}:Unit must be 0-{HostLinkUnit.MaxUnitNumber}; it is {group.Unit}.");
+            failures.Add($"{configured.KeyOf("Unit")}: {unitProblem}");
         }
 
-        if (group.Interval <= TimeSpan.Zero || group.Interval > LongestWait)
+        if (IntervalProblem(group.Interval) is { } intervalProblem)
         {
-            failures.Add($"{path}:Interval must be more than 0 and at most 1 day; it is {group.Interval}.");
+            failures.Add($"{configured.KeyOf("Interval")} {intervalProblem}");
         }
 
-        if (!Enum.TryParse(group.Log, ignoreCase: true, out PollLogMode mode) || !Enum.IsDefined(mode) || int.TryParse(group.Log, out _))
+        if (LogProblem(group.Log) is { } logProblem)
         {
-            failures.Add($"{path}:Log '{group.Log}' is not EveryPoll or OnChange.");
+            failures.Add($"{configured.KeyOf("Log")} {logProblem}");
         }
 
         bool typeOk = PollValueTypes.TryParse(group.Type, out PlcValueType type);
         if (!typeOk)
         {
-            failures.Add($"{path}:Type '{group.Type}' is not one of {PollValueTypes.Names}.");
+            failures.Add($"{configured.KeyOf("Type")} '{group.Type}' is not one of {PollValueTypes.Names}.");
         }
 
         int maxCount = type == PlcValueType.String ? 20000 : 10000;
         if (group.Count < 1 || group.Count > maxCount)
         {
-            failures.Add($"{path}:Count must be 1-{maxCount}; it is {group.Count}.");
-            return;
+            failures.Add($"{configured.KeyOf("Count")} must be 1-{maxCount}; it is {group.Count}.");
+            return false;
         }
 
+        string addressKey = configured.KeyOf("Address");
         if (!PlcAddress.TryParse(group.Address, out PlcAddress address))
         {
             failures.Add(string.IsNullOrWhiteSpace(group.Address)
-                ? $"{path}:Address is empty; set the first address to read, e.g. D100."
-                : $"{path}:Address {Reason(group.Address)}");
-            return;
+                ? $"{addressKey} is empty; set the first address to read, e.g. D100."
+                : $"{addressKey} {Reason(group.Address)}");
+            return false;
         }
 
         if (!typeOk)
         {
-            return;
+            return false;
         }
 
         if (type == PlcValueType.Bit)
@@ -157,20 +161,20 @@ public sealed class GatewayOptionsValidator : IValidateOptions<GatewayOptions>
             {
                 if (group.Count != 1)
                 {
-                    failures.Add($"{path}:Count must be 1 for a timer/counter completion flag ({address}); it is {group.Count}.");
-                    return;
+                    failures.Add($"{configured.KeyOf("Count")} must be 1 for a timer/counter completion flag ({address}); it is {group.Count}.");
+                    return false;
                 }
             }
             else if (!address.IsBit)
             {
-                failures.Add($"{path}:Address {address} names a word; type bit needs a bit address such as {address}.00 (or a timer/counter number).");
-                return;
+                failures.Add($"{addressKey} {address} names a word; type bit needs a bit address such as {address}.00 (or a timer/counter number).");
+                return false;
             }
         }
         else if (address.IsBit)
         {
-            failures.Add($"{path}:Address {address} names a bit; type {type.ToString().ToLowerInvariant()} needs a word address such as {address.AsWord()} (or use type bit).");
-            return;
+            failures.Add($"{addressKey} {address} names a bit; type {type.ToString().ToLowerInvariant()} needs a word address such as {address.AsWord()} (or use type bit).");
+            return false;
         }
 
         try
@@ -179,8 +183,10 @@ public sealed class GatewayOptionsValidator : IValidateOptions<GatewayOptions>
         }
         catch (ArgumentException e)
         {
-            failures.Add($"{path}: {group.Count} × {type.ToString().ToLowerInvariant()} from {address}: {StripParamName(e)}");
+            failures.Add($"{configured.Key}: {group.Count} × {type.ToString().ToLowerInvariant()} from {address}: {ErrorText.Of(e)}");
         }
+
+        return failures.Count == before;
     }
 
     private static string Reason(string text)
@@ -194,13 +200,5 @@ public sealed class GatewayOptionsValidator : IValidateOptions<GatewayOptions>
         {
             return e.Message;
         }
-    }
-
-    // ArgumentException.Message appends " (Parameter 'x')"; the path already names the field.
-    private static string StripParamName(ArgumentException e)
-    {
-        string message = e.Message;
-        int at = e.ParamName is null ? -1 : message.LastIndexOf(" (Parameter '", StringComparison.Ordinal);
-        return at >= 0 ? message.Substring(0, at) : message;
     }
 }

@@ -9,7 +9,7 @@ namespace OmronHostLink.Gateway.Configuration;
 /// address, or a DNS name (RFC 1123 labels). A URL (<c>tcp://…</c>) or a dotted number that is no IPv4 address
 /// (<c>127.0.0.1.5</c>) would otherwise be looked up as a host name, and retried for ever.
 /// </summary>
-public static class HostSyntax
+internal static class HostSyntax
 {
     /// <summary>Why <paramref name="host"/> is not a host name or address; null when it is one.</summary>
     public static string? Problem(string host)

@@ -8,25 +8,18 @@ namespace OmronHostLink.Gateway.Configuration;
 /// singleton named after the link: the link's section is a client section of the DI package (<c>Serial</c>,
 /// <c>Tcp</c>, <c>CommandSet</c>, …) with the worker's own <c>Enabled</c>, <c>Backoff</c> and <c>Groups</c> beside.
 /// </summary>
-public static class LinkClients
+internal static class LinkClients
 {
     /// <summary>
-    /// Registers the clients of the enabled links in <paramref name="configuration"/>'s <c>HostLink</c> section. An
-    /// invalid section registers none: the host then fails at start with the worker's own messages, which name the
-    /// link's keys, and with nothing else.
+    /// Registers the clients of the enabled links of <paramref name="gateway"/>'s <c>HostLink</c> section. Call it only
+    /// for a section that passes its check: an invalid section registers none, and the host then fails at start with
+    /// the gateway's own messages, which name the link's keys, and with nothing else.
     /// </summary>
-    public static IServiceCollection AddLinkClients(this IServiceCollection services, IConfiguration configuration)
+    public static IServiceCollection AddLinkClients(this IServiceCollection services, GatewayConfiguration gateway)
     {
-        ArgumentNullException.ThrowIfNull(configuration);
-        if (!StartupCheck.Passes(configuration))
-        {
-            return services;
-        }
-
-        IConfigurationSection section = configuration.GetSection(GatewayOptions.SectionName);
-        var options = new GatewayOptions();
-        Bind(section, options);
-        foreach ((string name, LinkOptions link) in options.Links)
+        ArgumentNullException.ThrowIfNull(gateway);
+        IConfigurationSection section = gateway.Root.GetSection(GatewayOptions.SectionName);
+        foreach ((string name, LinkOptions link) in gateway.HostLink.Links)
         {
             if (link.Enabled)
             {
@@ -44,10 +37,18 @@ public static class LinkClients
         ArgumentNullException.ThrowIfNull(section);
         ArgumentNullException.ThrowIfNull(options);
         ConfigurationSchema.Bind(section, options);
+
+        // A link whose keys are all its client's (Tcp, Serial…) binds no worker key, and the binder would leave it out:
+        // it is a link all the same, and the check says what it lacks rather than that there is none.
+        foreach (IConfigurationSection link in section.GetSection(nameof(GatewayOptions.Links)).GetChildren())
+        {
+            options.Links.TryAdd(link.Key, new LinkOptions());
+        }
+
         foreach ((string name, LinkOptions link) in options.Links)
         {
             link.Client.Read(ClientKeys(section.GetSection($"Links:{name}")));
-            TagImport.TagFiles.AddGroups(link);
+            TagFiles.AddGroups(link);
         }
     }
 

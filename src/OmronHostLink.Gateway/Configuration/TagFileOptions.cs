@@ -4,7 +4,7 @@ namespace OmronHostLink.Gateway.Configuration;
 /// A CSV file of tags for one unit of a link (<c>HostLink:Links:NAME:TagFiles</c>): each row becomes a poll group, as
 /// if it were listed under <c>Groups</c>. See docs/tag-import.md.
 /// </summary>
-public sealed class TagFileOptions
+internal sealed class TagFileOptions
 {
     /// <summary>The file; a relative path is taken from the working directory.</summary>
     public string Path { get; set; } = "";

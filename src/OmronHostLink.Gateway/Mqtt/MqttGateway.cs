@@ -5,7 +5,9 @@ using Microsoft.Extensions.Options;
 using MQTTnet;
 using MQTTnet.Formatter;
 using MQTTnet.Protocol;
+using OmronHostLink.Gateway.Broker;
 using OmronHostLink.Gateway.Outputs;
+using OmronHostLink.Gateway.Queue;
 
 namespace OmronHostLink.Gateway.Mqtt;
 
@@ -16,7 +18,7 @@ namespace OmronHostLink.Gateway.Mqtt;
 /// reconnects with capped exponential backoff, and the queue keeps filling meanwhile. On a clean stop it sends what is
 /// queued (for a few seconds at most), publishes <c>offline</c> and disconnects.
 /// </summary>
-public sealed class MqttGateway : IHostedService, IAsyncDisposable
+internal sealed class MqttGateway : IHostedService, IAsyncDisposable
 {
     /// <summary>The worker's status while connected (the birth message).</summary>
     public const string Online = "online";
@@ -205,7 +207,7 @@ public sealed class MqttGateway : IHostedService, IAsyncDisposable
             {
                 // Unreachable, refused, TLS failure, an acknowledgement that did not come: start again from a fresh
                 // connection, so nothing half-done on the old one can reorder the queue.
-                (string reason, TimeSpan delay) = await _connection.FailedAsync(e, Describe).ConfigureAwait(false);
+                (string reason, TimeSpan delay) = await _connection.FailedAsync(e).ConfigureAwait(false);
                 if (_stopping)
                 {
                     return;
@@ -333,30 +335,5 @@ public sealed class MqttGateway : IHostedService, IAsyncDisposable
         {
             MqttLog.QueueOverflowed(_logger, dropped, _queue.Capacity, _time.GetElapsedTime(Interlocked.Read(ref _overflowSince)).TotalSeconds);
         }
-    }
-
-    private static string Describe(Exception e)
-    {
-        // The socket's own words ("Connection refused") say it all: the log names the broker already, and MQTTnet's
-        // wrapper would name it again as a DnsEndPoint ("host 'Unspecified/127.0.0.1:1883'").
-        for (Exception? x = e; x is not null; x = x.InnerException)
-        {
-            if (x is System.Net.Sockets.SocketException socket)
-            {
-                return socket.Message;
-            }
-        }
-
-        var parts = new List<string>();
-        for (Exception? x = e; x is not null; x = x.InnerException)
-        {
-            string text = x.Message.TrimEnd('.');
-            if (text.Length > 0 && !parts.Any(p => p.Contains(text, StringComparison.Ordinal)))
-            {
-                parts.Add(text);
-            }
-        }
-
-        return parts.Count == 0 ? e.GetType().Name : string.Join(": ", parts).Replace("Unspecified/", "", StringComparison.Ordinal);
     }
 }

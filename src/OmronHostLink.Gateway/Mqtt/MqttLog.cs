@@ -3,7 +3,7 @@ using Microsoft.Extensions.Logging;
 namespace OmronHostLink.Gateway.Mqtt;
 
 /// <summary>The MQTT output's log messages (source-generated), with structured fields: Broker, Topic, Queued, Reason.</summary>
-public static partial class MqttLog
+internal static partial class MqttLog
 {
     /// <summary>Event ids, for filters and tests.</summary>
     public static class Events
@@ -52,6 +52,9 @@ public static partial class MqttLog
 
         /// <summary>A retained command was cleared (an empty retained message on a command topic): ignored.</summary>
         public const int RetainedCommandCleared = 1114;
+
+        /// <summary>A write command failed inside the gateway (a bug; logged with the exception, answered as failed).</summary>
+        public const int WriteCrashed = 1115;
     }
 
     [LoggerMessage(EventId = Events.Connected, Level = LogLevel.Information, Message = "MQTT: connected to {Broker} as {ClientId}; publishing under {Prefix}/")]
@@ -98,4 +101,7 @@ public static partial class MqttLog
 
     [LoggerMessage(EventId = Events.RetainedCommandCleared, Level = LogLevel.Debug, Message = "MQTT: the retained command on {Topic} was cleared; nothing to do")]
     internal static partial void RetainedCommandCleared(ILogger logger, string topic);
+
+    [LoggerMessage(EventId = Events.WriteCrashed, Level = LogLevel.Error, Message = "MQTT write on {Topic}: the gateway failed on the command; it is answered as failed")]
+    internal static partial void WriteCrashed(ILogger logger, Exception exception, string topic);
 }

@@ -1,16 +1,14 @@
 using System.Diagnostics.Metrics;
+using OmronHostLink.Gateway.Configuration;
+using OmronHostLink.Gateway.Queue;
 
 namespace OmronHostLink.Gateway.Mqtt;
 
 /// <summary>
-/// The MQTT output's instruments on the worker's meter <c>OmronHostLink.Gateway</c>
-/// (<c>dotnet-counters monitor -n OmronHostLink.Gateway --counters OmronHostLink.Gateway</c>).
+/// The MQTT output's instruments on the gateway's meter (<see cref="GatewayNames.Meter"/>).
 /// </summary>
-public sealed class MqttMetrics
+internal sealed class MqttMetrics
 {
-    /// <summary>The worker's meter name.</summary>
-    public const string MeterName = "OmronHostLink.Gateway";
-
     private readonly Counter<long> _dropped;
     private readonly Counter<long> _published;
     private readonly Counter<long> _connections;
@@ -21,7 +19,7 @@ public sealed class MqttMetrics
     {
         ArgumentNullException.ThrowIfNull(meterFactory);
         ArgumentNullException.ThrowIfNull(queue);
-        Meter meter = meterFactory.Create(MeterName);
+        Meter meter = meterFactory.Create(GatewayNames.Meter);
         _dropped = meter.CreateCounter<long>("hostlink.gateway.mqtt.dropped", "{message}", "Messages dropped because the outbound queue was full (the oldest go first).");
         _published = meter.CreateCounter<long>("hostlink.gateway.mqtt.published", "{message}", "Messages the broker acknowledged (QoS 1/2) or that were sent (QoS 0).");
         _connections = meter.CreateCounter<long>("hostlink.gateway.mqtt.connections", "{connection}", "Connections made to the broker.");

@@ -1,10 +1,13 @@
+using OmronHostLink.Gateway.Broker;
+using OmronHostLink.Gateway.Queue;
+
 namespace OmronHostLink.Gateway.Mqtt;
 
 /// <summary>
 /// The <c>Mqtt</c> section: publish tag values to an MQTT broker and, if allowed, accept writes. Without the section
 /// (or with <c>Enabled: false</c>) the worker only logs.
 /// </summary>
-public sealed class MqttOptions : MqttBrokerOptions
+internal sealed class MqttOptions : MqttBrokerOptions
 {
     /// <summary>The configuration section these options bind to.</summary>
     public const string SectionName = "Mqtt";
@@ -29,7 +32,7 @@ public sealed class MqttOptions : MqttBrokerOptions
     public string? StateDirectory { get; set; }
 
     /// <summary>The outage queue on disk (off by default).</summary>
-    public MqttDurableQueueOptions DurableQueue { get; set; } = new();
+    public DurableQueueOptions DurableQueue { get; set; } = new();
 
     /// <summary>How often the statistics of every link and unit are published (and at once when a unit's state changes). Default 10 s; 1 s to 1 h.</summary>
     public TimeSpan StatisticsInterval { get; set; } = TimeSpan.FromSeconds(10);
@@ -52,7 +55,7 @@ public sealed class MqttOptions : MqttBrokerOptions
 }
 
 /// <summary>The <c>Mqtt:Writes</c> section.</summary>
-public sealed class MqttWriteOptions
+internal sealed class MqttWriteOptions
 {
     /// <summary>
     /// Accept write commands on <c>{prefix}/{link}/{unit}/{tag}/set</c> for the poll groups marked <c>Writable</c>.

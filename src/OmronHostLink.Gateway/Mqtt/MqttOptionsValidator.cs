@@ -1,39 +1,27 @@
-using Microsoft.Extensions.Configuration;
-using Microsoft.Extensions.Options;
+using OmronHostLink.Gateway.Broker;
 using OmronHostLink.Gateway.Configuration;
+using OmronHostLink.Gateway.Queue;
 
 namespace OmronHostLink.Gateway.Mqtt;
 
 /// <summary>
-/// Checks the <c>Mqtt</c> section before anything starts, naming each bad key by its configuration path; also checks
-/// that the names of links and poll groups can be topic levels and that the groups marked <c>Writable</c> can be
-/// written.
+/// Checks the <c>Mqtt</c> section before anything starts, naming each bad key by its configuration path. What the JSON
+/// output needs of the links and groups (names that are topic levels) is its <see cref="MqttTopicNames"/> rule.
 /// </summary>
-public sealed class MqttOptionsValidator : IValidateOptions<MqttOptions>
+/// <param name="gateway">The configuration as the gateway reads it.</param>
+/// <param name="contentRoot">The host's content root, where relative paths start.</param>
+internal sealed class MqttOptionsValidator(GatewayConfiguration gateway, string contentRoot) : SectionValidator<MqttOptions>(gateway, MqttOptions.SectionName)
 {
-    private readonly IConfiguration _configuration;
-    private readonly string _contentRoot;
-
-    /// <summary>Creates the validator; the <c>HostLink</c> section is read from <paramref name="configuration"/>.</summary>
-    /// <param name="configuration">The whole configuration.</param>
-    /// <param name="contentRoot">The host's content root, where relative paths start.</param>
-    public MqttOptionsValidator(IConfiguration configuration, string contentRoot)
-    {
-        _configuration = configuration;
-        _contentRoot = contentRoot;
-    }
+    private static readonly TimeSpan ShortestStatisticsInterval = TimeSpan.FromSeconds(1);
+    private static readonly TimeSpan LongestStatisticsInterval = TimeSpan.FromHours(1);
 
     /// <inheritdoc/>
-    public ValidateOptionsResult Validate(string? name, MqttOptions options)
-    {
-        ArgumentNullException.ThrowIfNull(options);
-        if (!options.Enabled)
-        {
-            return ValidateOptionsResult.Success;
-        }
+    protected override bool IsOn(MqttOptions options) => Gateway.IsEnabled(Section);
 
+    /// <inheritdoc/>
+    protected override void Check(MqttOptions options, List<string> failures)
+    {
         const string root = MqttOptions.SectionName;
-        var failures = new List<string>(ConfigurationSchema.Check(_configuration.GetSection(root), typeof(MqttOptions)));
         MqttBrokerOptionsValidator.Validate(options, root, failures);
         if (!string.IsNullOrWhiteSpace(options.ClientId) && MqttTopics.LevelProblem(options.ClientId) is { } idProblem)
         {
@@ -51,16 +39,19 @@ public sealed class MqttOptionsValidator : IValidateOptions<MqttOptions>
             failures.Add($"{root}:QueueCapacity must be 1-10000000; it is {options.QueueCapacity}.");
         }
 
+        if (options.StatisticsInterval < ShortestStatisticsInterval || options.StatisticsInterval > LongestStatisticsInterval)
+        {
+            failures.Add($"{root}:StatisticsInterval must be 1s to 1h; it is {options.StatisticsInterval}.");
+        }
+
         ValidateDurableQueue(options, failures);
         ValidateReplyPrefixes(options, failures);
-        ValidateTags(failures);
-        return failures.Count == 0 ? ValidateOptionsResult.Success : ValidateOptionsResult.Fail(failures);
     }
 
     private void ValidateDurableQueue(MqttOptions options, List<string> failures)
     {
         const string key = MqttOptions.SectionName + ":DurableQueue";
-        MqttDurableQueueOptions? durable = options.DurableQueue;
+        DurableQueueOptions? durable = options.DurableQueue;
         if (durable is null)
         {
             return;
@@ -79,7 +70,7 @@ public sealed class MqttOptionsValidator : IValidateOptions<MqttOptions>
         if (durable.Enabled && failures.Count == 0)
         {
             // Opened now, so that a directory the service may not write is one line at start, not a crash later.
-            string path = OutboundQueueStore.JournalPath(options, _contentRoot);
+            string path = options.JournalPath(contentRoot);
             if (SqliteOutboundJournal.Problem(path) is { } problem)
             {
                 failures.Add($"{key}:Enabled: the queue's database {path} cannot be opened: {problem}. Set {MqttOptions.SectionName}:StateDirectory to a directory the gateway may write.");
@@ -140,98 +131,5 @@ public sealed class MqttOptionsValidator : IValidateOptions<MqttOptions>
                 return;
             }
         }
-    }
-
-    private void ValidateTags(List<string> failures)
-    {
-        GatewayOptions? worker = _configuration.GetSection(GatewayOptions.SectionName).Get<GatewayOptions>();
-        if (worker is null)
-        {
-            return;
-        }
-
-        foreach ((string linkName, LinkOptions? link) in worker.Links)
-        {
-            if (link is not { Enabled: true })
-            {
-                continue;
-            }
-
-            string path = $"{GatewayOptions.SectionName}:Links:{linkName}";
-            if (MqttTopics.LevelProblem(linkName) is { } linkProblem)
-            {
-                failures.Add($"{path}: the link's name is a topic level for MQTT and {linkProblem}.");
-            }
-            else if (linkName == MqttTopics.StatusLevel)
-            {
-                failures.Add($"{path}: a link cannot be named '{MqttTopics.StatusLevel}' with MQTT on: {{prefix}}/status/… holds the workers' status topics.");
-            }
-
-            foreach ((string groupName, PollGroupOptions? group) in link.Groups)
-            {
-                if (group is null)
-                {
-                    continue;
-                }
-
-                string groupPath = $"{path}:Groups:{groupName}";
-                if (MqttTopics.LevelProblem(groupName) is { } groupProblem)
-                {
-                    failures.Add($"{groupPath}: the group's name is a topic level for MQTT and {groupProblem}.");
-                }
-
-                if (group.Writable)
-                {
-                    ValidateWritable(groupPath, group, link.CommandSet, failures);
-                }
-            }
-        }
-    }
-
-    internal static void ValidateWritable(string path, PollGroupOptions group, HostLinkCommandSet protocol, List<string> failures)
-    {
-        // The HostLink validator reports bad addresses and types; only what writing adds is checked here.
-        if (!PlcAddress.TryParse(group.Address, out PlcAddress address) || !PlcValueTypes.TryParse(group.Type, out PlcValueType type) || group.Count < 1)
-        {
-            return;
-        }
-
-        if (type == PlcValueType.Bit)
-        {
-            if (address.Area is PlcArea.Timer or PlcArea.Counter)
-            {
-                failures.Add($"{path}:Writable: {address} is a timer/counter completion flag, which the PLC sets itself; it cannot be written.");
-                return;
-            }
-
-            if (group.Count != 1)
-            {
-                failures.Add($"{path}:Writable: a writable bit group must have Count 1 (one bit, written on its own); it has {group.Count}.");
-                return;
-            }
-        }
-
-        try
-        {
-            int words = type switch
-            {
-                PlcValueType.Bit => 1,
-                PlcValueType.String => PlcWords.WordsForString(group.Count),
-                _ => type.WordsPerValue() * group.Count,
-            };
-            // A bit is written with FINS MEMORY AREA WRITE whatever the link's protocol.
-            address.AsWord().EnsureRange(words, type == PlcValueType.Bit ? HostLinkCommandSet.Fins : protocol, forWrite: true);
-        }
-        catch (ArgumentException e)
-        {
-            failures.Add($"{path}:Writable: {address} cannot be written: {StripParamName(e)}");
-        }
-    }
-
-    private static string StripParamName(ArgumentException e)
-    {
-        string message = e.Message;
-        int at = e.ParamName is null ? -1 : message.LastIndexOf(" (Parameter '", StringComparison.Ordinal);
-        return at >= 0 ? message.Substring(0, at) : message;
     }
 }

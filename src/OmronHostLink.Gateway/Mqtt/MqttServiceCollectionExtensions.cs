@@ -1,4 +1,3 @@
-using Microsoft.Extensions.Configuration;
 using Microsoft.Extensions.DependencyInjection;
 using Microsoft.Extensions.Hosting;
 using Microsoft.Extensions.Logging;
@@ -6,36 +5,39 @@ using Microsoft.Extensions.Options;
 using MQTTnet;
 using OmronHostLink.Gateway.Configuration;
 using OmronHostLink.Gateway.Outputs;
+using OmronHostLink.Gateway.Queue;
+using OmronHostLink.Gateway.Writes;
 
 namespace OmronHostLink.Gateway.Mqtt;
 
 /// <summary>Registers the MQTT output when the configuration has an enabled <c>Mqtt</c> section.</summary>
-public static class MqttServiceCollectionExtensions
+internal static class MqttServiceCollectionExtensions
 {
     /// <summary>
-    /// Adds the MQTT output (options and their validation, the tag sink the links report to, the gateway hosted
-    /// service) if <paramref name="configuration"/> has a <c>Mqtt</c> section whose <c>Enabled</c> is not false.
-    /// Otherwise adds nothing: no MQTT client is ever made, and the worker only logs. Call it before the polling
-    /// service is added, so that the gateway stops after the links and can send their last states.
+    /// Adds the <c>Mqtt</c> section's check (a misspelt key is named even with the output off) and, when the section is
+    /// there and its <c>Enabled</c> is not false, the MQTT output: its rule for the links' and groups' names and the
+    /// writable rule, the tag sink the links report to, the gateway hosted service. Otherwise no MQTT client is ever
+    /// made, and the worker only logs. Call it before the polling service is added, so that the gateway stops after the
+    /// links and can send their last states.
     /// </summary>
-    public static IServiceCollection AddMqttOutput(this IServiceCollection services, IConfiguration configuration)
+    public static IServiceCollection AddMqttOutput(this IServiceCollection services, GatewayConfiguration gateway, string contentRoot)
     {
-        ArgumentNullException.ThrowIfNull(configuration);
-        IConfigurationSection section = configuration.GetSection(MqttOptions.SectionName);
-        if (!section.Exists() || (bool.TryParse(section[nameof(MqttOptions.Enabled)], out bool enabled) && !enabled))
+        ArgumentNullException.ThrowIfNull(gateway);
+        new MqttOptionsValidator(gateway, contentRoot).AddTo(services);
+        if (!gateway.IsEnabled(MqttOptions.SectionName))
         {
             return services;
         }
 
-        services.AddOptions<MqttOptions>().Configure(o => ConfigurationSchema.Bind(section, o)).ValidateOnStart();
-        services.AddSingleton<IValidateOptions<MqttOptions>>(sp => new MqttOptionsValidator(configuration, sp.GetRequiredService<IHostEnvironment>().ContentRootPath));
+        gateway.AddGroupRule(new MqttTopicNames());
+        gateway.AddGroupRule(new WritableRule());
         services.AddOutputServices();
         services.AddSingleton(sp =>
         {
             MqttOptions o = sp.GetRequiredService<IOptions<MqttOptions>>().Value;
             return new MqttTopics(o.TopicPrefix, o.ClientIdOrDefault);
         });
-        services.AddSingleton(sp => new OutboundQueueStore(
+        services.AddSingleton(sp => MqttOutboundQueue.OpenStore(
             sp.GetRequiredService<IOptions<MqttOptions>>().Value,
             sp.GetRequiredService<IHostEnvironment>().ContentRootPath,
             sp.GetRequiredService<ILogger<OutboundQueue>>()));
@@ -56,7 +58,6 @@ public static class MqttServiceCollectionExtensions
             sp.GetRequiredService<MqttMetrics>(),
             sp.GetRequiredService<ILogger<WriteCommandProcessor>>(),
             sp.GetRequiredService<TimeProvider>()));
-        services.AddSingleton<IValidateOptions<MqttOptions>, StatisticsIntervalValidator>();
         services.AddSingleton<MqttGateway>();
         services.AddHostedService(sp => sp.GetRequiredService<MqttGateway>());
         services.AddHostedService<StatisticsPublisher>();

@@ -1,6 +1,7 @@
 using System.Text;
 using System.Text.Json;
 using OmronHostLink.Gateway.Outputs;
+using OmronHostLink.Gateway.Queue;
 
 namespace OmronHostLink.Gateway.Mqtt;
 
@@ -9,7 +10,7 @@ namespace OmronHostLink.Gateway.Mqtt;
 /// into a retained message on the tag's topic, a change of a link's state into one on the link's status topic, and
 /// queues them in the order they happened. Returns at once; the publisher loop sends the queue.
 /// </summary>
-public sealed class MqttTagSink : ITagOutput
+internal sealed class MqttTagSink : ITagOutput
 {
     private readonly object _gate = new();
     private readonly Dictionary<string, TagState> _tags = new(StringComparer.Ordinal);
@@ -23,14 +24,6 @@ public sealed class MqttTagSink : ITagOutput
         _queue = queue;
         _topics = topics;
     }
-
-    /// <summary>The state names as the link status topics carry them.</summary>
-    public static string LinkStateName(LinkState state) => state switch
-    {
-        LinkState.Online => "online",
-        LinkState.CommError => "comm-error",
-        _ => "offline",
-    };
 
     /// <inheritdoc/>
     public void LinkOpened(string link, HostLinkUnit client) => LinkChanged(link, LinkState.Online);
@@ -113,7 +106,7 @@ public sealed class MqttTagSink : ITagOutput
     }
 
     private OutboundMessage LinkMessage(string link, LinkState state)
-        => new(_topics.LinkStatus(link), Encoding.UTF8.GetBytes(LinkStateName(state)), Retain: true);
+        => new(_topics.LinkStatus(link), Encoding.UTF8.GetBytes(state.Name()), Retain: true);
 
     private sealed class TagState(string type, string address)
     {
@@ -134,7 +127,7 @@ public sealed class MqttTagSink : ITagOutput
             {
                 Value = Value,
                 Type = type,
-                Quality = TagPayload.QualityName(Quality),
+                Quality = Quality.Name(),
                 Time = ReadTime,
                 Address = address,
                 Error = Error,

@@ -7,7 +7,7 @@ namespace OmronHostLink.Gateway.Mqtt;
 /// <c>…/{tag}/set/result</c> (unless the command names an MQTT 5 response topic), link states on
 /// <c>{prefix}/{link}/status</c> and the worker's state on <c>{prefix}/status/{clientId}</c>.
 /// </summary>
-public sealed class MqttTopics
+internal sealed class MqttTopics
 {
     /// <summary>The last level of a command topic.</summary>
     public const string SetLevel = "set";

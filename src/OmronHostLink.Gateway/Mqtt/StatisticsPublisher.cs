@@ -2,6 +2,7 @@ using System.Globalization;
 using System.Text.Json;
 using Microsoft.Extensions.Hosting;
 using Microsoft.Extensions.Options;
+using OmronHostLink.Gateway.Queue;
 using OmronHostLink.Gateway.Statistics;
 
 namespace OmronHostLink.Gateway.Mqtt;
@@ -12,7 +13,7 @@ namespace OmronHostLink.Gateway.Mqtt;
 /// <c>Mqtt:StatisticsInterval</c> and at once when a unit's state changes (comm-error, demoted, online). A topic whose
 /// last figures still wait in the queue (the broker is away) is not queued again: only the newest figures matter.
 /// </summary>
-public sealed class StatisticsPublisher : BackgroundService
+internal sealed class StatisticsPublisher : BackgroundService
 {
     /// <summary>The last level of a link's statistics topic (a unit number never is).</summary>
     public const string StatisticsLevel = "statistics";

@@ -7,7 +7,7 @@ namespace OmronHostLink.Gateway.Mqtt;
 /// The JSON published on a tag's topic (retained):
 /// <c>{"value":1234,"type":"int16","quality":"good","time":"2025-01-31T08:00:00.125Z","address":"D100"}</c>.
 /// </summary>
-public sealed class TagPayload
+internal sealed class TagPayload
 {
     /// <summary>The value: number, string, bool, or an array of them; null when never read.</summary>
     [JsonIgnore(Condition = JsonIgnoreCondition.Never)]
@@ -29,12 +29,4 @@ public sealed class TagPayload
 
     /// <summary>Why the value is not good; absent when it is.</summary>
     public string? Error { get; init; }
-
-    /// <summary>The quality as the payload spells it.</summary>
-    public static string QualityName(TagQuality quality) => quality switch
-    {
-        TagQuality.Good => "good",
-        TagQuality.Stale => "stale",
-        _ => "comm-error",
-    };
 }

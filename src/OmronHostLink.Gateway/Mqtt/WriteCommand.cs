@@ -6,4 +6,4 @@ namespace OmronHostLink.Gateway.Mqtt;
 /// <param name="ResponseTopic">The MQTT 5 response topic, if the sender gave one.</param>
 /// <param name="CorrelationData">The MQTT 5 correlation data, if the sender gave it.</param>
 /// <param name="Retained">Whether the broker delivered it from its retained store.</param>
-public sealed record WriteCommand(string Topic, byte[] Payload, string? ResponseTopic, byte[]? CorrelationData, bool Retained);
+internal sealed record WriteCommand(string Topic, byte[] Payload, string? ResponseTopic, byte[]? CorrelationData, bool Retained);

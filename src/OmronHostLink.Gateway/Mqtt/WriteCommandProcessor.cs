@@ -4,6 +4,8 @@ using System.Threading.Channels;
 using Microsoft.Extensions.Logging;
 using MQTTnet;
 using OmronHostLink.Gateway.Outputs;
+using OmronHostLink.Gateway.Queue;
+using OmronHostLink.Gateway.Writes;
 
 namespace OmronHostLink.Gateway.Mqtt;
 
@@ -14,10 +16,10 @@ namespace OmronHostLink.Gateway.Mqtt;
 /// logged, and nothing reaches the PLC for it. Every command gets a reply: on the MQTT 5 response topic with the
 /// correlation data when the command carries them, otherwise on <c>{command topic}/result</c>.
 /// </summary>
-public sealed class WriteCommandProcessor
+internal sealed class WriteCommandProcessor
 {
-    /// <summary>How many commands may wait; more are refused at once.</summary>
-    public const int Backlog = 256;
+    /// <summary>How many commands may wait (each is one write); more are refused at once.</summary>
+    private const int Backlog = WriteBacklog.Capacity;
 
     private readonly Channel<WriteCommand> _commands = Channel.CreateBounded<WriteCommand>(new BoundedChannelOptions(Backlog) { SingleReader = true });
     private readonly MqttTopics _topics;
@@ -55,8 +57,7 @@ public sealed class WriteCommandProcessor
         var command = new WriteCommand(message.Topic, message.Payload.ToArray(), message.ResponseTopic, message.CorrelationData, message.Retain);
         if (!_commands.Writer.TryWrite(command))
         {
-            Refuse(command, _topics.TryParseCommand(command.Topic, out string l, out int u, out string t) ? _topics.Tag(l, u, t) : command.Topic,
-                $"{Backlog} write commands are already waiting; send it again later.");
+            Refuse(command, TagTopic(command), $"{Backlog} write commands are already waiting; send it again later.");
         }
     }
 
@@ -67,20 +68,37 @@ public sealed class WriteCommandProcessor
         {
             await foreach (WriteCommand command in _commands.Reader.ReadAllAsync(cancellationToken).ConfigureAwait(false))
             {
-                try
-                {
-                    await ExecuteAsync(command, cancellationToken).ConfigureAwait(false);
-                }
-                catch (Exception e) when (e is not OperationCanceledException && e is not OutOfMemoryException)
-                {
-                    // A bug must not end the loop: every later command would go unanswered.
-                    Refuse(command, command.Topic, $"the gateway failed on the command ({e.GetType().Name}: {e.Message}).");
-                }
+                await ProcessAsync(command, cancellationToken).ConfigureAwait(false);
             }
         }
         catch (OperationCanceledException) when (cancellationToken.IsCancellationRequested)
         {
             // Stopping.
+        }
+    }
+
+    /// <summary>
+    /// Carries out one command as <see cref="ExecuteAsync"/> does, and answers it even when the gateway fails on it:
+    /// a bug must not end the loop (every later command would go unanswered). The reply then says what the sender can
+    /// act on, naming the command's tag; what went wrong inside is for the log.
+    /// </summary>
+    /// <returns>The reply; null for a command ignored without one.</returns>
+    public async Task<WriteResultPayload?> ProcessAsync(WriteCommand command, CancellationToken cancellationToken)
+    {
+        try
+        {
+            return await ExecuteAsync(command, cancellationToken).ConfigureAwait(false);
+        }
+        catch (Exception e) when (e is not OperationCanceledException && e is not OutOfMemoryException)
+        {
+            MqttLog.WriteCrashed(_logger, e, command.Topic);
+            return Reply(command, new WriteResultPayload
+            {
+                Status = TagWriteStatus.Failed.Name(),
+                Tag = TagTopic(command),
+                Error = $"the gateway failed on the command (its log has the details, event {MqttLog.Events.WriteCrashed}); read the value back to know whether it reached the PLC.",
+                Time = _time.GetUtcNow(),
+            });
         }
     }
 
@@ -160,7 +178,7 @@ public sealed class WriteCommandProcessor
 
         string valueText = Shorten(value.GetRawText());
         TagWriteOutcome outcome = await _writer.WriteAsync(tag, value, element: null, cancellationToken).ConfigureAwait(false);
-        if (outcome.Status == WriteResultPayload.Refused)
+        if (outcome.Status == TagWriteStatus.Refused)
         {
             return Refuse(command, tagTopic, outcome.Error!);
         }
@@ -168,17 +186,17 @@ public sealed class WriteCommandProcessor
         if (outcome.IsDone)
         {
             MqttLog.WriteDone(_logger, tagTopic, tag.Address.ToString(), valueText);
-            return Reply(command, new WriteResultPayload { Status = WriteResultPayload.Done, Tag = tagTopic, Time = _time.GetUtcNow() });
+            return Reply(command, new WriteResultPayload { Status = TagWriteStatus.Done.Name(), Tag = tagTopic, Time = _time.GetUtcNow() });
         }
 
         MqttLog.WriteFailed(_logger, tagTopic, tag.Address.ToString(), valueText, outcome.Error!);
-        return Reply(command, new WriteResultPayload { Status = WriteResultPayload.Failed, Tag = tagTopic, Error = outcome.Error, EndCode = outcome.EndCode, Time = _time.GetUtcNow() });
+        return Reply(command, new WriteResultPayload { Status = TagWriteStatus.Failed.Name(), Tag = tagTopic, Error = outcome.Error, EndCode = outcome.EndCode, Time = _time.GetUtcNow() });
     }
 
     private WriteResultPayload Refuse(WriteCommand command, string tagTopic, string reason)
     {
         MqttLog.WriteRefused(_logger, command.Topic, reason);
-        return Reply(command, new WriteResultPayload { Status = WriteResultPayload.Refused, Tag = tagTopic, Error = reason, Time = _time.GetUtcNow() });
+        return Reply(command, new WriteResultPayload { Status = TagWriteStatus.Refused.Name(), Tag = tagTopic, Error = reason, Time = _time.GetUtcNow() });
     }
 
     private WriteResultPayload Reply(WriteCommand command, WriteResultPayload result)
@@ -211,6 +229,10 @@ public sealed class WriteCommandProcessor
         return topic == MqttTopics.ResultTopic(command.Topic)
             || _replyPrefixes.Any(p => topic.StartsWith(p + "/", StringComparison.Ordinal) && topic.Length > p.Length + 1);
     }
+
+    /// <summary>The value topic of the tag a command is for; the command's own topic when it names none.</summary>
+    private string TagTopic(WriteCommand command)
+        => _topics.TryParseCommand(command.Topic, out string link, out int unit, out string tag) ? _topics.Tag(link, unit, tag) : command.Topic;
 
     private static string Shorten(string text) => text.Length > 60 ? text.Substring(0, 60) + "…" : text;
 }

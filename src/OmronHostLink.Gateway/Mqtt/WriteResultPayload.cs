@@ -1,4 +1,5 @@
 using System.Text.Json.Serialization;
+using OmronHostLink.Gateway.Outputs;
 
 namespace OmronHostLink.Gateway.Mqtt;
 
@@ -7,17 +8,8 @@ namespace OmronHostLink.Gateway.Mqtt;
 /// <c>"refused"</c> (nothing was sent to the PLC) or <c>"failed"</c> (the PLC or the line failed it) with an error and,
 /// for a PLC end code, the code.
 /// </summary>
-public sealed class WriteResultPayload
+internal sealed class WriteResultPayload
 {
-    /// <summary>The status of a write that the PLC completed (end code 00).</summary>
-    public const string Done = "done";
-
-    /// <summary>The status of a command refused before anything reached the wire.</summary>
-    public const string Refused = "refused";
-
-    /// <summary>The status of a write the PLC refused (an end code) or that did not complete (timeout, lost link).</summary>
-    public const string Failed = "failed";
-
     /// <summary><c>done</c>, <c>refused</c> or <c>failed</c>.</summary>
     public required string Status { get; init; }
 

@@ -6,7 +6,7 @@ namespace OmronHostLink.Gateway.Outputs;
 /// The clients of the links being polled, for outputs that write (MQTT commands, Sparkplug B DCMD): a write goes
 /// through the client its link polls with, the link's one owner of the wire, and only while the link is polled.
 /// </summary>
-public sealed class OpenLinks : ITagOutput
+internal sealed class OpenLinks : ITagOutput
 {
     private readonly ConcurrentDictionary<string, HostLinkUnit> _clients = new(StringComparer.Ordinal);
 

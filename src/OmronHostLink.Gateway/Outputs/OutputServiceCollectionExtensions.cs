@@ -5,7 +5,7 @@ using OmronHostLink.Gateway.Configuration;
 namespace OmronHostLink.Gateway.Outputs;
 
 /// <summary>What every output shares, registered once however many outputs ask for it.</summary>
-public static class OutputServiceCollectionExtensions
+internal static class OutputServiceCollectionExtensions
 {
     /// <summary>
     /// Adds the <see cref="TagCatalog"/> and <see cref="OpenLinks"/> (itself an output, so that it learns the links'

@@ -3,7 +3,7 @@ using OmronHostLink.Gateway.Configuration;
 namespace OmronHostLink.Gateway.Outputs;
 
 /// <summary>The tags of the enabled links, from the validated <c>HostLink</c> section, looked up as topics name them.</summary>
-public sealed class TagCatalog
+internal sealed class TagCatalog
 {
     private readonly Dictionary<(string Link, int Unit, string Name), TagDefinition> _tags = new();
 
@@ -22,7 +22,7 @@ public sealed class TagCatalog
             foreach ((string name, PollGroupOptions g) in linkOptions.Groups)
             {
                 PlcValueTypes.TryParse(g.Type, out PlcValueType type);
-                var tag = new TagDefinition(link, g.Unit, name, PlcAddress.Parse(g.Address), type, g.Count, linkOptions.WordOrder, g.Writable);
+                var tag = new TagDefinition(link, g.Unit, name, PlcAddress.Parse(g.Address), type, g.Count, linkOptions.WordOrder, g.Writable, linkOptions.CommandSet);
                 _tags[(link, g.Unit, name)] = tag;
             }
         }

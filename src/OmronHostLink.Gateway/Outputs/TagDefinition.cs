@@ -9,4 +9,5 @@ namespace OmronHostLink.Gateway.Outputs;
 /// <param name="Count">How many values (characters for <c>string</c>, bits for <c>bit</c>).</param>
 /// <param name="WordOrder">Word order of 32-bit values on the link.</param>
 /// <param name="Writable">Listed as writable in configuration.</param>
-public sealed record TagDefinition(string Link, int Unit, string Name, PlcAddress Address, PlcValueType Type, int Count, WordOrder WordOrder, bool Writable);
+/// <param name="CommandSet">The link's command set (what it can write depends on it).</param>
+internal sealed record TagDefinition(string Link, int Unit, string Name, PlcAddress Address, PlcValueType Type, int Count, WordOrder WordOrder, bool Writable, HostLinkCommandSet CommandSet);

@@ -5,7 +5,7 @@ namespace OmronHostLink.Gateway.Outputs;
 /// registration order. The pipeline knows no output by name.
 /// </summary>
 /// <param name="outputs">The outputs (<see cref="OpenLinks"/>, MQTT, …).</param>
-public sealed class TagOutputs(IEnumerable<ITagOutput> outputs) : ITagOutput
+internal sealed class TagOutputs(IEnumerable<ITagOutput> outputs) : ITagOutput, IScanOutput
 {
     private readonly ITagOutput[] _outputs = outputs.ToArray();
 
@@ -45,6 +45,24 @@ public sealed class TagOutputs(IEnumerable<ITagOutput> outputs) : ITagOutput
         foreach (ITagOutput output in _outputs)
         {
             output.UnitChanged(link, unit, state, detail);
+        }
+    }
+
+    /// <inheritdoc/>
+    public void ScanPlanned(ScanPlan plan)
+    {
+        foreach (IScanOutput output in _outputs.OfType<IScanOutput>())
+        {
+            output.ScanPlanned(plan);
+        }
+    }
+
+    /// <inheritdoc/>
+    public void ScanCycled(ScanCycle cycle)
+    {
+        foreach (IScanOutput output in _outputs.OfType<IScanOutput>())
+        {
+            output.ScanCycled(cycle);
         }
     }
 }

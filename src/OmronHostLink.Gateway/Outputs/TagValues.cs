@@ -5,7 +5,7 @@ namespace OmronHostLink.Gateway.Outputs;
 /// <see cref="PlcValueCodec"/>, one value as a scalar and several as an array of their .NET type
 /// (<see cref="PlcValue.ToObject"/>), a timer or counter completion flag as a bool.
 /// </summary>
-public static class TagValues
+internal static class TagValues
 {
     /// <summary>Decodes the words of a successful read.</summary>
     /// <param name="type">How the words are read.</param>

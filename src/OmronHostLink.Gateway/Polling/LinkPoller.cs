@@ -1,38 +1,63 @@
 using Microsoft.Extensions.Logging;
 using OmronHostLink.Gateway.Configuration;
 using OmronHostLink.Gateway.Outputs;
+using OmronHostLink.Planning;
 
 namespace OmronHostLink.Gateway.Polling;
 
 /// <summary>
-/// Polls one link: its <see cref="HostLinkClient"/> and one <c>WatchAsync</c> per poll group, whose events become the
-/// worker's logs and the tag sink's calls. The client's gate takes waiting reads in turn, so on a busy link the groups
-/// alternate and none starves. A PLC unit that stops answering is reported once; while it is down one of its groups
-/// tries it with the watch's capped backoff and the others wait, and it is reported again when it answers. After the
-/// link's <c>Demotion:After</c> silent polls in a row that group's watch demotes the unit: no read for
-/// <c>Demotion:Period</c>, then one presence probe, so a dead unit costs its neighbours on the line next to nothing.
+/// Polls one link: its <see cref="HostLinkClient"/> and one planned <c>WatchAsync</c> per unit and interval (a scan
+/// class): the groups and tag-file rows of that unit and interval are read together, in the fewest commands the
+/// planner finds (area reads spanning neighbours, QQ where the unit's model has it), each group's words in one command.
+/// The watch's events become each group's values, quality and logs, and the tag sink's calls. The client's gate takes
+/// waiting reads in turn, so the scan classes (and writes) share the link and none starves.
 /// </summary>
+/// <remarks>
+/// A PLC unit that stops answering is reported once; while it is down one of its scan classes tries it with the watch's
+/// capped backoff and the others wait, and it is reported again when it answers. After the link's
+/// <c>Demotion:After</c> silent polls in a row that scan class's watch demotes the unit: no read for
+/// <c>Demotion:Period</c>, then one presence probe. When the PLC answers a scan class's read with an error, each of its
+/// groups is read once on its own: those that fail alone are read on their own (each reporting its failure) until they
+/// read again, and the others together.
+/// </remarks>
 /// <param name="name">The link's name.</param>
 /// <param name="options">The link's validated options.</param>
 /// <param name="client">Gives the link's client.</param>
 /// <param name="logger">The worker's log.</param>
 /// <param name="time">The clock of intervals, backoff and timestamps.</param>
-/// <param name="sink">Receives every poll's outcome and the link's state, or null.</param>
+/// <param name="sink">Receives every poll's outcome, the link's state and its scan classes' plans and cycles.</param>
 internal sealed class LinkPoller(string name, LinkOptions options, Func<HostLinkClient> client, ILogger logger, TimeProvider time, ITagOutput sink)
 {
     private readonly object _lock = new();
     private readonly Dictionary<int, UnitHealth> _units = new();
+    private readonly List<ScanRun> _runs = new();
     private List<PollGroup> _groups = [];
+    private List<PollScan> _classes = [];
+    private bool _planLogged;
     private long _polls;
     private long _failures;
+    private CancellationToken _stopping;
+    private HostLinkClient? _plc;
+
+    /// <summary>What a scan's watch asks its loop to do when it stops reading.</summary>
+    private enum Outcome
+    {
+        /// <summary>The PLC answered a read of several groups with an error: find the groups that fail alone.</summary>
+        Split,
+
+        /// <summary>A group read on its own reads again: back to its scan class.</summary>
+        Rejoin,
+    }
 
     /// <summary>Polls until <paramref name="stoppingToken"/> is cancelled; nothing a PLC or a line does ends it.</summary>
     public async Task RunAsync(CancellationToken stoppingToken)
     {
+        _stopping = stoppingToken;
         HostLinkClient plc;
         try
         {
             plc = client();
+            _plc = plc;
             _groups = options.Groups.Select(g => new PollGroup(g.Key, g.Value, plc.Unit(g.Value.Unit), options.WordOrder)).ToList();
         }
         catch (Exception e)
@@ -47,63 +72,138 @@ internal sealed class LinkPoller(string name, LinkOptions options, Func<HostLink
             _units.TryAdd(g.UnitNumber, new UnitHealth());
         }
 
+        // One scan class per unit and interval, in the order their first groups are configured.
+        _classes = PollScan.Classes(_groups, plc);
+
         sink.LinkOpened(name, plc);
         GatewayLog.LinkStarted(logger, name, _groups.Count, plc.Description);
+        lock (_lock)
+        {
+            foreach (PollScan scan in _classes)
+            {
+                Start(scan);
+            }
+        }
+
         try
         {
-            // Started in configuration order: each first read queues at the gate before the next group's.
-            await Task.WhenAll(_groups.Select(g => WatchAsync(g, stoppingToken))).ConfigureAwait(false);
+            await Task.Delay(Timeout.Infinite, stoppingToken).ConfigureAwait(false);
         }
-        catch (OperationCanceledException) when (stoppingToken.IsCancellationRequested)
+        catch (OperationCanceledException)
         {
             // Stopping.
         }
 
+        Task[] running;
+        lock (_lock)
+        {
+            running = _runs.Select(r => r.Task).ToArray();
+        }
+
+        await Task.WhenAll(running).ConfigureAwait(ConfigureAwaitOptions.SuppressThrowing);
         sink.LinkChanged(name, LinkState.Offline);
         GatewayLog.LinkStopped(logger, name, _polls, _failures);
     }
 
-    private async Task WatchAsync(PollGroup group, CancellationToken stoppingToken)
+    /// <summary>Starts polling <paramref name="scan"/> (under the lock).</summary>
+    private void Start(PollScan scan)
     {
+        var run = new ScanRun(scan, CancellationTokenSource.CreateLinkedTokenSource(_stopping));
+        _runs.Add(run);
+        run.Task = Task.Run(() => PollAsync(run));
+    }
+
+    /// <summary>Stops polling <paramref name="scan"/> (under the lock): it is replaced by others.</summary>
+    private void Retire(PollScan scan)
+    {
+        ScanRun run = _runs.Single(r => r.Scan == scan);
+        _runs.Remove(run);
+        run.Stop.Cancel();
+        _ = run.Task.ContinueWith(_ => run.Stop.Dispose(), CancellationToken.None, TaskContinuationOptions.ExecuteSynchronously, TaskScheduler.Default);
+    }
+
+    private async Task PollAsync(ScanRun run)
+    {
+        PollScan scan = run.Scan;
         var watch = new WatchOptions
         {
-            Interval = group.Interval,
+            Interval = scan.Interval,
             RetryInterval = options.Backoff.Initial,
             MaxRetryInterval = options.Backoff.Max,
             ReportEveryCycle = true,
+            ReportPlans = true,
             DemoteAfter = options.Demotion.After,
             DemotionPeriod = options.Demotion.Period,
             TimeProvider = time,
         };
-        while (true)
+        CancellationToken token = run.Stop.Token;
+        try
         {
-            try
+            while (!token.IsCancellationRequested)
             {
-                await WatchOnceAsync(group, watch, stoppingToken).ConfigureAwait(false);
-            }
-            catch (Exception e) when (!stoppingToken.IsCancellationRequested)
-            {
-                // A watch ends only on a bug (nothing a PLC or a line does): report it and watch again after an interval.
-                lock (_lock)
+                Outcome? outcome;
+                try
                 {
-                    _failures++;
-                    if (group.Failure != e.Message)
+                    outcome = await WatchAsync(scan, watch, token).ConfigureAwait(false);
+                }
+                catch (ArgumentException e) when (!token.IsCancellationRequested)
+                {
+                    // Refused before the wire (a tag beyond the unit's model): as an error the PLC would answer.
+                    lock (_lock)
                     {
-                        group.Failure = e.Message;
-                        GatewayLog.GroupCrashed(logger, e, name, group.Name, group.UnitNumber, group.AddressText);
+                        _failures++;
+                        outcome = Answered(scan, e.Message);
                     }
 
-                    sink.TagChanged(group.Change(name, TagQuality.Stale, time.GetUtcNow(), e.Message));
+                    if (outcome is null)
+                    {
+                        await Task.Delay(options.Backoff.Max, time, token).ConfigureAwait(false);
+                        continue;
+                    }
+                }
+                catch (Exception e) when (!token.IsCancellationRequested)
+                {
+                    // A watch ends only on a bug (nothing a PLC or a line does): report it and watch again after an interval.
+                    lock (_lock)
+                    {
+                        _failures++;
+                        if (scan.Failure != e.Message)
+                        {
+                            scan.Failure = e.Message;
+                            GatewayLog.GroupCrashed(logger, e, name, scan.Name, scan.UnitNumber, scan.Groups[0].AddressText);
+                        }
+
+                        foreach (PollGroup g in scan.Groups)
+                        {
+                            sink.TagChanged(g.Change(name, TagQuality.Stale, time.GetUtcNow(), e.Message));
+                        }
+                    }
+
+                    await Task.Delay(scan.Interval, time, token).ConfigureAwait(false);
+                    continue;
                 }
 
-                await Task.Delay(group.Interval, time, stoppingToken).ConfigureAwait(false);
+                switch (outcome)
+                {
+                    case Outcome.Split:
+                        await SplitAsync(scan, token).ConfigureAwait(false);
+                        return;
+                    case Outcome.Rejoin:
+                        Rejoin(scan);
+                        return;
+                }
             }
+        }
+        catch (OperationCanceledException) when (token.IsCancellationRequested)
+        {
+            // Stopping, or replaced by other scans.
         }
     }
 
-    private async Task WatchOnceAsync(PollGroup group, WatchOptions watch, CancellationToken stoppingToken)
+    /// <summary>Reads <paramref name="scan"/> with one watch until it is stopped or asks for something else.</summary>
+    private async Task<Outcome?> WatchAsync(PollScan scan, WatchOptions watch, CancellationToken token)
     {
-        IAsyncEnumerator<WatchEvent> events = group.Unit.WatchAsync(group.Tags, watch, stoppingToken).GetAsyncEnumerator(stoppingToken);
+        IAsyncEnumerator<WatchEvent> events = scan.Unit.WatchAsync(scan.Tags, watch, token).GetAsyncEnumerator(token);
         Task<bool> next = events.MoveNextAsync().AsTask();
         try
         {
@@ -112,10 +212,16 @@ internal sealed class LinkPoller(string name, LinkOptions options, Func<HostLink
                 WatchEvent e = events.Current;
                 if (e.Kind != WatchEventKind.Polled)
                 {
-                    // Not asking for the next event holds the watch: a group waits here while another probes its unit.
-                    if (Handle(group, e) is { } unitAnswers)
+                    // Not asking for the next event holds the watch: a scan waits here while another probes its unit.
+                    (Task? unitAnswers, Outcome? stop) = Handle(scan, e);
+                    if (stop is not null)
                     {
-                        await unitAnswers.WaitAsync(stoppingToken).ConfigureAwait(false);
+                        return stop;
+                    }
+
+                    if (unitAnswers is not null)
+                    {
+                        await unitAnswers.WaitAsync(token).ConfigureAwait(false);
                     }
 
                     next = events.MoveNextAsync().AsTask();
@@ -123,77 +229,112 @@ internal sealed class LinkPoller(string name, LinkOptions options, Func<HostLink
                 }
 
                 // Queue for the next read (past an overrun report, which comes first) before logging and publishing
-                // this one: the group is back at the link's gate as soon as its read is done, so on a busy link the
-                // groups keep their turns whatever their handling costs.
-                next = events.MoveNextAsync().AsTask();
+                // this one: the scan is back at the link's gate as soon as its read is done, so on a busy link the
+                // scans keep their turns whatever their handling costs. A group read on its own that reads again goes
+                // back to its class instead.
+                bool rejoin = scan.Isolated;
+                if (!rejoin)
+                {
+                    next = events.MoveNextAsync().AsTask();
+                }
+
                 WatchEvent? overrun = null;
-                if (next.IsCompletedSuccessfully && next.Result && events.Current.Kind == WatchEventKind.Overrun)
+                if (!rejoin && next.IsCompletedSuccessfully && next.Result && events.Current.Kind == WatchEventKind.Overrun)
                 {
                     overrun = events.Current;
                     next = events.MoveNextAsync().AsTask();
                 }
 
-                _ = Handle(group, e); // Never holds back: the unit answered.
+                (_, Outcome? outcome) = Handle(scan, e, overrun is not null); // Never holds back: the unit answered.
                 if (overrun is not null)
                 {
-                    _ = Handle(group, overrun);
+                    _ = Handle(scan, overrun);
+                }
+
+                if (rejoin || outcome is not null)
+                {
+                    return outcome ?? Outcome.Rejoin;
                 }
             }
+
+            return null;
         }
         finally
         {
-            // A read may still be under way (when handling failed); the watch can only be closed after it.
-            await ((Task)next).ConfigureAwait(ConfigureAwaitOptions.SuppressThrowing);
+            // A read may still be under way (when handling failed, or the scan stops); the watch can only be closed after it.
+            if (!next.IsCompleted)
+            {
+                // A scan that stops reading (split, rejoin) does not wait for its next cycle's interval.
+                await ((Task)next).ConfigureAwait(ConfigureAwaitOptions.SuppressThrowing);
+            }
+
             await events.DisposeAsync().ConfigureAwait(false);
         }
     }
 
-    /// <summary>Takes one event of a group's watch; returns a task to wait for before the next when the group must hold back.</summary>
-    private Task? Handle(PollGroup group, WatchEvent e)
+    /// <summary>
+    /// Takes one event of a scan's watch; returns a task to wait for before the next when the scan must hold back, and
+    /// what the scan must do instead of reading on.
+    /// </summary>
+    private (Task? Wait, Outcome? Outcome) Handle(PollScan scan, WatchEvent e, bool overrunFollows = false)
     {
         lock (_lock)
         {
             switch (e.Kind)
             {
                 case WatchEventKind.Changed:
-                    group.Update(e);
-                    return null;
+                    (PollGroup group, int index) = scan.Owner(e.TagIndex);
+                    group.Update(index, e);
+                    return default;
                 case WatchEventKind.Polled:
                     _polls++;
-                    Read(group);
-                    return null;
+                    Cycled(scan, e.Duration, overrunFollows);
+                    Read(scan);
+                    return default;
+                case WatchEventKind.Planned:
+                    Planned(scan, e.Plan!);
+                    return default;
                 case WatchEventKind.Outage or WatchEventKind.RetryFailed:
                     _polls++;
                     _failures++;
-                    return Failed(group, e.Exception!, e.RetryDelay);
+                    return Failed(scan, e.Exception!, e.RetryDelay);
                 case WatchEventKind.Demoted:
-                    if (!ReferenceEquals(e.Exception, _units[group.UnitNumber].LastFailure))
+                    if (!ReferenceEquals(e.Exception, _units[scan.UnitNumber].LastFailure))
                     {
                         // The silent poll that demotes is a failed attempt like the others (unless its outage was just reported).
                         _polls++;
                         _failures++;
-                        _ = Failed(group, e.Exception!, e.RetryDelay);
+                        _ = Failed(scan, e.Exception!, e.RetryDelay);
                     }
 
-                    Demoted(group, e);
-                    return null;
+                    Demoted(scan, e);
+                    return default;
                 case WatchEventKind.Overrun:
-                    long skipped = (e.Duration.Ticks / group.Interval.Ticks) - 1;
-                    if (skipped > 0 && !_units[group.UnitNumber].Down)
-                    {
-                        GatewayLog.TicksSkipped(logger, name, group.Name, skipped);
-                    }
-
-                    return null;
+                    Overran(scan, e.Duration);
+                    return default;
                 default:
-                    return null; // Resumed: the cycle's changes and Polled follow.
+                    return default; // Resumed: the cycle's changes and Polled follow.
             }
         }
     }
 
-    private void Read(PollGroup group)
+    private void Read(PollScan scan)
     {
-        UnitAnswered(group.UnitNumber);
+        UnitAnswered(scan.UnitNumber);
+        if (scan.Failure is not null && !scan.Isolated)
+        {
+            scan.Failure = null;
+        }
+
+        foreach (PollGroup group in scan.Groups)
+        {
+            Publish(group);
+        }
+    }
+
+    /// <summary>Logs and publishes a group's values just read.</summary>
+    private void Publish(PollGroup group)
+    {
         string values;
         try
         {
@@ -220,7 +361,7 @@ internal sealed class LinkPoller(string name, LinkOptions options, Func<HostLink
         }
     }
 
-    private Task? Failed(PollGroup group, Exception e, TimeSpan retryDelay)
+    private (Task? Wait, Outcome? Outcome) Failed(PollScan scan, Exception e, TimeSpan retryDelay)
     {
         string? reason = e switch
         {
@@ -231,65 +372,76 @@ internal sealed class LinkPoller(string name, LinkOptions options, Func<HostLink
         };
         if (reason is null)
         {
-            // The PLC answered (an end code): the unit is up, this group is not.
-            UnitAnswered(group.UnitNumber);
-            GroupFailed(group, e.Message);
-            return null;
+            // The PLC answered (an end code): the unit is up, some of the scan's groups are not.
+            UnitAnswered(scan.UnitNumber);
+            return (null, Answered(scan, e.Message));
         }
 
-        UnitHealth unit = _units[group.UnitNumber];
+        UnitHealth unit = _units[scan.UnitNumber];
         unit.LastFailure = e;
         if (!unit.Down)
         {
             unit.Down = true;
             unit.Since = time.GetTimestamp();
             unit.Attempts = 1;
-            unit.Prober = group;
+            unit.Prober = scan;
             unit.RetryDelay = retryDelay;
             unit.Answers = new TaskCompletionSource(TaskCreationOptions.RunContinuationsAsynchronously);
-            GatewayLog.UnitDown(logger, name, group.UnitNumber, reason, e.Message, retryDelay.TotalSeconds, options.Backoff.Max.TotalSeconds);
-            if (sink is not null)
-            {
-                // Every tag of the unit, not only the one that failed: none of them can be read now.
-                foreach (PollGroup g in _groups.Where(g => g.UnitNumber == group.UnitNumber))
-                {
-                    sink.TagChanged(g.Change(name, TagQuality.CommError, time.GetUtcNow(), e.Message));
-                }
+            GatewayLog.UnitDown(logger, name, scan.UnitNumber, reason, e.Message, retryDelay.TotalSeconds, options.Backoff.Max.TotalSeconds);
 
-                sink.UnitChanged(name, group.UnitNumber, UnitState.CommError, e.Message);
-                sink.LinkChanged(name, LinkState.CommError, e.Message);
+            // Every tag of the unit, not only the ones that failed: none of them can be read now.
+            foreach (PollGroup g in _groups.Where(g => g.UnitNumber == scan.UnitNumber))
+            {
+                sink.TagChanged(g.Change(name, TagQuality.CommError, time.GetUtcNow(), e.Message));
             }
 
-            return null;
+            sink.UnitChanged(name, scan.UnitNumber, UnitState.CommError, e.Message);
+            sink.LinkChanged(name, LinkState.CommError, e.Message);
+            return default;
         }
 
         unit.Attempts++;
-        if (unit.Prober == group)
+        if (unit.Prober == scan)
         {
             unit.RetryDelay = retryDelay;
         }
 
-        GatewayLog.UnitStillDown(logger, name, group.UnitNumber, reason, e.Message, unit.RetryDelay.TotalSeconds);
-        return unit.Prober == group ? null : unit.Answers.Task;
+        GatewayLog.UnitStillDown(logger, name, scan.UnitNumber, reason, e.Message, unit.RetryDelay.TotalSeconds);
+        return (unit.Prober == scan ? null : unit.Answers.Task, null);
     }
 
-    /// <summary>The group's watch demoted its unit: every tag of the unit is comm-error, and the unit is reported demoted.</summary>
-    private void Demoted(PollGroup group, WatchEvent e)
+    /// <summary>
+    /// The PLC answered the scan's read with an error (or the model refused it before the wire): a scan of several
+    /// groups is split to find which fail; a single group reports its failure and is tried again by its watch.
+    /// </summary>
+    private Outcome? Answered(PollScan scan, string message)
     {
-        UnitHealth unit = _units[group.UnitNumber];
+        if (scan.Groups.Count > 1)
+        {
+            return Outcome.Split;
+        }
+
+        GroupFailed(scan.Groups[0], message);
+        return null;
+    }
+
+    /// <summary>The scan's watch demoted its unit: every tag of the unit is comm-error, and the unit is reported demoted.</summary>
+    private void Demoted(PollScan scan, WatchEvent e)
+    {
+        UnitHealth unit = _units[scan.UnitNumber];
         if (unit.Demoted)
         {
             return;
         }
 
         unit.Demoted = true;
-        GatewayLog.UnitDemoted(logger, name, group.UnitNumber, options.Demotion.After, e.RetryDelay.TotalSeconds, e.Exception!.Message);
-        foreach (PollGroup g in _groups.Where(g => g.UnitNumber == group.UnitNumber))
+        GatewayLog.UnitDemoted(logger, name, scan.UnitNumber, options.Demotion.After, e.RetryDelay.TotalSeconds, e.Exception!.Message);
+        foreach (PollGroup g in _groups.Where(g => g.UnitNumber == scan.UnitNumber))
         {
             sink.TagChanged(g.Change(name, TagQuality.CommError, time.GetUtcNow(), e.Exception.Message));
         }
 
-        sink.UnitChanged(name, group.UnitNumber, UnitState.Demoted, e.Exception.Message);
+        sink.UnitChanged(name, scan.UnitNumber, UnitState.Demoted, e.Exception.Message);
     }
 
     private void GroupFailed(PollGroup group, string message)
@@ -331,7 +483,275 @@ internal sealed class LinkPoller(string name, LinkOptions options, Func<HostLink
         }
     }
 
-    /// <summary>Whether a PLC on the link answers; while it does not, which group probes it and what the others wait for.</summary>
+    // ---- Scan classes: plans, cycles, splits ----
+
+    /// <summary>A scan's watch (re)planned its reads: logged with the link's plan at start, on its own after.</summary>
+    private void Planned(PollScan scan, ReadPlan plan)
+    {
+        bool again = scan.Plan is not null;
+        bool compoundDropped = again && UsesCompound(scan.Plan!) && !UsesCompound(plan);
+        scan.Plan = plan;
+        ScanPlan report = Report(scan);
+        (sink as IScanOutput)?.ScanPlanned(report);
+        if (_planLogged)
+        {
+            // A later plan: a unit's model became known (MM), QQ was refused, or the scan class was split or joined.
+            if (!scan.Isolated)
+            {
+                LogScan(report, compoundDropped ? " (planned again: the unit answered QQ with an error, and is read by area from now on)" : again ? " (planned again)" : "");
+            }
+
+            return;
+        }
+
+        LogPlanOnceComplete();
+    }
+
+    private static bool UsesCompound(ReadPlan plan) => plan.Reads.Any(r => r.Kind == PlannedReadKind.CModeCompound);
+
+    /// <summary>Logs the link's plan once every scan class has its first.</summary>
+    private void LogPlanOnceComplete()
+    {
+        if (!_planLogged && _classes.All(c => c.Plan is not null))
+        {
+            _planLogged = true;
+            LogPlan();
+        }
+    }
+
+    /// <summary>
+    /// The link's plan at start: a line for the link, one for each scan class, and what will not fit. A scan class whose
+    /// unit is asked its model (MM) before QQ is used is judged by its plan with QQ, which it reads with once the unit
+    /// names a model that has it.
+    /// </summary>
+    private void LogPlan()
+    {
+        (ScanPlan Plan, ReadPlan? Pending)[] plans = _classes.Select(c => (Report(c), ScanPlanReport.PendingCompound(c, options))).ToArray();
+        ScanPlan[] expected = plans.Select(p => p.Pending is { } qq ? p.Plan with { Reads = qq.TransactionCount, Characters = qq.Characters, EstimatedCycle = qq.EstimatedTime + Gaps(qq.TransactionCount) } : p.Plan).ToArray();
+        double load = expected.Sum(Load);
+        GatewayLog.LinkPlanned(logger, name, _groups.Count, plans.Length, Line(), expected.Sum(p => p.Reads), expected.Sum(p => p.Characters), load);
+        for (int i = 0; i < plans.Length; i++)
+        {
+            string note = plans[i].Pending is { } qq
+                ? $"; once the unit names its model (MM), and where that model has QQ: {qq}"
+                : "";
+            LogScan(plans[i].Plan, note, expected[i]);
+        }
+
+        if (load > 1 && plans.Length > 1)
+        {
+            string detail = string.Join("; ", expected.Select(p => $"unit {p.Unit} every {PollScan.Durations(p.Interval)}: {PollScan.Durations(p.EstimatedCycle)} a cycle, {Load(p):P0}"));
+            GatewayLog.LinkOverloaded(logger, name, load, detail);
+        }
+    }
+
+    /// <summary>Logs a scan class's plan, and warns when <paramref name="judged"/> (the plan, or the one it will read with) cannot keep the interval.</summary>
+    private void LogScan(ScanPlan plan, string note, ScanPlan? judged = null)
+    {
+        GatewayLog.ScanPlanned(logger, name, plan.Unit, PollScan.Durations(plan.Interval), plan.Tags, plan.Description, note);
+        judged ??= plan;
+        if (judged.EstimatedCycle > judged.Interval)
+        {
+            GatewayLog.ScanCannotFit(logger, name, judged.Unit, judged.Tags, PollScan.Durations(judged.Interval), judged.EstimatedCycle.TotalMilliseconds, judged.Description == plan.Description ? plan.Description : "with QQ");
+        }
+    }
+
+    private TimeSpan Gaps(int reads) => TimeSpan.FromTicks((options.Client.SendInterval ?? TimeSpan.Zero).Ticks * reads);
+
+    /// <summary>
+    /// A scan class's plan as the outputs see it: its own reads, and those of its groups read on their own after a
+    /// failure; the least time a cycle takes is the plan's time on the line and the send interval before each command.
+    /// </summary>
+    private ScanPlan Report(PollScan scan)
+    {
+        PollScan[] parts = _runs.Select(r => r.Scan).Where(s => s.UnitNumber == scan.UnitNumber && s.Interval == scan.Interval).Append(scan).Distinct().ToArray();
+        ReadPlan[] plans = parts.Where(p => p.Plan is not null).Select(p => p.Plan!).ToArray();
+        int reads = plans.Sum(p => p.TransactionCount);
+        TimeSpan estimated = TimeSpan.FromTicks(plans.Sum(p => p.EstimatedTime.Ticks)) + Gaps(reads);
+        string description = string.Join(" + ", plans.Select(p => p.ToString()));
+        return new ScanPlan(name, scan.UnitNumber, scan.Interval, parts.Sum(p => p.Groups.Count), reads, plans.Sum(p => p.Characters), estimated, description);
+    }
+
+    private static double Load(ScanPlan plan) => plan.EstimatedCycle.TotalSeconds / plan.Interval.TotalSeconds;
+
+    private string Line() => $"{_plc!.LineTiming.BaudRate} bps";
+
+    /// <summary>A cycle of the scan read every tag in <paramref name="duration"/>.</summary>
+    private void Cycled(PollScan scan, TimeSpan duration, bool overrunFollows)
+    {
+        scan.Cycled(duration);
+        if (scan.Isolated)
+        {
+            return;
+        }
+
+        (sink as IScanOutput)?.ScanCycled(new ScanCycle(name, scan.UnitNumber, scan.Interval, duration, overrunFollows));
+        if (!overrunFollows && scan.OnTime())
+        {
+            GatewayLog.ScanKeepsUp(logger, name, scan.UnitNumber, PollScan.Durations(scan.Interval));
+        }
+    }
+
+    /// <summary>The scan's next cycle started late: <paramref name="period"/> after the one before.</summary>
+    private void Overran(PollScan scan, TimeSpan period)
+    {
+        long skipped = (period.Ticks / scan.Interval.Ticks) - 1;
+        if (skipped > 0 && !_units[scan.UnitNumber].Down)
+        {
+            GatewayLog.TicksSkipped(logger, name, scan.Name, skipped);
+        }
+
+        if (scan.Overran(period) is { } sustained && !scan.Isolated)
+        {
+            ScanPlan plan = Report(scan);
+            GatewayLog.ScanOverrun(logger, name, scan.UnitNumber, plan.Tags, PollScan.Durations(scan.Interval), sustained.TotalMilliseconds, 10, plan.EstimatedCycle.TotalMilliseconds, scan.LastCycle.TotalMilliseconds);
+        }
+    }
+
+    /// <summary>
+    /// The PLC answered a read of several groups with an error: each group is read once on its own. Those that fail
+    /// alone are read on their own from now on (each reporting its failure) until they read again; the others are read
+    /// together. Values read meanwhile are published.
+    /// </summary>
+    private async Task SplitAsync(PollScan scan, CancellationToken token)
+    {
+        var failed = new List<PollGroup>();
+        foreach (PollGroup group in scan.Groups)
+        {
+            try
+            {
+                PlcTagValue[] values = await group.Unit.ReadTagsAsync(group.Tags, token).ConfigureAwait(false);
+                lock (_lock)
+                {
+                    group.Read(values);
+                    Publish(group);
+                }
+            }
+            catch (Exception e) when (e is HostLinkEndCodeException or FinsEndCodeException or ArgumentException or NotSupportedException or FormatException)
+            {
+                lock (_lock)
+                {
+                    _failures++;
+                    GroupFailed(group, e.Message);
+                    failed.Add(group);
+                }
+            }
+            catch (Exception e) when (e is HostLinkException or IOException or TimeoutException && !token.IsCancellationRequested)
+            {
+                // The unit went away meanwhile: the scan reads on as it was, and its watch reports the outage.
+                failed.Clear();
+                break;
+            }
+        }
+
+        if (failed.Count == 0)
+        {
+            // Every group read alone (and was published): the scan reads on as it was from its next cycle, so that a
+            // failure of the reads together that lasts costs the line its one try and these reads an interval.
+            await Task.Delay(scan.Interval, time, token).ConfigureAwait(false);
+        }
+
+        lock (_lock)
+        {
+            if (token.IsCancellationRequested)
+            {
+                return;
+            }
+
+            Retire(scan);
+            if (failed.Count == 0)
+            {
+                var again = new PollScan(scan.Unit, scan.Interval, scan.Groups, scan.Isolated);
+                Replace(scan, again);
+                Start(again);
+                return;
+            }
+
+            GatewayLog.ScanSplit(logger, name, scan.UnitNumber, PollScan.Durations(scan.Interval), failed.Count, scan.Groups.Count, string.Join(", ", failed.Select(g => g.Name)));
+            if (failed.Count < scan.Groups.Count)
+            {
+                var rest = new PollScan(scan.Unit, scan.Interval, scan.Groups.Except(failed).ToList());
+                Replace(scan, rest);
+                Start(rest);
+            }
+            else
+            {
+                Replace(scan, null);
+            }
+
+            foreach (PollGroup group in failed)
+            {
+                Start(new PollScan(scan.Unit, scan.Interval, [group], isolated: true));
+            }
+        }
+    }
+
+    /// <summary>A group read on its own reads again: its class is read with it again.</summary>
+    private void Rejoin(PollScan isolated)
+    {
+        lock (_lock)
+        {
+            if (_stopping.IsCancellationRequested)
+            {
+                return;
+            }
+
+            PollGroup group = isolated.Groups[0];
+            Retire(isolated);
+            GatewayLog.ScanRejoined(logger, name, group.Name, isolated.UnitNumber, PollScan.Durations(isolated.Interval));
+            PollScan? owner = _runs.Select(r => r.Scan).FirstOrDefault(s => !s.Isolated && s.UnitNumber == isolated.UnitNumber && s.Interval == isolated.Interval);
+            IEnumerable<PollGroup> members = owner is null ? [group] : owner.Groups.Append(group);
+
+            // Configuration order, as the class was first planned.
+            var joined = new PollScan(isolated.Unit, isolated.Interval, _groups.Where(members.Contains).ToList());
+            if (owner is not null)
+            {
+                Retire(owner);
+            }
+
+            Replace(owner, joined);
+            Start(joined);
+        }
+    }
+
+    /// <summary>
+    /// The class scan <paramref name="old"/> is now <paramref name="replacement"/> (null: every group of the class is
+    /// read on its own), for the start log and the unit's prober; with no old one, the class is added.
+    /// </summary>
+    private void Replace(PollScan? old, PollScan? replacement)
+    {
+        int index = old is null ? -1 : _classes.IndexOf(old);
+        if (index >= 0 && replacement is not null)
+        {
+            _classes[index] = replacement;
+        }
+        else if (index >= 0)
+        {
+            _classes.RemoveAt(index);
+            LogPlanOnceComplete();
+        }
+        else if (replacement is not null && !replacement.Isolated)
+        {
+            _classes.Add(replacement);
+        }
+
+        foreach (UnitHealth unit in _units.Values.Where(u => old is not null && u.Prober == old))
+        {
+            unit.Prober = replacement;
+        }
+    }
+
+    /// <summary>A scan being polled, and what stops it.</summary>
+    private sealed class ScanRun(PollScan scan, CancellationTokenSource stop)
+    {
+        public PollScan Scan { get; } = scan;
+
+        public CancellationTokenSource Stop { get; } = stop;
+
+        public Task Task { get; set; } = Task.CompletedTask;
+    }
+
+    /// <summary>Whether a PLC on the link answers; while it does not, which scan probes it and what the others wait for.</summary>
     private sealed class UnitHealth
     {
         public bool Down { get; set; }
@@ -345,7 +765,7 @@ internal sealed class LinkPoller(string name, LinkOptions options, Func<HostLink
 
         public int Attempts { get; set; }
 
-        public PollGroup? Prober { get; set; }
+        public PollScan? Prober { get; set; }
 
         public TimeSpan RetryDelay { get; set; }
 

@@ -5,8 +5,8 @@ using OmronHostLink.Gateway.Outputs;
 namespace OmronHostLink.Gateway.Polling;
 
 /// <summary>
-/// A configured poll group on its unit view: the tags its watch reads (the group's words, or its completion flag) and
-/// the words last read, decoded as the group's type only when they are logged or published.
+/// A configured poll group on its unit view: the tags its scan class's watch reads for it (the group's words, or its
+/// completion flag) and the words last read, decoded as the group's type only when they are logged or published.
 /// </summary>
 internal sealed class PollGroup
 {
@@ -63,9 +63,20 @@ internal sealed class PollGroup
     /// <summary>The failure last reported for this group while its PLC answered; null when it reads.</summary>
     public string? Failure { get; set; }
 
-    /// <summary>Takes a changed word (a completion flag as 0 or 1) from the watch.</summary>
-    public void Update(WatchEvent change)
-        => _words[change.TagIndex] = change.NewValue.Type == PlcValueType.Bit ? (ushort)(change.NewValue.ToBoolean() ? 1 : 0) : change.NewValue.ToUInt16();
+    /// <summary>Takes a changed word (a completion flag as 0 or 1) of the group's tag <paramref name="index"/> from the watch.</summary>
+    public void Update(int index, WatchEvent change)
+        => _words[index] = Word(change.NewValue);
+
+    /// <summary>Takes the group's words from a read of its <see cref="Tags"/>, in their order.</summary>
+    public void Read(IReadOnlyList<PlcTagValue> values)
+    {
+        for (int i = 0; i < _words.Length; i++)
+        {
+            _words[i] = values[i].Words[0];
+        }
+    }
+
+    private static ushort Word(PlcValue value) => value.Type == PlcValueType.Bit ? (ushort)(value.ToBoolean() ? 1 : 0) : value.ToUInt16();
 
     /// <summary>The values, formatted: <c>1234</c>, <c>[1, 2, 3]</c>, <c>"TEXT"</c>.</summary>
     /// <exception cref="FormatException">A BCD word holds a nibble above 9, or text a byte above 0x7F.</exception>

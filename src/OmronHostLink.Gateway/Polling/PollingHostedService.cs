@@ -16,7 +16,7 @@ namespace OmronHostLink.Gateway.Polling;
 /// <param name="loggerFactory">For the links' logs.</param>
 /// <param name="timeProvider">The clock of intervals, backoff and timestamps.</param>
 /// <param name="outputs">The outputs (<see cref="OpenLinks"/>, MQTT when configured): each receives what the links read.</param>
-public sealed class PollingHostedService(IOptions<GatewayOptions> options, IServiceProvider services, ILoggerFactory loggerFactory, TimeProvider timeProvider, IEnumerable<ITagOutput> outputs)
+internal sealed class PollingHostedService(IOptions<GatewayOptions> options, IServiceProvider services, ILoggerFactory loggerFactory, TimeProvider timeProvider, IEnumerable<ITagOutput> outputs)
     : BackgroundService
 {
     /// <inheritdoc/>

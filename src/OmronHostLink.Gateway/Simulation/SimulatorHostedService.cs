@@ -3,6 +3,7 @@ using System.Net.Sockets;
 using Microsoft.Extensions.Hosting;
 using Microsoft.Extensions.Logging;
 using Microsoft.Extensions.Options;
+using OmronHostLink.Gateway.Configuration;
 using OmronHostLink.Simulator;
 using OmronHostLink.Simulator.Hosting;
 
@@ -12,7 +13,7 @@ namespace OmronHostLink.Gateway.Simulation;
 /// Runs a <see cref="VirtualPlc"/> on 127.0.0.1 inside the worker when <c>Simulator:Enabled</c> is true. Registered
 /// before the polling service, so it listens before the first link connects, and stops after the links.
 /// </summary>
-public sealed class SimulatorHostedService : IHostedService, IAsyncDisposable
+internal sealed class SimulatorHostedService : IHostedService, IAsyncDisposable
 {
     private readonly IOptions<SimulatorOptions> _options;
     private readonly ILogger _logger;
@@ -71,8 +72,8 @@ public sealed class SimulatorHostedService : IHostedService, IAsyncDisposable
         {
             // One line, not the host's failure with two stack traces: another program (often a second gateway) has it.
             await host.DisposeAsync().ConfigureAwait(false);
-            GatewayLog.SimulatorPortInUse(_logger, o.Port);
-            Environment.ExitCode = GatewayProgram.InvalidConfiguration;
+            SimulatorLog.PortInUse(_logger, o.Port);
+            Environment.ExitCode = ExitCodes.InvalidConfiguration;
             _lifetime.StopApplication();
             return;
         }
@@ -80,7 +81,7 @@ public sealed class SimulatorHostedService : IHostedService, IAsyncDisposable
         _host = host;
         Plc = plc;
         string faults = plc.Options.Faults.Any ? $" with faults (seed {plc.Options.Faults.Seed})" : "";
-        GatewayLog.SimulatorStarted(_logger, string.Join(", ", o.UnitsOrDefault), host.EndPoint.ToString(), faults);
+        SimulatorLog.Started(_logger, string.Join(", ", o.UnitsOrDefault), host.EndPoint.ToString(), faults);
         if (o.Animate is { Address.Length: > 0 } animate)
         {
             _animation = new CancellationTokenSource();
@@ -103,7 +104,7 @@ public sealed class SimulatorHostedService : IHostedService, IAsyncDisposable
         {
             await _host.StopAsync(cancellationToken).ConfigureAwait(false);
             _host = null;
-            GatewayLog.SimulatorStopped(_logger, Plc!.FaultCounters.ToString());
+            SimulatorLog.Stopped(_logger, Plc!.FaultCounters.ToString());
         }
     }
 

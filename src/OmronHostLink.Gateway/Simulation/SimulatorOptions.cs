@@ -1,11 +1,10 @@
-using System.ComponentModel.DataAnnotations;
 using System.Globalization;
 using OmronHostLink.Simulator.Faults;
 
 namespace OmronHostLink.Gateway.Simulation;
 
 /// <summary>The <c>Simulator</c> section: an in-process virtual PLC on 127.0.0.1 for trying the worker without a PLC.</summary>
-public sealed class SimulatorOptions
+internal sealed class SimulatorOptions
 {
     /// <summary>The configuration section these options bind to.</summary>
     public const string SectionName = "Simulator";
@@ -14,7 +13,6 @@ public sealed class SimulatorOptions
     public bool Enabled { get; set; }
 
     /// <summary>The TCP port on 127.0.0.1. Default 9601.</summary>
-    [Range(1, 65535)]
     public int Port { get; set; } = 9601;
 
     /// <summary>The unit numbers the virtual PLC answers. Default [0].</summary>
@@ -33,7 +31,6 @@ public sealed class SimulatorOptions
     public TimeSpan Turnaround { get; set; }
 
     /// <summary>Emulated line speed (0 = as fast as TCP goes). Default 0.</summary>
-    [Range(0, 1_000_000)]
     public int BaudRate { get; set; }
 
     /// <summary>Fault injection (Seed, Drop, Corrupt, Noise, Truncate, Late, LateBy, Echo); default none.</summary>
@@ -44,7 +41,7 @@ public sealed class SimulatorOptions
 }
 
 /// <summary>A word the simulator increments every <see cref="Interval"/>.</summary>
-public sealed class AnimateOptions
+internal sealed class AnimateOptions
 {
     /// <summary>The word address. Empty for none.</summary>
     public string Address { get; set; } = "";

@@ -1,48 +1,33 @@
-using Microsoft.Extensions.Configuration;
-using Microsoft.Extensions.Options;
 using OmronHostLink.Gateway.Configuration;
 
 namespace OmronHostLink.Gateway.Simulation;
 
-/// <summary>Checks the <c>Simulator</c> section when the simulator is enabled, naming bad fields by path.</summary>
-public sealed class SimulatorOptionsValidator : IValidateOptions<SimulatorOptions>
+/// <summary>Checks the <c>Simulator</c> section, and when the simulator is enabled its values, naming bad fields by path.</summary>
+/// <param name="gateway">The configuration as the gateway reads it.</param>
+internal sealed class SimulatorOptionsValidator(GatewayConfiguration gateway) : SectionValidator<SimulatorOptions>(gateway, SimulatorOptions.SectionName)
 {
-    private readonly IConfiguration? _configuration;
-
-    /// <summary>Checks the bound options only.</summary>
-    public SimulatorOptionsValidator()
-    {
-    }
-
-    /// <summary>Checks the section as written first (<see cref="ConfigurationSchema"/>), then the bound options.</summary>
-    /// <param name="configuration">The configuration the options are bound from.</param>
-    public SimulatorOptionsValidator(IConfiguration configuration)
-    {
-        _configuration = configuration;
-    }
+    /// <inheritdoc/>
+    protected override bool IsOn(SimulatorOptions options) => options.Enabled;
 
     /// <inheritdoc/>
-    public ValidateOptionsResult Validate(string? name, SimulatorOptions options)
+    protected override void Check(SimulatorOptions options, List<string> failures)
     {
-        ArgumentNullException.ThrowIfNull(options);
-        if (_configuration is not null
-            && ConfigurationSchema.Check(_configuration.GetSection(SimulatorOptions.SectionName), typeof(SimulatorOptions)) is { Count: > 0 } written)
-        {
-            return ValidateOptionsResult.Fail(written);
-        }
-
-        if (!options.Enabled)
-        {
-            return ValidateOptionsResult.Success;
-        }
-
         const string root = SimulatorOptions.SectionName;
-        var failures = new List<string>();
+        if (options.Port is < 1 or > 65535)
+        {
+            failures.Add($"{root}:Port must be 1-65535; it is {options.Port}.");
+        }
+
+        if (options.BaudRate is < 0 or > 1_000_000)
+        {
+            failures.Add($"{root}:BaudRate must be 0 (as fast as TCP goes) to 1000000; it is {options.BaudRate}.");
+        }
+
         foreach (int unit in options.UnitsOrDefault)
         {
-            if (unit is < 0 or > HostLinkUnit.MaxUnitNumber)
+            if (HostLinkRules.CheckUnitNumber(unit) is { } unitProblem)
             {
-                failures.Add($"{root}:Units: unit numbers are 0-{HostLinkUnit.MaxUnitNumber}; {unit} is not.");
+                failures.Add($"{root}:Units: {unitProblem}.");
             }
         }
 
@@ -82,9 +67,7 @@ public sealed class SimulatorOptionsValidator : IValidateOptions<SimulatorOption
         }
         catch (ArgumentException e)
         {
-            failures.Add($"{root}:Faults:{e.ParamName}: {e.Message}");
+            failures.Add($"{root}:Faults:{e.ParamName}: {ErrorText.Of(e)}");
         }
-
-        return failures.Count == 0 ? ValidateOptionsResult.Success : ValidateOptionsResult.Fail(failures);
     }
 }

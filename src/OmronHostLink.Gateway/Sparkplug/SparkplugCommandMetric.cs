@@ -4,7 +4,7 @@ using OmronHostLink.Gateway.Sparkplug.Wire;
 namespace OmronHostLink.Gateway.Sparkplug;
 
 /// <summary>A metric of a received command (NCMD, DCMD): the metric it names and the value it carries.</summary>
-public sealed class SparkplugCommandMetric
+internal sealed class SparkplugCommandMetric
 {
     private readonly Payload.Types.Metric _metric;
 

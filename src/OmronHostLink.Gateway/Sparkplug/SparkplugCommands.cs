@@ -2,8 +2,9 @@ using System.Diagnostics.Metrics;
 using System.Text.Json;
 using System.Threading.Channels;
 using Microsoft.Extensions.Logging;
-using OmronHostLink.Gateway.Mqtt;
+using OmronHostLink.Gateway.Configuration;
 using OmronHostLink.Gateway.Outputs;
+using OmronHostLink.Gateway.Writes;
 
 namespace OmronHostLink.Gateway.Sparkplug;
 
@@ -14,12 +15,19 @@ namespace OmronHostLink.Gateway.Sparkplug;
 /// refused and logged, and nothing reaches the PLC for it. Sparkplug has no reply to a command: the value written comes
 /// back in the next DDATA, read from the PLC.
 /// </summary>
-public sealed class SparkplugCommands
+/// <remarks>
+/// A command is bounded before anything of it waits: a metric given several times is written once, with the last
+/// value the command gives it, in the place of its last mention (so a value set before a trigger stays before it); a
+/// command of more metric writes than the backlog holds, or than there is room for now, is refused whole, and the
+/// refusal says how many writes it asked for (<see cref="WriteBacklog"/>, the bound of JSON commands).
+/// </remarks>
+internal sealed class SparkplugCommands
 {
-    /// <summary>How many commands may wait; more are refused at once.</summary>
-    public const int Backlog = 256;
+    /// <summary>How many unknown metrics a refusal names before it counts the rest.</summary>
+    private const int NamesShown = 5;
 
-    private readonly Channel<(string Device, byte[] Payload)> _commands = Channel.CreateBounded<(string, byte[])>(new BoundedChannelOptions(Backlog) { SingleReader = true });
+    private readonly Channel<DeviceCommand> _commands = Channel.CreateUnbounded<DeviceCommand>(new UnboundedChannelOptions { SingleReader = true });
+    private readonly WriteBacklog _backlog = new();
     private readonly SparkplugNode _node;
     private readonly TagWriter _writer;
     private readonly bool _enabled;
@@ -35,33 +43,62 @@ public sealed class SparkplugCommands
         _node = node;
         _writer = new TagWriter(links);
         _logger = logger;
-        _writes = meterFactory.Create(MqttMetrics.MeterName).CreateCounter<long>("hostlink.gateway.sparkplug.writes", "{metric}", "DCMD metric writes by result: done, refused, failed.");
+        _writes = meterFactory.Create(GatewayNames.Meter).CreateCounter<long>("hostlink.gateway.sparkplug.writes", "{metric}", "DCMD metric writes by result: done, refused, failed.");
     }
 
-    /// <summary>Takes a DCMD from the MQTT client's receive path; never blocks it.</summary>
-    public void Accept(string device, byte[] payload)
+    /// <summary>How many metric writes wait now.</summary>
+    public int Waiting => _backlog.Waiting;
+
+    /// <summary>
+    /// Takes a DCMD from the MQTT client's receive path, never blocking it: reads and merges its metrics, and queues
+    /// their writes if the backlog has room for all of them; otherwise refuses it whole.
+    /// </summary>
+    public void Accept(string deviceId, byte[] payload)
     {
-        if (!_commands.Writer.TryWrite((device, payload)))
+        if (Plan(deviceId, payload) is not { Writes.Count: > 0 } command)
         {
-            Refused(device, "(all)", $"{Backlog} commands are already waiting; send it again later.");
+            return;
+        }
+
+        int count = command.Writes.Count;
+        if (count > WriteBacklog.Capacity)
+        {
+            RefusedWhole(deviceId, count, $"a DCMD may carry at most {WriteBacklog.Capacity} metric writes (each metric counted once)");
+        }
+        else if (!_backlog.TryReserve(count))
+        {
+            RefusedWhole(deviceId, count, $"{_backlog.Waiting} metric writes are waiting already and at most {WriteBacklog.Capacity} may; send it again later");
+        }
+        else if (!_commands.Writer.TryWrite(command))
+        {
+            // Stopped: nothing is carried out any more.
+            _backlog.Release(count);
         }
     }
 
-    /// <summary>Carries out commands in the order they came until <paramref name="cancellationToken"/> is cancelled.</summary>
+    /// <summary>Carries out the queued writes in the order they came until <paramref name="cancellationToken"/> is cancelled.</summary>
     public async Task RunAsync(CancellationToken cancellationToken)
     {
         try
         {
-            await foreach ((string device, byte[] payload) in _commands.Reader.ReadAllAsync(cancellationToken).ConfigureAwait(false))
+            await foreach (DeviceCommand command in _commands.Reader.ReadAllAsync(cancellationToken).ConfigureAwait(false))
             {
-                try
+                foreach (MetricWrite write in command.Writes)
                 {
-                    await ExecuteAsync(device, payload, cancellationToken).ConfigureAwait(false);
-                }
-                catch (Exception e) when (e is not OperationCanceledException && e is not OutOfMemoryException)
-                {
-                    // A bug must not end the loop: every later command would be ignored.
-                    Refused(device, "(all)", $"the gateway failed on the command ({e.GetType().Name}: {e.Message}).");
+                    try
+                    {
+                        await ExecuteAsync(command.Device, write, cancellationToken).ConfigureAwait(false);
+                    }
+                    catch (Exception e) when (e is not OperationCanceledException && e is not OutOfMemoryException)
+                    {
+                        // A bug must not end the loop: every later command would be ignored.
+                        _writes.Add(1, new KeyValuePair<string, object?>("result", TagWriteStatus.Failed.Name()));
+                        SparkplugLog.WriteCrashed(_logger, e, command.Device.Id, write.Label);
+                    }
+                    finally
+                    {
+                        _backlog.Release(1);
+                    }
                 }
             }
         }
@@ -71,67 +108,100 @@ public sealed class SparkplugCommands
         }
     }
 
-    /// <summary>Checks and carries out the metrics of one DCMD, in their order.</summary>
-    /// <returns>The outcome of each metric, by its name (or <c>alias N</c>).</returns>
-    public async Task<IReadOnlyList<(string Metric, TagWriteOutcome Outcome)>> ExecuteAsync(string deviceId, byte[] payload, CancellationToken cancellationToken)
+    /// <summary>
+    /// The writes of a DCMD: each metric it names once, with the last value it gives it, in the order of their last
+    /// mention. Null, after logging why, for a command refused whole (no such device, not a Sparkplug B payload,
+    /// writes disabled). Metrics the device does not have are refused and logged, together.
+    /// </summary>
+    internal DeviceCommand? Plan(string deviceId, byte[] payload)
     {
-        var outcomes = new List<(string, TagWriteOutcome)>();
         SparkplugDevice? device = _node.Device(deviceId);
         IReadOnlyList<SparkplugCommandMetric>? metrics = SparkplugCommandMetric.Parse(payload);
         if (device is null || metrics is null)
         {
-            string why = device is null ? $"this edge node has no device {deviceId}." : "the payload is not a Sparkplug B payload.";
-            outcomes.Add(("(all)", Refused(deviceId, "(all)", why)));
-            return outcomes;
+            RefusedWhole(deviceId, metrics?.Count ?? 0, device is null ? $"this edge node has no device {deviceId}" : "the payload is not a Sparkplug B payload");
+            return null;
         }
 
-        foreach (SparkplugCommandMetric command in metrics)
+        if (!_enabled)
         {
+            RefusedWhole(deviceId, metrics.Count, "writes are disabled (Sparkplug:Writes:Enabled is false)");
+            return null;
+        }
+
+        var last = new Dictionary<SparkplugMetric, MetricWrite>();
+        var unknown = new List<string>();
+        for (int i = 0; i < metrics.Count; i++)
+        {
+            SparkplugCommandMetric command = metrics[i];
             string label = command.Name ?? $"alias {command.Alias}";
-            SparkplugMetric? metric = device.Metrics.FirstOrDefault(m => command.Name is { } n ? m.Name == n : m.Alias == command.Alias);
-            TagWriteOutcome outcome;
+            SparkplugMetric? metric = command.Name is { } name ? device.Metric(name) : command.Alias is { } alias ? device.Metric(alias) : null;
             if (metric is null)
             {
-                outcome = Refused(deviceId, label, $"device {deviceId} has no such metric.");
-            }
-            else if (!_enabled)
-            {
-                outcome = Refused(deviceId, label, "writes are disabled (Sparkplug:Writes:Enabled is false).");
-            }
-            else if (!command.TryGetValue(metric.DataType, out JsonElement value, out string error))
-            {
-                outcome = Refused(deviceId, label, $"{error} (the metric is {metric.DataType}).");
-            }
-            else
-            {
-                TagDefinition tag = device.Tags[metric.Tag];
-                outcome = await _writer.WriteAsync(tag, value, metric.Element < 0 ? null : metric.Element, cancellationToken).ConfigureAwait(false);
-                if (outcome.Status == WriteResultPayload.Refused)
+                if (!unknown.Contains(label))
                 {
-                    Refused(deviceId, label, outcome.Error!);
+                    unknown.Add(label);
                 }
-                else if (outcome.IsDone)
-                {
-                    _writes.Add(1, new KeyValuePair<string, object?>("result", outcome.Status));
-                    SparkplugLog.WriteDone(_logger, deviceId, label, tag.Address.ToString(), value.GetRawText());
-                }
-                else
-                {
-                    _writes.Add(1, new KeyValuePair<string, object?>("result", outcome.Status));
-                    SparkplugLog.WriteFailed(_logger, deviceId, label, tag.Address.ToString(), value.GetRawText(), outcome.Error!);
-                }
+
+                continue;
             }
 
-            outcomes.Add((label, outcome));
+            last[metric] = new MetricWrite(metric, label, command, i);
         }
 
-        return outcomes;
+        if (unknown.Count > 0)
+        {
+            string names = string.Join(", ", unknown.Take(NamesShown)) + (unknown.Count > NamesShown ? $" and {unknown.Count - NamesShown} more" : "");
+            Refused(deviceId, names, $"device {deviceId} has no such metric.", unknown.Count);
+        }
+
+        return new DeviceCommand(device, last.Values.OrderBy(w => w.Position).ToList());
     }
 
-    private TagWriteOutcome Refused(string device, string metric, string reason)
+    /// <summary>Checks and carries out one metric write.</summary>
+    private async Task ExecuteAsync(SparkplugDevice device, MetricWrite write, CancellationToken cancellationToken)
     {
-        _writes.Add(1, new KeyValuePair<string, object?>("result", WriteResultPayload.Refused));
-        SparkplugLog.WriteRefused(_logger, device, metric, reason);
-        return TagWriteOutcome.Refused(reason);
+        SparkplugMetric metric = write.Metric;
+        if (!write.Command.TryGetValue(metric.DataType, out JsonElement value, out string error))
+        {
+            Refused(device.Id, write.Label, $"{error} (the metric is {metric.DataType}).");
+            return;
+        }
+
+        TagDefinition tag = device.Tags[metric.Tag];
+        TagWriteOutcome outcome = await _writer.WriteAsync(tag, value, metric.Element < 0 ? null : metric.Element, cancellationToken).ConfigureAwait(false);
+        if (outcome.Status == TagWriteStatus.Refused)
+        {
+            Refused(device.Id, write.Label, outcome.Error!);
+            return;
+        }
+
+        _writes.Add(1, new KeyValuePair<string, object?>("result", outcome.Status.Name()));
+        if (outcome.IsDone)
+        {
+            SparkplugLog.WriteDone(_logger, device.Id, write.Label, tag.Address.ToString(), value.GetRawText());
+        }
+        else
+        {
+            SparkplugLog.WriteFailed(_logger, device.Id, write.Label, tag.Address.ToString(), value.GetRawText(), outcome.Error!);
+        }
     }
+
+    private void Refused(string device, string metric, string reason, int count = 1)
+    {
+        _writes.Add(count, new KeyValuePair<string, object?>("result", TagWriteStatus.Refused.Name()));
+        SparkplugLog.WriteRefused(_logger, device, metric, reason);
+    }
+
+    private void RefusedWhole(string device, int count, string reason)
+    {
+        _writes.Add(count, new KeyValuePair<string, object?>("result", TagWriteStatus.Refused.Name()));
+        SparkplugLog.CommandRefused(_logger, device, count, reason);
+    }
+
+    /// <summary>A DCMD as it is carried out: its device and its metric writes, each metric once.</summary>
+    internal sealed record DeviceCommand(SparkplugDevice Device, IReadOnlyList<MetricWrite> Writes);
+
+    /// <summary>A metric to write, as the command named it, with the value of its last mention at <paramref name="Position"/>.</summary>
+    internal sealed record MetricWrite(SparkplugMetric Metric, string Label, SparkplugCommandMetric Command, int Position);
 }

@@ -4,7 +4,7 @@ namespace OmronHostLink.Gateway.Sparkplug;
 /// The Sparkplug B data type numbers (specification 3.0, 6.4.16) that this gateway sends or accepts. A metric carries
 /// the number in its <c>datatype</c> field; the number decides which <c>value</c> field holds the value.
 /// </summary>
-public enum SparkplugDataType
+internal enum SparkplugDataType
 {
     /// <summary>Not known.</summary>
     Unknown = 0,

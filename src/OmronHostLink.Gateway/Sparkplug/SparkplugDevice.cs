@@ -5,10 +5,13 @@ namespace OmronHostLink.Gateway.Sparkplug;
 
 /// <summary>
 /// A PLC unit as a Sparkplug device (<c>{link}-{unit}</c>): its metrics, one per tag of one value and one per value of a
-/// tag of several (<c>name/0</c>, <c>name/1</c>…), in the catalogue's order.
+/// tag of several (<c>name/0</c>, <c>name/1</c>…), in alias order (<see cref="FromCatalog"/>).
 /// </summary>
-public sealed class SparkplugDevice
+internal sealed class SparkplugDevice
 {
+    private readonly Dictionary<string, SparkplugMetric> _byName;
+    private readonly Dictionary<ulong, SparkplugMetric> _byAlias;
+
     internal SparkplugDevice(string link, int unit, IReadOnlyList<SparkplugMetric> metrics, IReadOnlyDictionary<string, TagDefinition> tags)
     {
         Link = link;
@@ -16,6 +19,8 @@ public sealed class SparkplugDevice
         Id = DeviceId(link, unit);
         Metrics = metrics;
         Tags = tags;
+        _byName = metrics.ToDictionary(m => m.Name, StringComparer.Ordinal);
+        _byAlias = metrics.ToDictionary(m => m.Alias);
     }
 
     /// <summary>The link's configured name.</summary>
@@ -33,10 +38,21 @@ public sealed class SparkplugDevice
     /// <summary>The tags behind the metrics, by tag name.</summary>
     public IReadOnlyDictionary<string, TagDefinition> Tags { get; }
 
+    /// <summary>The metric named <paramref name="name"/>; null when the device has none.</summary>
+    public SparkplugMetric? Metric(string name) => _byName.GetValueOrDefault(name);
+
+    /// <summary>The metric of alias <paramref name="alias"/>; null when the device has none.</summary>
+    public SparkplugMetric? Metric(ulong alias) => _byAlias.GetValueOrDefault(alias);
+
     /// <summary>The device id of a unit: <c>{link}-{unit}</c>.</summary>
     public static string DeviceId(string link, int unit) => $"{link}-{unit.ToString(CultureInfo.InvariantCulture)}";
 
-    /// <summary>The metrics of the catalogue's tags, one device per unit, with aliases from 1 in that order.</summary>
+    /// <summary>
+    /// The metrics of the catalogue's tags, one device per unit. Aliases are numbered from 1: devices by link name
+    /// (ordinal) and unit number, within a device the tags by name (ordinal), the values of a tag of several in order.
+    /// The order is the names', not the configuration file's: .NET's configuration gives a section's keys sorted, and
+    /// tag files add their rows beside them.
+    /// </summary>
     public static IReadOnlyList<SparkplugDevice> FromCatalog(TagCatalog catalog)
     {
         ArgumentNullException.ThrowIfNull(catalog);
@@ -46,7 +62,7 @@ public sealed class SparkplugDevice
         {
             var metrics = new List<SparkplugMetric>();
             var tags = new Dictionary<string, TagDefinition>(StringComparer.Ordinal);
-            foreach (TagDefinition tag in unit)
+            foreach (TagDefinition tag in unit.OrderBy(t => t.Name, StringComparer.Ordinal))
             {
                 tags[tag.Name] = tag;
                 SparkplugDataType type = SparkplugValues.DataTypeOf(tag.Type);

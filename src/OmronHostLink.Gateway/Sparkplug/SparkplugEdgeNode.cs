@@ -6,7 +6,7 @@ using Microsoft.Extensions.Options;
 using MQTTnet;
 using MQTTnet.Formatter;
 using MQTTnet.Protocol;
-using OmronHostLink.Gateway.Mqtt;
+using OmronHostLink.Gateway.Broker;
 
 namespace OmronHostLink.Gateway.Sparkplug;
 
@@ -23,7 +23,7 @@ namespace OmronHostLink.Gateway.Sparkplug;
 /// it is offline ends the session (NDEATH, disconnect) and the node reconnects after the backoff and waits again.
 /// Meanwhile the node keeps the latest values, and the births that follow carry them.
 /// </summary>
-public sealed class SparkplugEdgeNode : IHostedService, IAsyncDisposable
+internal sealed class SparkplugEdgeNode : IHostedService, IAsyncDisposable
 {
     private readonly SparkplugOptions _options;
     private readonly SparkplugNode _node;
@@ -212,7 +212,7 @@ public sealed class SparkplugEdgeNode : IHostedService, IAsyncDisposable
             catch (Exception e) when (e is not OutOfMemoryException)
             {
                 IsOnline = false;
-                (string reason, TimeSpan delay) = await _connection.FailedAsync(e, x => x.Message).ConfigureAwait(false);
+                (string reason, TimeSpan delay) = await _connection.FailedAsync(e).ConfigureAwait(false);
                 _node.TakeMessages(connected: false);
                 SparkplugLog.Unreachable(_logger, _connection.Broker, reason, delay.TotalSeconds);
                 if (!await _connection.DelayAsync(delay).ConfigureAwait(false))

@@ -43,4 +43,10 @@ internal static partial class SparkplugLog
 
     [LoggerMessage(EventId = 1313, Level = LogLevel.Warning, Message = "Sparkplug: STATE on {Topic} ignored: {Why}")]
     public static partial void StateIgnored(ILogger logger, string topic, string why);
+
+    [LoggerMessage(EventId = 1314, Level = LogLevel.Warning, Message = "Sparkplug: DCMD {Device} refused whole, {Writes} metric write(s), nothing sent to the PLC: {Reason}")]
+    public static partial void CommandRefused(ILogger logger, string device, int writes, string reason);
+
+    [LoggerMessage(EventId = 1315, Level = LogLevel.Error, Message = "Sparkplug: DCMD {Device} {Metric}: the gateway failed on the write; nothing more is sent for it")]
+    public static partial void WriteCrashed(ILogger logger, Exception exception, string device, string metric);
 }

@@ -3,4 +3,4 @@ namespace OmronHostLink.Gateway.Sparkplug;
 /// <summary>A message the edge node publishes: its topic and payload.</summary>
 /// <param name="Topic">The Sparkplug topic.</param>
 /// <param name="Payload">The encoded payload.</param>
-public sealed record SparkplugMessage(SparkplugTopic Topic, byte[] Payload);
+internal sealed record SparkplugMessage(SparkplugTopic Topic, byte[] Payload);

@@ -1,7 +1,7 @@
 namespace OmronHostLink.Gateway.Sparkplug;
 
 /// <summary>The Sparkplug B message types (the third topic level), as the specification spells them.</summary>
-public enum SparkplugMessageType
+internal enum SparkplugMessageType
 {
     /// <summary>The edge node is online: its metrics, with aliases, and a new <c>bdSeq</c>.</summary>
     NBIRTH,

@@ -10,4 +10,4 @@ namespace OmronHostLink.Gateway.Sparkplug;
 /// <param name="Tag">The tag it belongs to.</param>
 /// <param name="Element">The element of the tag's values; -1 for a tag of one value.</param>
 /// <param name="Writable">Whether a DCMD may write it (the tag is on the write allowlist).</param>
-public sealed record SparkplugMetric(string Name, ulong Alias, SparkplugDataType DataType, string Tag, int Element, bool Writable);
+internal sealed record SparkplugMetric(string Name, ulong Alias, SparkplugDataType DataType, string Tag, int Element, bool Writable);

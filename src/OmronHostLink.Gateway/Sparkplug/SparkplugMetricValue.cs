@@ -5,4 +5,4 @@ namespace OmronHostLink.Gateway.Sparkplug;
 /// <param name="Value">The value (a number, bool or string); null where none was ever read.</param>
 /// <param name="Time">When the value was read from the PLC (or when reading failed).</param>
 /// <param name="Quality">A <see cref="SparkplugQuality"/> code.</param>
-public sealed record SparkplugMetricValue(SparkplugMetric Metric, object? Value, DateTimeOffset Time, int Quality = SparkplugQuality.Good);
+internal sealed record SparkplugMetricValue(SparkplugMetric Metric, object? Value, DateTimeOffset Time, int Quality = SparkplugQuality.Good);

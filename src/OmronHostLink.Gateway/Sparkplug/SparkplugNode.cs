@@ -11,7 +11,7 @@ namespace OmronHostLink.Gateway.Sparkplug;
 /// changed, and <see cref="Changed"/> wakes the publisher, which takes the messages (<see cref="TakeMessages"/>) and
 /// numbers them in the order it publishes them.
 /// </summary>
-public sealed class SparkplugNode : ITagOutput
+internal sealed class SparkplugNode : ITagOutput
 {
     private readonly object _gate = new();
     private readonly Dictionary<(string Link, int Unit), DeviceState> _devices = new();
@@ -277,20 +277,24 @@ public sealed class SparkplugNode : ITagOutput
                 return false;
             }
 
+            if (change.Quality == TagQuality.CommError)
+            {
+                // The unit does not answer: that is the device's death, not a quality of its metrics (a DDATA of bad
+                // qualities would otherwise go out just before the DDEATH). Its next birth carries what it reads then.
+                bool wasAlive = Alive;
+                Die();
+                return wasAlive;
+            }
+
             bool changed = false;
-            if (change.Quality != TagQuality.CommError && !Alive && _answered.Add(change.Tag) && _answered.Count == _metricsOfTag.Count)
+            if (!Alive && _answered.Add(change.Tag) && _answered.Count == _metricsOfTag.Count)
             {
                 // The unit answered for every tag: alive, born at the next publication.
                 Alive = true;
                 changed = true;
             }
 
-            int quality = change.Quality switch
-            {
-                TagQuality.Good => SparkplugQuality.Good,
-                TagQuality.Stale => SparkplugQuality.Stale,
-                _ => SparkplugQuality.Bad,
-            };
+            int quality = change.Quality == TagQuality.Good ? SparkplugQuality.Good : SparkplugQuality.Stale;
             foreach (int index in metrics)
             {
                 SparkplugMetric metric = Device.Metrics[index];

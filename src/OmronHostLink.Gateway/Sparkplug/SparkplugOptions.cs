@@ -1,4 +1,5 @@
-using OmronHostLink.Gateway.Mqtt;
+using OmronHostLink.Gateway.Broker;
+
 
 namespace OmronHostLink.Gateway.Sparkplug;
 
@@ -8,7 +9,7 @@ namespace OmronHostLink.Gateway.Sparkplug;
 /// node's death certificate (NDEATH) is that connection's will; its broker keys (<see cref="MqttBrokerOptions"/>) are
 /// those of the <c>Mqtt</c> section. Without the section (or with <c>Enabled: false</c>) nothing is published.
 /// </summary>
-public sealed class SparkplugOptions : MqttBrokerOptions
+internal sealed class SparkplugOptions : MqttBrokerOptions
 {
     /// <summary>The configuration section these options bind to.</summary>
     public const string SectionName = "Sparkplug";
@@ -37,7 +38,7 @@ public sealed class SparkplugOptions : MqttBrokerOptions
 }
 
 /// <summary>The <c>Sparkplug:Writes</c> section.</summary>
-public sealed class SparkplugWriteOptions
+internal sealed class SparkplugWriteOptions
 {
     /// <summary>
     /// Carry out DCMD metric writes to the tags configured <c>Writable</c> (the same allowlist and value checks as MQTT

@@ -7,7 +7,7 @@ namespace OmronHostLink.Gateway.Sparkplug;
 /// The payloads an edge node sends (specification 3.0, 6.4.x): births name every metric with its alias, type and
 /// value; data messages carry aliases only; deaths carry no metrics but the node's <c>bdSeq</c>.
 /// </summary>
-public static class SparkplugPayloads
+internal static class SparkplugPayloads
 {
     /// <summary>The node metric that tells a host application which NDEATH ends which NBIRTH.</summary>
     public const string BirthDeathSequence = "bdSeq";

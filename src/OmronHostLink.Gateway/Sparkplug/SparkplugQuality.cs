@@ -4,7 +4,7 @@ namespace OmronHostLink.Gateway.Sparkplug;
 /// The <c>Quality</c> metric property: an Int32 with the OPC quality codes Ignition's MQTT Engine reads (192 good,
 /// 0 bad, 500 stale). Sent only where a value is not good; a device that stops answering gets a DDEATH instead.
 /// </summary>
-public static class SparkplugQuality
+internal static class SparkplugQuality
 {
     /// <summary>The property's key.</summary>
     public const string PropertyName = "Quality";

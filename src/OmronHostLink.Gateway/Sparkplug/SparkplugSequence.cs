@@ -4,7 +4,7 @@ namespace OmronHostLink.Gateway.Sparkplug;
 /// The edge node's message sequence number: 0 in NBIRTH, then one more for every NDATA, DBIRTH, DDATA and DDEATH,
 /// 255 wrapping to 0 (specification 3.0, 6.4.1). Not thread-safe: the one publisher of the node's messages owns it.
 /// </summary>
-public sealed class SparkplugSequence
+internal sealed class SparkplugSequence
 {
     private int _next;
 

@@ -1,32 +1,33 @@
-using Microsoft.Extensions.Configuration;
 using Microsoft.Extensions.DependencyInjection;
 using Microsoft.Extensions.Logging;
 using Microsoft.Extensions.Options;
 using OmronHostLink.Gateway.Configuration;
 using OmronHostLink.Gateway.Outputs;
+using OmronHostLink.Gateway.Writes;
 
 namespace OmronHostLink.Gateway.Sparkplug;
 
 /// <summary>Registers the Sparkplug B output when the configuration has an enabled <c>Sparkplug</c> section.</summary>
-public static class SparkplugServiceCollectionExtensions
+internal static class SparkplugServiceCollectionExtensions
 {
     /// <summary>
-    /// Adds the Sparkplug B edge node (options and their validation, the node the links report to, the DCMD processor
-    /// and the MQTT session) if <paramref name="configuration"/> has a <c>Sparkplug</c> section whose <c>Enabled</c> is
-    /// not false; otherwise nothing. Call it before the polling service is added, so that the edge node stops after the
-    /// links and can send their devices' deaths before its own.
+    /// Adds the <c>Sparkplug</c> section's check (a misspelt key is named even with the output off) and, when the
+    /// section is there and its <c>Enabled</c> is not false, the Sparkplug B edge node: its rule for the links' and
+    /// groups' names and the writable rule, the node the links report to, the DCMD processor and the MQTT session.
+    /// Call it before the polling service is added, so that the edge node stops after the links and can send their
+    /// devices' deaths before its own.
     /// </summary>
-    public static IServiceCollection AddSparkplugOutput(this IServiceCollection services, IConfiguration configuration)
+    public static IServiceCollection AddSparkplugOutput(this IServiceCollection services, GatewayConfiguration gateway)
     {
-        ArgumentNullException.ThrowIfNull(configuration);
-        IConfigurationSection section = configuration.GetSection(SparkplugOptions.SectionName);
-        if (!section.Exists() || (bool.TryParse(section[nameof(SparkplugOptions.Enabled)], out bool enabled) && !enabled))
+        ArgumentNullException.ThrowIfNull(gateway);
+        new SparkplugOptionsValidator(gateway).AddTo(services);
+        if (!gateway.IsEnabled(SparkplugOptions.SectionName))
         {
             return services;
         }
 
-        services.AddOptions<SparkplugOptions>().Configure(o => ConfigurationSchema.Bind(section, o)).ValidateOnStart();
-        services.AddSingleton<IValidateOptions<SparkplugOptions>>(new SparkplugOptionsValidator(configuration));
+        gateway.AddGroupRule(new SparkplugNames());
+        gateway.AddGroupRule(new WritableRule());
         services.AddOutputServices();
         services.AddSingleton(sp => new SparkplugNode(
             sp.GetRequiredService<IOptions<SparkplugOptions>>().Value,

@@ -7,7 +7,7 @@ namespace OmronHostLink.Gateway.Sparkplug;
 /// <param name="Type">The message type.</param>
 /// <param name="EdgeNodeId">The edge node (this gateway).</param>
 /// <param name="DeviceId">The device (a PLC unit); null for node messages.</param>
-public sealed record SparkplugTopic(string GroupId, SparkplugMessageType Type, string EdgeNodeId, string? DeviceId = null)
+internal sealed record SparkplugTopic(string GroupId, SparkplugMessageType Type, string EdgeNodeId, string? DeviceId = null)
 {
     /// <summary>The namespace element every Sparkplug B topic starts with.</summary>
     public const string Namespace = "spBv1.0";

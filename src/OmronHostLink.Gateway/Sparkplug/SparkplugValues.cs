@@ -8,7 +8,7 @@ namespace OmronHostLink.Gateway.Sparkplug;
 /// Tag types to Sparkplug data types, and values in and out of a metric's <c>value</c> field by the rules of the
 /// specification (3.0, 6.4.16): signed integers travel as two's complement in the unsigned fields.
 /// </summary>
-public static class SparkplugValues
+internal static class SparkplugValues
 {
     /// <summary>The Sparkplug data type of one value of a tag of <paramref name="type"/>.</summary>
     public static SparkplugDataType DataTypeOf(PlcValueType type) => type switch

@@ -1,7 +1,6 @@
 using System.Diagnostics.Metrics;
 using Microsoft.Extensions.Options;
 using OmronHostLink.Gateway.Configuration;
-using OmronHostLink.Gateway.Mqtt;
 using OmronHostLink.Gateway.Outputs;
 
 namespace OmronHostLink.Gateway.Statistics;
@@ -15,13 +14,24 @@ namespace OmronHostLink.Gateway.Statistics;
 /// polling (this is an output). The demotions are instruments of the gateway's meter:
 /// <c>hostlink.gateway.unit.demoted</c> and <c>hostlink.gateway.unit.demotions</c>.
 /// </summary>
-public sealed class LinkStatistics : ITagOutput, IDisposable
+internal sealed class LinkStatistics : ITagOutput, IScanOutput, IDisposable
 {
     /// <summary>Gauge: 1 for a demoted unit, 0 for the others (attributes <c>hostlink.link.name</c>, <c>hostlink.unit</c>).</summary>
     public const string DemotedName = "hostlink.gateway.unit.demoted";
 
     /// <summary>Counter: demotions of a unit.</summary>
     public const string DemotionsName = "hostlink.gateway.unit.demotions";
+
+    /// <summary>
+    /// Histogram: each scan class's cycle time, from the start of a cycle to its last answer, in seconds (attributes
+    /// <c>hostlink.link.name</c>, <c>hostlink.unit</c>, <c>hostlink.scan.interval</c> in seconds).
+    /// </summary>
+    public const string CycleDurationName = "hostlink.gateway.scan.cycle.duration";
+
+    /// <summary>Gauge: each scan class's planned cycle time (the least its reads take on the line), in seconds; same attributes.</summary>
+    public const string CycleEstimateName = "hostlink.gateway.scan.cycle.estimated";
+
+    private const string IntervalTag = "hostlink.scan.interval";
 
     private const string OperationDuration = "hostlink.client.operation.duration";
     private const string ExchangeDuration = "hostlink.client.exchange.duration";
@@ -32,6 +42,8 @@ public sealed class LinkStatistics : ITagOutput, IDisposable
 
     private readonly object _gate = new();
     private readonly SortedDictionary<(string Link, int Unit), Tally> _units = new();
+    private readonly SortedDictionary<(string Link, int Unit, TimeSpan Interval), ScanTally> _scans = new();
+    private readonly Histogram<double> _cycles;
     private readonly Dictionary<string, LinkState> _links = new(StringComparer.Ordinal);
     private readonly MeterListener _listener;
     private readonly TimeProvider _time;
@@ -59,9 +71,11 @@ public sealed class LinkStatistics : ITagOutput, IDisposable
             }
         }
 
-        Meter meter = meterFactory.Create(MqttMetrics.MeterName);
+        Meter meter = meterFactory.Create(GatewayNames.Meter);
         meter.CreateObservableGauge(DemotedName, ObserveDemoted, "{unit}", "1 while a PLC unit is demoted (not polled, probed once a demotion period), else 0.");
         _demotions = meter.CreateCounter<long>(DemotionsName, "{demotion}", "PLC units demoted after staying silent Demotion:After polls in a row.");
+        _cycles = meter.CreateHistogram<double>(CycleDurationName, "s", "Scan class cycle time: every tag of one unit at one interval read, from the cycle's start to its last answer.");
+        meter.CreateObservableGauge(CycleEstimateName, ObserveEstimates, "s", "Scan class planned cycle time: the least its reads take on the line.");
 
         _listener = new MeterListener
         {
@@ -89,7 +103,7 @@ public sealed class LinkStatistics : ITagOutput, IDisposable
         DateTimeOffset now = _time.GetUtcNow();
         lock (_gate)
         {
-            return _units.Select(u => u.Value.ToStatistics(u.Key.Link, u.Key.Unit, Name(u.Value.State), _since, now)).ToList();
+            return _units.Select(u => u.Value.ToStatistics(u.Key.Link, u.Key.Unit, u.Value.State.Name(), _since, now, ScanClasses(u.Key.Link, u.Key.Unit))).ToList();
         }
     }
 
@@ -99,7 +113,7 @@ public sealed class LinkStatistics : ITagOutput, IDisposable
         lock (_gate)
         {
             return _units.TryGetValue((link, unit), out Tally? tally)
-                ? tally.ToStatistics(link, unit, Name(tally.State), _since, _time.GetUtcNow())
+                ? tally.ToStatistics(link, unit, tally.State.Name(), _since, _time.GetUtcNow(), ScanClasses(link, unit))
                 : null;
         }
     }
@@ -115,8 +129,8 @@ public sealed class LinkStatistics : ITagOutput, IDisposable
                 total.Add(unit);
             }
 
-            string state = _links.TryGetValue(link, out LinkState linkState) ? MqttTagSink.LinkStateName(linkState) : "offline";
-            return total.ToStatistics(link, null, state, _since, _time.GetUtcNow());
+            string state = _links.TryGetValue(link, out LinkState linkState) ? linkState.Name() : LinkState.Offline.Name();
+            return total.ToStatistics(link, null, state, _since, _time.GetUtcNow(), ScanClasses(link, null));
         }
     }
 
@@ -169,14 +183,67 @@ public sealed class LinkStatistics : ITagOutput, IDisposable
     }
 
     /// <inheritdoc/>
+    public void ScanPlanned(ScanPlan plan)
+    {
+        ArgumentNullException.ThrowIfNull(plan);
+        lock (_gate)
+        {
+            ScanOf(plan.Link, plan.Unit, plan.Interval).Plan = plan;
+        }
+    }
+
+    /// <inheritdoc/>
+    public void ScanCycled(ScanCycle cycle)
+    {
+        ArgumentNullException.ThrowIfNull(cycle);
+        lock (_gate)
+        {
+            ScanTally scan = ScanOf(cycle.Link, cycle.Unit, cycle.Interval);
+            scan.Cycles++;
+            scan.Total += cycle.Duration;
+            scan.Last = cycle.Duration;
+            scan.Overruns += cycle.Overran ? 1 : 0;
+        }
+
+        _cycles.Record(
+            cycle.Duration.TotalSeconds,
+            new KeyValuePair<string, object?>(LinkNameTag, cycle.Link),
+            new KeyValuePair<string, object?>(UnitTag, cycle.Unit),
+            new KeyValuePair<string, object?>(IntervalTag, cycle.Interval.TotalSeconds));
+    }
+
+    /// <inheritdoc/>
     public void Dispose() => _listener.Dispose();
 
-    private static string Name(UnitState state) => state switch
+    private ScanTally ScanOf(string link, int unit, TimeSpan interval)
     {
-        UnitState.Online => "online",
-        UnitState.CommError => "comm-error",
-        _ => "demoted",
-    };
+        if (!_scans.TryGetValue((link, unit, interval), out ScanTally? scan))
+        {
+            _scans.Add((link, unit, interval), scan = new ScanTally());
+        }
+
+        return scan;
+    }
+
+    /// <summary>The scan classes of a unit (or, <paramref name="unit"/> null, of every unit of the link), under the gate.</summary>
+    private List<ScanClassStatistics> ScanClasses(string link, int? unit)
+        => _scans
+            .Where(s => s.Key.Link == link && (unit is null || s.Key.Unit == unit))
+            .Select(s => s.Value.ToStatistics(s.Key.Unit, s.Key.Interval))
+            .ToList();
+
+    private IEnumerable<Measurement<double>> ObserveEstimates()
+    {
+        lock (_gate)
+        {
+            return _scans.Where(s => s.Value.Plan is not null).Select(s => new Measurement<double>(
+                s.Value.Plan!.EstimatedCycle.TotalSeconds,
+                new KeyValuePair<string, object?>(LinkNameTag, s.Key.Link),
+                new KeyValuePair<string, object?>(UnitTag, s.Key.Unit),
+                new KeyValuePair<string, object?>(IntervalTag, s.Key.Interval.TotalSeconds))).ToArray();
+        }
+    }
+
 
     private Tally TallyOf(string link, int unit)
     {
@@ -300,8 +367,9 @@ public sealed class LinkStatistics : ITagOutput, IDisposable
             }
         }
 
-        public UnitStatistics ToStatistics(string link, int? unit, string state, DateTimeOffset since, DateTimeOffset now) => new()
+        public UnitStatistics ToStatistics(string link, int? unit, string state, DateTimeOffset since, DateTimeOffset now, IReadOnlyList<ScanClassStatistics> scanClasses) => new()
         {
+            ScanClasses = scanClasses,
             Link = link,
             Unit = unit,
             State = state,
@@ -315,6 +383,34 @@ public sealed class LinkStatistics : ITagOutput, IDisposable
             AverageResponseMs = Responses == 0 ? null : ResponseSeconds / Responses * 1000,
             Since = since,
             Time = now,
+        };
+    }
+
+    /// <summary>The running figures of a scan class.</summary>
+    private sealed class ScanTally
+    {
+        public ScanPlan? Plan { get; set; }
+
+        public long Cycles { get; set; }
+
+        public TimeSpan Total { get; set; }
+
+        public TimeSpan? Last { get; set; }
+
+        public long Overruns { get; set; }
+
+        public ScanClassStatistics ToStatistics(int unit, TimeSpan interval) => new()
+        {
+            Unit = unit,
+            IntervalMs = interval.TotalMilliseconds,
+            Tags = Plan?.Tags ?? 0,
+            Reads = Plan?.Reads ?? 0,
+            Characters = Plan?.Characters ?? 0,
+            EstimatedCycleMs = Plan?.EstimatedCycle.TotalMilliseconds ?? 0,
+            Cycles = Cycles,
+            LastCycleMs = Last?.TotalMilliseconds,
+            AverageCycleMs = Cycles == 0 ? null : Total.TotalMilliseconds / Cycles,
+            Overruns = Overruns,
         };
     }
 }

@@ -5,4 +5,5 @@ namespace OmronHostLink.Gateway.Statistics;
 /// <summary>Source-generated JSON for the statistics topics.</summary>
 [JsonSourceGenerationOptions(NumberHandling = JsonNumberHandling.AllowNamedFloatingPointLiterals)]
 [JsonSerializable(typeof(UnitStatistics))]
+[JsonSerializable(typeof(ScanClassStatistics))]
 internal sealed partial class StatisticsJsonContext : JsonSerializerContext;

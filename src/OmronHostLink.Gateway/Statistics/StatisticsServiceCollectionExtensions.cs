@@ -4,7 +4,7 @@ using OmronHostLink.Gateway.Outputs;
 namespace OmronHostLink.Gateway.Statistics;
 
 /// <summary>Registers the <see cref="LinkStatistics"/>.</summary>
-public static class StatisticsServiceCollectionExtensions
+internal static class StatisticsServiceCollectionExtensions
 {
     /// <summary>
     /// Adds the <see cref="LinkStatistics"/>, an output of its own (it learns the units' states), with its demotion

@@ -1,5 +1,5 @@
 using System.Text.Json.Serialization;
-using OmronHostLink.Gateway.Mqtt;
+using OmronHostLink.Gateway.Outputs;
 
 namespace OmronHostLink.Gateway.Statistics;
 
@@ -7,7 +7,7 @@ namespace OmronHostLink.Gateway.Statistics;
 /// What a technician reads about a link or one PLC unit on it, counted since the gateway started: the payload of the
 /// retained statistics topics.
 /// </summary>
-public sealed class UnitStatistics
+internal sealed class UnitStatistics
 {
     /// <summary>The link's configured name.</summary>
     [JsonPropertyName("link")]
@@ -53,6 +53,10 @@ public sealed class UnitStatistics
     /// <summary>The average response time of the commands answered, in ms; null before any.</summary>
     [JsonPropertyName("averageResponseMs")]
     public double? AverageResponseMs { get; init; }
+
+    /// <summary>The unit's scan classes (for the totals: every unit's), by unit and interval: plan and measured cycle times.</summary>
+    [JsonPropertyName("scanClasses")]
+    public IReadOnlyList<ScanClassStatistics> ScanClasses { get; init; } = [];
 
     /// <summary>When the counting started (the gateway's start).</summary>
     [JsonPropertyName("since")]

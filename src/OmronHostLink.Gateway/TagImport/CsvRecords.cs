@@ -6,7 +6,7 @@ namespace OmronHostLink.Gateway.TagImport;
 /// Reads CSV as spreadsheets and Kepware write it (RFC 4180): fields separated by commas, optionally in double quotes,
 /// a quote inside quotes doubled, line breaks inside quotes kept. Blank lines are skipped; each record knows its line.
 /// </summary>
-public static class CsvRecords
+internal static class CsvRecords
 {
     /// <summary>Reads every record of a tag file; a file that is not CSV becomes a problem on line 1 and null.</summary>
     internal static List<CsvRecord>? ReadTagFile(TextReader reader, List<TagImportProblem> problems)

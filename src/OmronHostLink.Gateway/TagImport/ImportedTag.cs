@@ -9,4 +9,4 @@ namespace OmronHostLink.Gateway.TagImport;
 /// <param name="Writable">Whether the file allows writes to it.</param>
 /// <param name="Interval">How often to poll it, when the file says (Kepware's scan rate); null for the default.</param>
 /// <param name="Description">The file's description of it, if any.</param>
-public sealed record ImportedTag(int Line, string Name, string Address, PlcValueType Type, int Count, bool Writable, TimeSpan? Interval = null, string? Description = null);
+internal sealed record ImportedTag(int Line, string Name, string Address, PlcValueType Type, int Count, bool Writable, TimeSpan? Interval = null, string? Description = null);

@@ -8,7 +8,7 @@ namespace OmronHostLink.Gateway.TagImport;
 /// syntax and the data types are translated as docs/tag-import.md tables them; every row that cannot be translated is
 /// reported with its line and then nothing is imported.
 /// </summary>
-public static partial class KepwareTagCsv
+internal static partial class KepwareTagCsv
 {
     /// <summary>The columns read; the others of an export (Respect Data Type, Raw/Scaled Low/High, Clamp, Eng Units…) are ignored unless they ask for something the gateway does not do.</summary>
     private const string TagName = "Tag Name";

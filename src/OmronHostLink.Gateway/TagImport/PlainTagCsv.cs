@@ -7,7 +7,7 @@ namespace OmronHostLink.Gateway.TagImport;
 /// optionally, <c>count</c> and <c>interval</c> in milliseconds), in any order; addresses and types as the gateway's
 /// configuration spells them. Every bad row is reported with its line and then nothing is imported.
 /// </summary>
-public static class PlainTagCsv
+internal static class PlainTagCsv
 {
     /// <summary>Reads a file.</summary>
     public static TagImportResult Import(TextReader reader)

@@ -4,7 +4,7 @@ namespace OmronHostLink.Gateway.TagImport;
 /// What an import file gives: every tag, or — when any row cannot be translated — no tag at all and every such row
 /// with its line, so that a file is never imported half.
 /// </summary>
-public sealed class TagImportResult
+internal sealed class TagImportResult
 {
     private TagImportResult(IReadOnlyList<ImportedTag> tags, IReadOnlyList<TagImportProblem> problems)
     {

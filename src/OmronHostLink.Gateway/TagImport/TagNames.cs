@@ -1,7 +1,7 @@
 namespace OmronHostLink.Gateway.TagImport;
 
 /// <summary>What a gateway tag name may hold: it becomes an MQTT topic level and a Sparkplug metric name.</summary>
-public static class TagNames
+internal static class TagNames
 {
     /// <summary>Why <paramref name="name"/> cannot name a tag, or null when it can.</summary>
     public static string? Check(string? name)

@@ -14,7 +14,7 @@ internal static class CompatibleModeAnswer
 
     public static SimResponse Frame(SimResponse answer, string header, CompatibleModeFraming framing)
     {
-        if (header == CModeHeaders.StatusRead)
+        if (header == CModeCommands.StatusRead.Header)
         {
             return framing.StatusMessageAlwaysSent == true && answer.Message.Length == CModeResponse.PrefixLength + StatusOnlyText
                 ? new SimResponse([.. answer.Message, .. Spaces], answer.FixedLength, answer.AtomLength, answer.MaxContinuationText)

@@ -108,7 +108,7 @@ internal sealed class HostLinkExchange
                 return LinkReply.None;
             }
 
-            if (frame.Length >= MessagePrefix.Length && CModeHeaders.Is(frame.Slice(3, 2), CModeHeaders.Abort))
+            if (frame.Length >= MessagePrefix.Length && CModeHeaders.Is(frame.Slice(3, 2), CModeCommands.Abort.Header))
             {
                 Reset();
                 return LinkReply.None;
@@ -166,7 +166,7 @@ internal sealed class HostLinkExchange
 
         _unit = unit;
         ReadOnlySpan<byte> header = frame.Slice(3, 2);
-        int limit = CModeHeaders.Is(header, CModeHeaders.Fins) ? FinsMessage.MaxFrameLength : FrameWriter.MaxFirstFrameLength;
+        int limit = CModeHeaders.Is(header, CModeCommands.Fins.Header) ? FinsMessage.MaxFrameLength : FrameWriter.MaxFirstFrameLength;
         if (frame.Length > limit)
         {
             return Error(header, EndCode.FrameLengthError);

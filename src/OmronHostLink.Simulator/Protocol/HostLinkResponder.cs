@@ -1,6 +1,7 @@
 using System.Text;
 using OmronHostLink.Protocol;
 using OmronHostLink.Protocol.CMode;
+using OmronHostLink.Protocol.Fins;
 
 namespace OmronHostLink.Simulator.Protocol;
 
@@ -31,13 +32,13 @@ public sealed class HostLinkResponder
     {
     }
 
-    /// <summary>Creates a responder that executes the commands of <paramref name="table"/>.</summary>
-    internal HostLinkResponder(VirtualPlc plc, CModeCommandTable table)
+    /// <summary>Creates a responder that executes the commands of <paramref name="table"/> and <paramref name="fins"/> (default: the standard FINS table).</summary>
+    internal HostLinkResponder(VirtualPlc plc, CModeCommandTable table, FinsCommandTable? fins = null)
     {
         ArgumentNullException.ThrowIfNull(plc);
         ArgumentNullException.ThrowIfNull(table);
         _plc = plc;
-        _fins = new FinsResponder(plc);
+        _fins = new FinsResponder(plc, fins ?? FinsCommandTable.Standard);
         Table = table;
     }
 
@@ -66,7 +67,7 @@ public sealed class HostLinkResponder
         if (code == EndCode.UndefinedHeader)
         {
             var ic = new byte[CModeCommand.PrefixLength];
-            CModeResponse.WriteMessageWithoutEndCode(ic, unit, CModeHeaders.UndefinedCommand, default);
+            CModeResponse.WriteMessageWithoutEndCode(ic, unit, CModeCommands.UndefinedCommand.Header, default);
             return new SimResponse(ic, CModeCommand.PrefixLength, 1);
         }
 
@@ -80,7 +81,7 @@ public sealed class HostLinkResponder
     /// <returns>The answer, or null when the PLC sends none (XZ; a message too short to carry a unit and header).</returns>
     public SimResponse? Respond(ReadOnlySpan<byte> message)
     {
-        if (message.Length < CModeCommand.PrefixLength || !MessagePrefix.TryReadUnit(message, out int unit) || unit > HostLinkUnit.MaxUnitNumber)
+        if (message.Length < CModeCommand.PrefixLength || !MessagePrefix.TryReadUnit(message, out int unit) || !HostLinkRules.IsUnitNumber(unit))
         {
             return null;
         }
@@ -95,9 +96,9 @@ public sealed class HostLinkResponder
     /// <returns>The answer, or null when the PLC sends none (XZ).</returns>
     public SimResponse? Respond(int unit, ReadOnlySpan<byte> header, ReadOnlySpan<byte> text)
     {
-        if ((uint)unit > HostLinkUnit.MaxUnitNumber)
+        if (HostLinkRules.CheckUnitNumber(unit) is { } unitProblem)
         {
-            throw new ArgumentOutOfRangeException(nameof(unit), unit, $"Unit numbers are 0-{HostLinkUnit.MaxUnitNumber}.");
+            throw new ArgumentOutOfRangeException(nameof(unit), unit, $"The unit: {unitProblem}.");
         }
 
         if (header.Length != 2)
@@ -105,12 +106,12 @@ public sealed class HostLinkResponder
             throw new ArgumentException("A header has two characters.", nameof(header));
         }
 
-        if (_plc.Model is { } model && !Accepts(model, header))
+        if ((_plc.Model is { } model && !Accepts(model, header)) || Refuses(header))
         {
             return EndCodeOnly(unit, header, EndCode.UndefinedHeader);
         }
 
-        if (CModeHeaders.Is(header, CModeHeaders.Fins))
+        if (CModeHeaders.Is(header, CModeCommands.Fins.Header))
         {
             return _fins.Respond(unit, text);
         }
@@ -154,15 +155,28 @@ public sealed class HostLinkResponder
             : response;
     }
 
+    private bool Refuses(ReadOnlySpan<byte> header)
+    {
+        foreach (string refused in _plc.Options.RefusedCommands)
+        {
+            if (CModeHeaders.Is(header, refused.ToUpperInvariant()))
+            {
+                return true;
+            }
+        }
+
+        return false;
+    }
+
     // FA only with FINS; the rest from the model's C-mode list (TS is answered by every model).
     private static bool Accepts(PlcModelProfile model, ReadOnlySpan<byte> header)
     {
-        if (CModeHeaders.Is(header, CModeHeaders.Fins))
+        if (CModeHeaders.Is(header, CModeCommands.Fins.Header))
         {
             return model.SupportsFins;
         }
 
-        return CModeHeaders.Is(header, CModeHeaders.Test) || model.AcceptsCMode(HeaderString(header));
+        return CModeHeaders.Is(header, CModeCommands.Test.Header) || model.AcceptsCMode(HeaderString(header));
     }
 
     // What the emulated model refuses of a command it has: memory it lacks (15, the manuals' "entry number data error"),
@@ -171,7 +185,7 @@ public sealed class HostLinkResponder
     {
         AreaReadCommand read when !ModelHas(model, read.Area, read.Begin, read.Count, read.Bank, forWrite: false) => EndCode.EntryNumberDataError,
         AreaWriteCommand write when !ModelHas(model, write.Area, write.Begin, write.Words.Length, write.Bank, forWrite: true) => EndCode.EntryNumberDataError,
-        _ when command.Header == CModeHeaders.ModelRead && model.ModelCode is null => EndCode.UndefinedHeader,
+        _ when command.Row == CModeCommands.ModelRead && model.ModelCode is null => EndCode.UndefinedHeader,
         _ => null,
     };
 

@@ -199,5 +199,5 @@ public sealed class CaptureReplay
         }
     }
 
-    private static bool IsAbort(byte[] frame) => frame.Length >= 5 && CModeHeaders.Is(frame.AsSpan(3, 2), CModeHeaders.Abort);
+    private static bool IsAbort(byte[] frame) => frame.Length >= 5 && CModeHeaders.Is(frame.AsSpan(3, 2), CModeCommands.Abort.Header);
 }

@@ -153,5 +153,5 @@ internal sealed class RecordedExchanges
 
     /// <summary>Whether <paramref name="frame"/> is TS: answered with its own characters whatever the capture holds.</summary>
     internal static bool IsTest(byte[] frame)
-        => frame.Length >= 5 && frame[0] == (byte)'@' && CModeHeaders.Is(frame.AsSpan(3, 2), CModeHeaders.Test);
+        => frame.Length >= 5 && frame[0] == (byte)'@' && CModeHeaders.Is(frame.AsSpan(3, 2), CModeCommands.Test.Header);
 }

@@ -11,6 +11,8 @@ namespace OmronHostLink;
 internal sealed class CompoundReadRegistry
 {
     private readonly Dictionary<int, (CompoundItem[] Items, long Openings)> _registered = new();
+    private readonly bool[] _refused = new bool[32];
+    private readonly List<Claimant> _claims = new();
 
     /// <summary>Held from the check of a unit's registration to the end of the QQIR that relies on it.</summary>
     public SemaphoreSlim Gate { get; } = new(1, 1);
@@ -30,4 +32,77 @@ internal sealed class CompoundReadRegistry
 
     /// <summary>Forgets what <paramref name="unit"/> holds (a registration failed or was lost).</summary>
     public void Forget(int unit) => _registered.Remove(unit);
+
+    /// <summary>Whether <paramref name="unit"/> answered QQ with an end code that says it has none: it is read by area for the client's life.</summary>
+    public bool Refused(int unit) => Volatile.Read(ref _refused[unit]);
+
+    /// <summary>Records that <paramref name="unit"/> has no QQ; true the first time (to log it once).</summary>
+    public bool Refuse(int unit)
+    {
+        lock (_refused)
+        {
+            if (_refused[unit])
+            {
+                return false;
+            }
+
+            _refused[unit] = true;
+            return true;
+        }
+    }
+
+    /// <summary>
+    /// A watch's claim to <paramref name="unit"/>'s one registration: of the watches that would read the unit with QQ,
+    /// the one that saves the most characters a second (<paramref name="weight"/>; the earlier on a tie) uses it and the
+    /// others read that unit by area, so that they do not take the registration from each other every cycle. Held
+    /// until <see cref="Release"/>, or until <paramref name="owner"/> is collected (a watch never enumerated).
+    /// </summary>
+    public void Claim(object owner, int unit, double weight)
+    {
+        lock (_claims)
+        {
+            _claims.Add(new Claimant(new WeakReference<object>(owner), unit, weight));
+        }
+    }
+
+    /// <summary>Gives up every claim of <paramref name="owner"/>.</summary>
+    public void Release(object owner)
+    {
+        lock (_claims)
+        {
+            _claims.RemoveAll(c => !c.Owner.TryGetTarget(out object? o) || ReferenceEquals(o, owner));
+        }
+    }
+
+    /// <summary>
+    /// Whether <paramref name="owner"/> may plan QQ for <paramref name="unit"/>: it holds the unit's best claim, or (a
+    /// tag set that claims nothing) no watch claims the unit.
+    /// </summary>
+    public bool MayUse(object owner, int unit)
+    {
+        lock (_claims)
+        {
+            _claims.RemoveAll(c => !c.Owner.TryGetTarget(out _));
+            Claimant? best = null;
+            foreach (Claimant claim in _claims)
+            {
+                if (claim.Unit == unit && (best is null || claim.Weight > best.Weight))
+                {
+                    best = claim;
+                }
+            }
+
+            return best is null || (best.Owner.TryGetTarget(out object? o) && ReferenceEquals(o, owner));
+        }
+    }
+
+    /// <summary>
+    /// Whether an end code answering QQMR or QQIR says the unit has no QQ as it is used here (IC, 16: not supported;
+    /// 14, 18: a format or length it does not take), rather than a word it lacks or a registration it lost.
+    /// </summary>
+    public static bool MeansNoCompoundRead(EndCode code)
+        => code.Category() is EndCodeCategory.NotSupported or EndCodeCategory.Format or EndCodeCategory.Length;
+
+    // In the order claimed: the earlier wins a tie.
+    private sealed record Claimant(WeakReference<object> Owner, int Unit, double Weight);
 }

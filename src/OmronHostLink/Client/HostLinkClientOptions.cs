@@ -54,13 +54,17 @@ public sealed class HostLinkClientOptions
     /// <summary>
     /// Whether C-mode planned reads (<c>ReadTagsAsync</c>, <c>WatchAsync</c>) may use QQ, the compound read (QQMR
     /// registration once, then one QQIR a cycle), where it costs fewer characters than area reads: 100 scattered tags
-    /// at 9600 bps read several times faster. Default false (area reads only); turn it on for PLCs with QQ (CS/CJ: W342
-    /// p168; C200HS: p428; CQM1, CPM1/CPM1A, SRM1: CPM-Q p388; CQM1H: p470; CPM2A/CPM2C: W353 p302). Leave it off for
-    /// the CP2E (W614 lists no QQ), the C200H and C200HX (no QQ page found) and any model whose profile says so
-    /// (<c>PlcModelProfile.SupportsCompoundRead</c>; docs/models.md); a unit whose model profile lacks QQ is read by area
-    /// even when it is on.
+    /// at 9600 bps read several times faster. <see cref="CompoundReadMode.Auto"/> (the default): QQ for a unit whose
+    /// model profile lists it — the configured <see cref="Model"/>, or the model the unit names when asked MM once (by a
+    /// <c>ReadTagsAsync</c> before it reads, by a watch after its first successful cycle), also when no model is
+    /// configured — and area reads for the others (the CP2E, C200H and C200HX
+    /// profiles, a PLC that refuses MM or names a code no profile has). <see cref="CompoundReadMode.On"/>: QQ unless
+    /// the unit's model is known to lack it (no MM asked); <see cref="CompoundReadMode.Off"/>: area reads only. A unit
+    /// that answers QQ with IC (or 14, 16, 18) though its model claims it is read by area from then on, the same cycle
+    /// included, and the client logs it once. Profiles with QQ: CS/CJ (W342 p168), C200HS (p428), CQM1, CPM1/CPM1A,
+    /// SRM1 (CPM-Q p388), CQM1H (p470), CPM2A/CPM2C (W353 p302); docs/models.md.
     /// </summary>
-    public bool UseCompoundRead { get; set; }
+    public CompoundReadMode UseCompoundRead { get; set; }
 
     /// <summary>
     /// The line echoes what we send before the PLC answers (2-wire RS-485 adapters without echo suppression): expect and
@@ -146,27 +150,17 @@ public sealed class HostLinkClientOptions
         Check(nameof(ReadRetries), ReadRetries, SettingRules.Retries(ReadRetries));
         Check(nameof(WriteRetries), WriteRetries, SettingRules.Retries(WriteRetries));
         Check(nameof(FinsResponseWait), FinsResponseWait, SettingRules.FinsResponseWait(FinsResponseWait));
-        Check(nameof(CommandSet), CommandSet, SettingRules.CommandSet(CommandSet));
-        Check(nameof(WordOrder), WordOrder, SettingRules.WordOrder(WordOrder));
+        Check(nameof(CommandSet), CommandSet, SettingRules.Defined(CommandSet));
+        Check(nameof(WordOrder), WordOrder, SettingRules.Defined(WordOrder));
         Check(nameof(SendInterval), SendInterval, SettingRules.SendInterval(SendInterval));
+        Check(nameof(UseCompoundRead), UseCompoundRead, SettingRules.Defined(UseCompoundRead));
 
         if (UnitSendIntervals is null)
         {
             throw new ArgumentException("UnitSendIntervals is required (empty for none).", nameof(UnitSendIntervals));
         }
 
-        foreach (KeyValuePair<int, TimeSpan> unit in UnitSendIntervals)
-        {
-            if (SettingRules.UnitNumber(unit.Key) is not null)
-            {
-                throw new ArgumentOutOfRangeException(nameof(UnitSendIntervals), unit.Key, $"UnitSendIntervals names unit {unit.Key}; Host Link unit numbers are 0-{HostLinkUnit.MaxUnitNumber}.");
-            }
-
-            if (SettingRules.SendInterval(unit.Value) is { } tooLong)
-            {
-                throw new ArgumentOutOfRangeException(nameof(UnitSendIntervals), unit.Value, $"UnitSendIntervals[{unit.Key}] {tooLong}.");
-            }
-        }
+        Check(nameof(UnitSendIntervals), UnitSendIntervals, SettingRules.UnitSendIntervals(UnitSendIntervals));
 
         if (TimeProvider is null)
         {
@@ -175,17 +169,17 @@ public sealed class HostLinkClientOptions
 
         if (HostLinkCompatibleMode is { } compatibleMode)
         {
-            Check(nameof(HostLinkCompatibleMode), compatibleMode, SettingRules.CompatibleMode(compatibleMode));
+            Check(nameof(HostLinkCompatibleMode), compatibleMode, SettingRules.Defined(compatibleMode));
         }
 
-        if (Model is not null && SettingRules.Model(Model) is { } modelProblem)
+        if (Model is not null && PlcModelProfile.CheckSetting(Model) is { } modelProblem)
         {
             throw new ArgumentException($"Model {modelProblem}.", nameof(Model));
         }
 
-        if (TraceFile is not null && TraceFile.Trim().Length == 0)
+        if (TraceFile is not null && SettingRules.TraceFile(TraceFile) is { } traceProblem)
         {
-            throw new ArgumentException("TraceFile is empty; leave it unset (null) for no trace.", nameof(TraceFile));
+            throw new ArgumentException($"TraceFile {traceProblem}.", nameof(TraceFile));
         }
 
         if (LinkName is not null && LinkName.Trim().Length == 0)

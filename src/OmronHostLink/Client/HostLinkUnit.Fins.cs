@@ -14,7 +14,7 @@ public partial class HostLinkUnit
 
     /// <summary>Reads the CPU Unit's status, mode, error flags and error message (FINS 0601).</summary>
     public Task<FinsCpuStatus> ReadCpuStatusAsync(CancellationToken cancellationToken = default)
-        => FinsAsync(new CpuUnitStatusReadCommand(), static (data, _) => FinsCpuStatus.Read(data), 0, cancellationToken).AsTask();
+        => FinsAsync(FinsCommands.CpuUnitStatusReadCommand, static (data, _) => FinsCpuStatus.Read(data), 0, cancellationToken).AsTask();
 
     /// <summary>Reads the average, longest and shortest cycle times (FINS 0620); <paramref name="initialize"/> restarts the measurement instead.</summary>
     public Task<FinsCycleTime?> ReadCycleTimeAsync(bool initialize = false, CancellationToken cancellationToken = default)
@@ -22,7 +22,7 @@ public partial class HostLinkUnit
 
     /// <summary>Reads the PLC's clock (FINS 0701).</summary>
     public Task<FinsClock> ReadClockAsync(CancellationToken cancellationToken = default)
-        => FinsAsync(new ClockReadCommand(), static (data, _) => FinsClock.Read(data), 0, cancellationToken).AsTask();
+        => FinsAsync(FinsCommands.ClockReadCommand, static (data, _) => FinsClock.Read(data), 0, cancellationToken).AsTask();
 
     /// <summary>Sets the PLC's clock (FINS 0702), seconds and day of week included.</summary>
     public async Task WriteClockAsync(DateTime time, CancellationToken cancellationToken = default)
@@ -110,7 +110,7 @@ public partial class HostLinkUnit
 
     /// <summary>Releases every forced bit (FINS 2302).</summary>
     public async Task CancelForcedBitsAsync(CancellationToken cancellationToken = default)
-        => await FinsNoDataAsync(new ForcedSetResetCancelCommand(), cancellationToken).ConfigureAwait(false);
+        => await FinsNoDataAsync(FinsCommands.ForcedCancelCommand, cancellationToken).ConfigureAwait(false);
 
     /// <summary>Sends one FINS command whose answer carries no data.</summary>
     internal async ValueTask FinsNoDataAsync(FinsCommand command, CancellationToken cancellationToken)
@@ -133,7 +133,7 @@ public partial class HostLinkUnit
         FinsHeader header = FinsHeader.Direct(Connection.NextSid(), Options.FinsResponseWait);
         var message = new byte[FinsMessage.GetCommandLength(header, command)];
         FinsMessage.WriteCommand(message, UnitNumber, header, command);
-        var request = new HostLinkRequest(UnitNumber, CModeHeaders.Fins, message, FinsMessage.GetExchange(message.Length, header, command.MaxResponseDataLength));
+        var request = new HostLinkRequest(UnitNumber, CModeCommands.Fins.Header, message, FinsMessage.GetExchange(message.Length, header, command.MaxResponseDataLength));
         return Connection.ExecuteAsync(
             request,
             RetriesFor(command.Effect),

@@ -26,7 +26,7 @@ public partial class HostLinkUnit
     /// </summary>
     private void EnsureModelAccepts(CModeCommand command)
     {
-        if (command.Header != CModeHeaders.Test && Models.TryGet(UnitNumber, out PlcModelProfile? model) && model is not null)
+        if (command.Row != CModeCommands.Test && Models.TryGet(UnitNumber, out PlcModelProfile? model) && model is not null)
         {
             model.EnsureCMode(command.Header, command.Row.Name);
         }

@@ -10,17 +10,25 @@ public partial class HostLinkUnit
 {
     /// <summary>
     /// Reads typed tags (scattered, overlapping, in several areas and units) in the fewest transactions, each value
-    /// decoded by <see cref="PlcValueCodec"/>: gaps cheaper to read through than another command are read through, and
-    /// with FINS, isolated words share 0104 MULTIPLE MEMORY AREA READ commands. A tag with a unit number is read
-    /// through that unit's view on this link; the others from this unit. Each transaction is one snapshot; the set as a
-    /// whole is not (for one snapshot of scattered raw words, see <see cref="ReadScatteredAsync"/>).
+    /// decoded by <see cref="PlcValueCodec"/>: gaps cheaper to read through than another command are read through; with
+    /// FINS, isolated words share 0104 MULTIPLE MEMORY AREA READ commands; with C-mode, scattered words and bits share
+    /// one QQIR (QQ, the compound read, registered with QQMR the first time) on a unit that uses QQ —
+    /// <see cref="HostLinkClientOptions.UseCompoundRead"/>: by default (<see cref="CompoundReadMode.Auto"/>) a unit
+    /// whose model lists it, the configured <see cref="HostLinkClientOptions.Model"/> or the one the unit names when
+    /// this call asks MM, once; a unit that answers QQ with IC is read by area, this call included. A tag with a unit
+    /// number is read through that unit's view on this link; the others from this unit. Each transaction is one
+    /// snapshot; the set as a whole is not (for one snapshot of scattered raw words, see <see cref="ReadScatteredAsync"/>).
     /// </summary>
     /// <param name="tags">The tags.</param>
     /// <param name="cancellationToken">Cancels the reads.</param>
     /// <returns>One value per tag, in the order of <paramref name="tags"/>.</returns>
     /// <exception cref="ArgumentException">A tag cannot be read with this view's command set (nothing is sent).</exception>
     public Task<PlcTagValue[]> ReadTagsAsync(IReadOnlyList<PlcTag> tags, CancellationToken cancellationToken = default)
-        => ReadTagsAsync(Plan(tags), cancellationToken);
+    {
+        Guard.NotNull(tags);
+        var planned = new PlannedTags(this, tags.ToArray());
+        return ReadPlannedAsync(planned, cancellationToken);
+    }
 
     /// <summary>
     /// Reads tags given as text (<c>"D100"</c>, <c>"D102:float"</c>, <c>"CIO10.03"</c>; see <see cref="PlcTag.Parse"/>)
@@ -65,8 +73,43 @@ public partial class HostLinkUnit
         return plan.Resolve(results, Options.WordOrder);
     }
 
-    /// <summary>The plan this view's reads of <paramref name="tags"/> use: its command set and line, tags without a unit from this unit.</summary>
-    private ReadPlan Plan(IReadOnlyList<PlcTag> tags) => new ReadPlanner(Commands.Kind, LineTiming) { UseCompoundRead = Options.UseCompoundRead }.Plan(tags, UnitNumber);
+    /// <summary>
+    /// Whether this unit's planned reads use QQ (<see cref="HostLinkClientOptions.UseCompoundRead"/>, decided by
+    /// <see cref="ReadPlanner"/>'s one rule with the unit's model): with Auto the model is asked with MM once when it is
+    /// not known; a unit that refused QQ never again.
+    /// </summary>
+    internal async ValueTask<bool> UsesCompoundReadAsync(CancellationToken cancellationToken)
+    {
+        CompoundReadMode mode = Options.UseCompoundRead;
+        if (TryUsesCompoundRead() is { } known)
+        {
+            return known;
+        }
+
+        PlcModelProfile? model = mode == CompoundReadMode.On
+            ? await GetModelProfileAsync(cancellationToken).ConfigureAwait(false)
+            : await Models.GetForCompoundAsync(UnitNumber, ct => new ValueTask<PlcModel>(ReadModelAsync(ct)), cancellationToken).ConfigureAwait(false);
+        return ReadPlanner.UsesCompound(mode, model);
+    }
+
+    /// <summary>What <see cref="UsesCompoundReadAsync"/> says without asking the PLC; null when the unit's model must be asked first.</summary>
+    internal bool? TryUsesCompoundRead()
+    {
+        CompoundReadMode mode = Options.UseCompoundRead;
+        if (mode == CompoundReadMode.Off || CompoundReads.Refused(UnitNumber))
+        {
+            return false;
+        }
+
+        bool known = mode == CompoundReadMode.On ? Models.TryGet(UnitNumber, out PlcModelProfile? model) : Models.TryGetForCompound(UnitNumber, out model);
+        return known ? ReadPlanner.UsesCompound(mode, model) : null;
+    }
+
+    private async Task<PlcTagValue[]> ReadPlannedAsync(PlannedTags planned, CancellationToken cancellationToken)
+    {
+        (ReadPlan plan, _) = await planned.PlanAsync(askPlc: true, cancellationToken).ConfigureAwait(false);
+        return await ReadTagsAsync(plan, cancellationToken).ConfigureAwait(false);
+    }
 
     private ValueTask<ushort[]> ExecuteAsync(PlannedRead read, CancellationToken cancellationToken)
     {
@@ -85,7 +128,7 @@ public partial class HostLinkUnit
         return read.Kind switch
         {
             PlannedReadKind.FinsMultiple => ReadScatteredWordsAsync(read.Items, cancellationToken),
-            PlannedReadKind.CModeCompound => ReadCompoundWordsAsync(read, model, cancellationToken),
+            PlannedReadKind.CModeCompound => ReadCompoundWordsAsync(read, cancellationToken),
             PlannedReadKind.CModeCompletionFlags or PlannedReadKind.FinsCompletionFlags => FlagWordsAsync(commands.ReadCompletionFlagsAsync(this, read.Start, read.Count, model, cancellationToken)),
             _ => commands.ReadWordsAsync(this, read.Start, read.Count, model, cancellationToken),
         };
@@ -95,7 +138,7 @@ public partial class HostLinkUnit
     private static UnitCommandSet CommandsOf(PlannedRead read)
         => UnitCommandSet.For(read.Kind is PlannedReadKind.FinsArea or PlannedReadKind.FinsCompletionFlags or PlannedReadKind.FinsMultiple ? HostLinkCommandSet.Fins : HostLinkCommandSet.CMode);
 
-    // The plan was made without the model; what the model lacks (FINS, memory) is refused here, before the read is sent.
+    // A plan may be made without the model; what the model lacks (FINS, memory) is refused here, before the read is sent.
     private static void EnsureModel(PlcModelProfile? model, PlannedRead read)
     {
         UnitCommandSet commands = CommandsOf(read);
@@ -122,9 +165,10 @@ public partial class HostLinkUnit
     /// A planned compound read: QQIR, registering first when the unit holds nothing (the first cycle, a reopened link,
     /// a restarted PLC). When another tag set holds the unit's registration, this cycle takes its turn only if the
     /// registration and QQIR cost no more characters than the area reads they replace, and reads those otherwise. A
-    /// model without QQ always reads by area.
+    /// unit that does not use QQ (<see cref="UsesCompoundReadAsync"/>) always reads by area; one that answers QQ with
+    /// an end code saying it has none is read by area from this read on.
     /// </summary>
-    private async ValueTask<ushort[]> ReadCompoundWordsAsync(PlannedRead read, PlcModelProfile? model, CancellationToken cancellationToken)
+    private async ValueTask<ushort[]> ReadCompoundWordsAsync(PlannedRead read, CancellationToken cancellationToken)
     {
         var items = new CompoundItem[read.Items.Count];
         for (int i = 0; i < items.Length; i++)
@@ -134,9 +178,24 @@ public partial class HostLinkUnit
 
         int fallbackCost = read.Fallback.Sum(r => r.Characters);
         bool contended = CompoundReads.HoldsOther(UnitNumber, items, Connection.Openings);
-        if (model?.SupportsCompoundRead != false && (!contended || read.RegistrationCharacters + read.Characters <= fallbackCost))
+        if (await UsesCompoundReadAsync(cancellationToken).ConfigureAwait(false) && (!contended || read.RegistrationCharacters + read.Characters <= fallbackCost))
         {
-            return await ReadCompoundItemsAsync(items, cancellationToken).ConfigureAwait(false);
+            try
+            {
+                return await ReadCompoundItemsAsync(items, cancellationToken).ConfigureAwait(false);
+            }
+            catch (HostLinkEndCodeException e) when (CompoundReadRegistry.MeansNoCompoundRead(e.EndCode))
+            {
+                // The unit claims QQ and has none (or not as the manuals give it): its area reads, now and from now on.
+                CompoundReads.Forget(UnitNumber);
+                if (CompoundReads.Refuse(UnitNumber))
+                {
+                    string claim = Options.UseCompoundRead == CompoundReadMode.Auto && Models.TryGetForCompound(UnitNumber, out PlcModelProfile? named) && named is not null
+                        ? $"its model ({named.DisplayName}) lists QQ"
+                        : "UseCompoundRead is On";
+                    ModelLog.CompoundReadRefused(Models.Logger, UnitNumber, "QQ", $"{e.EndCode.ToCode()} ({e.Meaning})", claim);
+                }
+            }
         }
 
         var words = new Dictionary<PlcAddress, ushort>();

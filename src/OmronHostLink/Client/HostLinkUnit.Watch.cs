@@ -17,9 +17,15 @@ public partial class HostLinkUnit
     }
 
     /// <summary>
-    /// Watches <paramref name="tags"/> for changes: each cycle reads them all with one execution of a plan made once by
-    /// <see cref="ReadPlanner"/> (the fewest transactions, as <see cref="ReadTagsAsync(ReadPlan, CancellationToken)"/>), and
-    /// reports each tag whose value differs from the one reported before. The first successful cycle reports every tag
+    /// Watches <paramref name="tags"/> for changes: each cycle reads them all with one execution of a plan made by
+    /// <see cref="ReadPlanner"/> (the fewest transactions, as <see cref="ReadTagsAsync(IReadOnlyList{PlcTag}, CancellationToken)"/>:
+    /// QQ where <see cref="HostLinkClientOptions.UseCompoundRead"/> gives a unit one), and reports each tag whose value
+    /// differs from the one reported before. The plan is made at once with what is known without asking the PLC, and
+    /// again after the first successful cycle when the PLC's answers change it: with
+    /// <see cref="CompoundReadMode.Auto"/> and no configured model the unit is asked MM once, then; a unit that refuses
+    /// QQ is read by area from then on. A PLC holds one QQ registration a unit: of several watches on one unit, the one
+    /// QQ saves the most characters a second for uses it, the others read that unit by area. With
+    /// <see cref="WatchOptions.ReportPlans"/> each plan is reported as <see cref="WatchEventKind.Planned"/>. The first successful cycle reports every tag
     /// (with no old value). A failed cycle is reported once as <see cref="WatchEventKind.Outage"/> and the watch keeps
     /// trying every <see cref="WatchOptions.RetryInterval"/> (doubling up to <see cref="WatchOptions.MaxRetryInterval"/>
     /// when that is set); the first cycle that succeeds again is reported as
@@ -54,7 +60,7 @@ public partial class HostLinkUnit
             throw new ArgumentException("Give at least one tag to watch.", nameof(tags));
         }
 
-        ReadPlan plan = Plan(tags.ToArray());
+        var planned = new PlannedTags(this, tags.ToArray(), options.Interval);
 
         // A copy: the caller may change or reuse its options while the watch runs.
         var settings = new WatchOptions
@@ -63,10 +69,11 @@ public partial class HostLinkUnit
             RetryInterval = options.RetryInterval,
             MaxRetryInterval = options.MaxRetryInterval,
             ReportEveryCycle = options.ReportEveryCycle,
+            ReportPlans = options.ReportPlans,
             DemoteAfter = options.DemoteAfter,
             DemotionPeriod = options.DemotionPeriod,
             TimeProvider = options.TimeProvider,
         };
-        return TagWatch.RunAsync(this, plan, settings, cancellationToken);
+        return TagWatch.RunAsync(this, planned, settings, cancellationToken);
     }
 }

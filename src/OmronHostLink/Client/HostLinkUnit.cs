@@ -14,13 +14,13 @@ namespace OmronHostLink;
 public partial class HostLinkUnit
 {
     /// <summary>The highest unit number Host Link addresses (the lowest is 0).</summary>
-    public const int MaxUnitNumber = 31;
+    public const int MaxUnitNumber = HostLinkRules.MaxUnitNumber;
 
     internal readonly HostLinkConnection Connection;
     internal readonly HostLinkClientOptions Options;
     internal readonly UnitModels Models;
 
-    private protected readonly CompoundReadRegistry CompoundReads;
+    internal readonly CompoundReadRegistry CompoundReads;
 
     /// <summary>This view's command set, taken once from <see cref="HostLinkClientOptions.CommandSet"/>.</summary>
     private protected readonly UnitCommandSet Commands;

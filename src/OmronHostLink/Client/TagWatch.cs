@@ -16,7 +16,7 @@ internal static class TagWatch
 {
     public static async IAsyncEnumerable<WatchEvent> RunAsync(
         HostLinkUnit unit,
-        ReadPlan plan,
+        PlannedTags planned,
         WatchOptions options,
         [EnumeratorCancellation] CancellationToken cancellationToken)
     {
@@ -24,119 +24,149 @@ internal static class TagWatch
         TimeProvider time = options.TimeProvider;
         bool everyCycle = options.ReportEveryCycle;
         TimeSpan retryDelay = options.EffectiveRetryInterval;
-        IReadOnlyList<PlcTag> tags = plan.Tags;
+        IReadOnlyList<PlcTag> tags = planned.Current.Tags;
         var reported = new PlcValue?[tags.Count];
         long origin = time.GetTimestamp();
         TimeSpan cycleStart = TimeSpan.Zero;
         TimeSpan due = TimeSpan.Zero;
         bool succeeded = false;
+        bool answered = false;
         TimeSpan? outageStart = null;
         int silentCycles = 0;
         bool demoted = false;
 
-        while (true)
+        try
         {
-            cancellationToken.ThrowIfCancellationRequested();
-            TimeSpan now = time.GetElapsedTime(origin);
-            if (now < due)
+            while (true)
             {
-                await Delay(due - now, time, cancellationToken).ConfigureAwait(false);
-            }
-            else if (succeeded && interval > TimeSpan.Zero && now > due)
-            {
-                yield return WatchEvent.Overrun(now - cycleStart, time.GetUtcNow());
-            }
-
-            if (demoted && await ProbeAsync(unit, plan, cancellationToken).ConfigureAwait(false) is { } silent)
-            {
-                // Still silent: one more period without a read.
-                due = time.GetElapsedTime(origin) + options.DemotionPeriod;
-                if (everyCycle)
+                cancellationToken.ThrowIfCancellationRequested();
+                TimeSpan now = time.GetElapsedTime(origin);
+                if (now < due)
                 {
-                    yield return WatchEvent.RetryFailed(silent, time.GetUtcNow(), options.DemotionPeriod);
+                    await Delay(due - now, time, cancellationToken).ConfigureAwait(false);
+                }
+                else if (succeeded && interval > TimeSpan.Zero && now > due)
+                {
+                    yield return WatchEvent.Overrun(now - cycleStart, time.GetUtcNow());
                 }
 
-                continue;
-            }
-
-            cycleStart = time.GetElapsedTime(origin);
-            PlcTagValue[]? values = null;
-            Exception? failure = null;
-            try
-            {
-                values = await unit.ReadTagsAsync(plan, cancellationToken).ConfigureAwait(false);
-            }
-            catch (Exception e) when (IsCycleFailure(e, cancellationToken))
-            {
-                failure = e;
-            }
-
-            DateTimeOffset readTime = time.GetUtcNow();
-            TimeSpan end = time.GetElapsedTime(origin);
-            if (failure is not null)
-            {
-                succeeded = false;
-                silentCycles = IsSilence(failure) ? silentCycles + 1 : failure is HostLinkConnectionException ? silentCycles : 0;
-                bool demote = options.DemoteAfter > 0 && silentCycles >= options.DemoteAfter;
-                bool first = outageStart is null;
-                if (first)
+                if (demoted && await ProbeAsync(unit, planned.Current, cancellationToken).ConfigureAwait(false) is { } silent)
                 {
-                    outageStart = end;
-                    retryDelay = options.EffectiveRetryInterval;
-                }
-                else if (!demote)
-                {
-                    retryDelay = options.NextRetryDelay(retryDelay);
-                }
+                    // Still silent: one more period without a read.
+                    due = time.GetElapsedTime(origin) + options.DemotionPeriod;
+                    if (everyCycle)
+                    {
+                        yield return WatchEvent.RetryFailed(silent, time.GetUtcNow(), options.DemotionPeriod);
+                    }
 
-                TimeSpan wait = demote ? options.DemotionPeriod : retryDelay;
-                due = end + wait;
-                if (first)
-                {
-                    yield return WatchEvent.Outage(failure, readTime, wait);
-                }
-
-                if (demote && !demoted)
-                {
-                    demoted = true;
-                    yield return WatchEvent.Demoted(failure, readTime, wait);
-                }
-                else if (!first && everyCycle)
-                {
-                    yield return WatchEvent.RetryFailed(failure, readTime, wait);
-                }
-
-                demoted = demote;
-                continue;
-            }
-
-            succeeded = true;
-            silentCycles = 0;
-            demoted = false;
-            due = cycleStart + interval;
-            if (outageStart is { } since)
-            {
-                outageStart = null;
-                yield return WatchEvent.Resumed(end - since, readTime);
-            }
-
-            for (int i = 0; i < values!.Length; i++)
-            {
-                PlcValue value = Decode(values[i], unit.WordOrder);
-                if (reported[i] is { } old && old == value)
-                {
                     continue;
                 }
 
-                PlcValue? previous = reported[i];
-                reported[i] = value;
-                yield return WatchEvent.Changed(i, tags[i], previous, value, readTime, values[i].Words);
-            }
+                cycleStart = time.GetElapsedTime(origin);
+                PlcTagValue[]? values = null;
+                Exception? failure = null;
+                ReadPlan? plan = null;
+                bool replanned = false;
+                try
+                {
+                    // What decides the plan may need the PLC (a model asked with MM once): part of the cycle, and of its failure.
+                    (plan, replanned) = await planned.PlanAsync(askPlc: answered, cancellationToken).ConfigureAwait(false);
+                }
+                catch (Exception e) when (IsCycleFailure(e, cancellationToken))
+                {
+                    failure = e;
+                }
 
-            if (everyCycle)
-            {
-                yield return WatchEvent.Polled(end - cycleStart, readTime);
+                if (replanned && options.ReportPlans)
+                {
+                    yield return WatchEvent.Planned(plan!, time.GetUtcNow());
+                }
+
+                if (failure is null)
+                {
+                    try
+                    {
+                        values = await unit.ReadTagsAsync(plan!, cancellationToken).ConfigureAwait(false);
+                    }
+                    catch (Exception e) when (IsCycleFailure(e, cancellationToken))
+                    {
+                        failure = e;
+                    }
+                }
+
+                DateTimeOffset readTime = time.GetUtcNow();
+                TimeSpan end = time.GetElapsedTime(origin);
+                if (failure is not null)
+                {
+                    succeeded = false;
+                    silentCycles = IsSilence(failure) ? silentCycles + 1 : failure is HostLinkConnectionException ? silentCycles : 0;
+                    bool demote = options.DemoteAfter > 0 && silentCycles >= options.DemoteAfter;
+                    bool first = outageStart is null;
+                    if (first)
+                    {
+                        outageStart = end;
+                        retryDelay = options.EffectiveRetryInterval;
+                    }
+                    else if (!demote)
+                    {
+                        retryDelay = options.NextRetryDelay(retryDelay);
+                    }
+
+                    TimeSpan wait = demote ? options.DemotionPeriod : retryDelay;
+                    due = end + wait;
+                    if (first)
+                    {
+                        yield return WatchEvent.Outage(failure, readTime, wait);
+                    }
+
+                    if (demote && !demoted)
+                    {
+                        demoted = true;
+                        yield return WatchEvent.Demoted(failure, readTime, wait);
+                    }
+                    else if (!first && everyCycle)
+                    {
+                        yield return WatchEvent.RetryFailed(failure, readTime, wait);
+                    }
+
+                    demoted = demote;
+                    continue;
+                }
+
+                succeeded = true;
+                answered = true;
+                silentCycles = 0;
+                demoted = false;
+                due = cycleStart + interval;
+                if (outageStart is { } since)
+                {
+                    outageStart = null;
+                    yield return WatchEvent.Resumed(end - since, readTime);
+                }
+
+                for (int i = 0; i < values!.Length; i++)
+                {
+                    PlcValue value = Decode(values[i], unit.WordOrder);
+                    if (reported[i] is { } old && old == value)
+                    {
+                        continue;
+                    }
+
+                    PlcValue? previous = reported[i];
+                    reported[i] = value;
+                    yield return WatchEvent.Changed(i, tags[i], previous, value, readTime, values[i].Words);
+                }
+
+                if (everyCycle)
+                {
+                    yield return WatchEvent.Polled(end - cycleStart, readTime);
+                }
             }
+        }
+        finally
+        {
+            // The unit's QQ registration is left to the other watches.
+            planned.Release();
         }
     }
 

@@ -12,8 +12,9 @@ public sealed class WatchEvent
 {
     private static readonly ushort[] NoWords = [];
 
-    private WatchEvent(WatchEventKind kind, DateTimeOffset timestamp, int tagIndex = -1, PlcTag? tag = null, PlcValue? oldValue = null, PlcValue newValue = default, Exception? exception = null, TimeSpan duration = default, TimeSpan retryDelay = default, IReadOnlyList<ushort>? words = null)
+    private WatchEvent(WatchEventKind kind, DateTimeOffset timestamp, int tagIndex = -1, PlcTag? tag = null, PlcValue? oldValue = null, PlcValue newValue = default, Exception? exception = null, TimeSpan duration = default, TimeSpan retryDelay = default, IReadOnlyList<ushort>? words = null, ReadPlan? plan = null)
     {
+        Plan = plan;
         RetryDelay = retryDelay;
         Words = words ?? NoWords;
         Kind = kind;
@@ -74,6 +75,9 @@ public sealed class WatchEvent
     /// </summary>
     public TimeSpan RetryDelay { get; }
 
+    /// <summary>For <see cref="WatchEventKind.Planned"/>: the plan the watch reads with from this cycle on. Null otherwise.</summary>
+    public ReadPlan? Plan { get; }
+
     /// <summary>Whether this is the first report of a tag's value (a change with no old value).</summary>
     public bool IsInitial => Kind == WatchEventKind.Changed && OldValue is null;
 
@@ -133,6 +137,11 @@ public sealed class WatchEvent
     public static WatchEvent Overrun(TimeSpan cycleTime, DateTimeOffset timestamp)
         => new(WatchEventKind.Overrun, timestamp, duration: cycleTime);
 
+    /// <summary>The reads a watch makes each cycle from now on: <paramref name="plan"/>.</summary>
+    /// <exception cref="ArgumentNullException"><paramref name="plan"/> is null.</exception>
+    public static WatchEvent Planned(ReadPlan plan, DateTimeOffset timestamp)
+        => new(WatchEventKind.Planned, timestamp, plan: Guard.NotNull(plan));
+
     /// <summary>
     /// One line for logs: <c>D100 (Float): 1.5 → 2.5</c>, <c>outage: …</c>, <c>resumed after 3 s</c>, <c>overrun: cycle
     /// took 1.2 s</c>, <c>polled in 0.012 s</c>, <c>still failing: …; next try in 4 s</c>.
@@ -148,6 +157,7 @@ public sealed class WatchEvent
             WatchEventKind.Polled => $"{at} polled in {Seconds(Duration)} s",
             WatchEventKind.RetryFailed => $"{at} still failing: {Exception!.Message}; next try in {Seconds(RetryDelay)} s",
             WatchEventKind.Demoted => $"{at} demoted: {Exception!.Message}; next probe in {Seconds(RetryDelay)} s",
+            WatchEventKind.Planned => $"{at} planned: {Plan}",
             _ => $"{at} overrun: cycle took {Seconds(Duration)} s",
         };
     }

@@ -43,4 +43,11 @@ public enum WatchEventKind
     /// still silent is a <see cref="RetryFailed"/>, and the first successful cycle after it a <see cref="Resumed"/>.
     /// </summary>
     Demoted,
+
+    /// <summary>
+    /// The reads the watch makes each cycle (only with <see cref="WatchOptions.ReportPlans"/>): reported before the
+    /// first cycle, and again before a cycle that reads otherwise because a unit's model became known (MM) or a unit
+    /// refused QQ (<see cref="HostLinkClientOptions.UseCompoundRead"/>); the plan is in <see cref="WatchEvent.Plan"/>.
+    /// </summary>
+    Planned,
 }

@@ -36,6 +36,13 @@ public sealed class WatchOptions
     public bool ReportEveryCycle { get; set; }
 
     /// <summary>
+    /// Also report the reads the watch makes: <see cref="WatchEventKind.Planned"/> before the first cycle and whenever
+    /// the plan changes (a unit's model learnt with MM, a unit that refused QQ). Default false. For subscribers that
+    /// show or budget the line's load.
+    /// </summary>
+    public bool ReportPlans { get; set; }
+
+    /// <summary>
     /// Demote the watched unit after this many cycles in a row found it silent (a timeout): the watch reports
     /// <see cref="WatchEventKind.Demoted"/> and stops reading for <see cref="DemotionPeriod"/>, then asks the unit with
     /// one presence probe (<see cref="HostLinkUnit.ProbeAsync"/>: one TS, never retried, one short deadline) whether it

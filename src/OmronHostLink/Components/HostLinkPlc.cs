@@ -27,20 +27,20 @@ public class HostLinkPlc : Component
     private const string ConnectionCategory = "Connection";
     private const string WatchCategory = "Watch";
 
-    private static readonly HostLinkClientOptions Defaults = new();
-
+    // The connection's defaults are the settings' declared ones (HostLinkClientSettings, HostLinkSerialSettings); the
+    // designer's [DefaultValue] attributes must be constants and repeat them (a test compares the two).
     private string _portName = "";
-    private int _baudRate = 9600;
-    private int _dataBits = 7;
-    private SerialParity _parity = SerialParity.Even;
-    private SerialStopBits _stopBits = SerialStopBits.Two;
+    private int _baudRate = HostLinkSerialSettings.BaudRateSetting.Default!.Value;
+    private int _dataBits = HostLinkSerialSettings.DataBitsSetting.Default!.Value;
+    private SerialParity _parity = HostLinkSerialSettings.ParitySetting.Default!.Value;
+    private SerialStopBits _stopBits = HostLinkSerialSettings.StopBitsSetting.Default!.Value;
     private string _host = "";
     private int _tcpPort;
-    private int _unitNumber;
-    private HostLinkCommandSet _commandSet = HostLinkCommandSet.CMode;
-    private TimeSpan _turnaroundAllowance = Defaults.TurnaroundAllowance;
-    private int _readRetries = Defaults.ReadRetries;
-    private bool _allowReadModifyWriteBits;
+    private int _unitNumber = HostLinkClientSettings.UnitNumberSetting.Default!.Value;
+    private HostLinkCommandSet _commandSet = HostLinkClientSettings.CommandSetSetting.Default!.Value;
+    private TimeSpan _turnaroundAllowance = HostLinkClientSettings.TurnaroundAllowanceSetting.Default!.Value;
+    private int _readRetries = HostLinkClientSettings.ReadRetriesSetting.Default!.Value;
+    private bool _allowReadModifyWriteBits = HostLinkClientSettings.AllowReadModifyWriteBitsSetting.Default!.Value;
     private string[] _tags = [];
     private int _interval = 1000;
     private HostLinkClient? _client;
@@ -94,8 +94,8 @@ public class HostLinkPlc : Component
 
     /// <summary>Line speed in bits per second. Default 9600 (the PLC's Host Link port default).</summary>
     [Category(ConnectionCategory)]
-    [DefaultValue(9600)]
-    [Description("Line speed in bits per second; the PLC's Host Link port setting (default 9600).")]
+    [DefaultValue(SerialLineSettings.DefaultBaudRate)]
+    [Description("Line speed in bits per second; the PLC's Host Link port setting.")]
     public int BaudRate
     {
         get => _baudRate;
@@ -119,7 +119,7 @@ public class HostLinkPlc : Component
     public SerialParity Parity
     {
         get => _parity;
-        set => Set(ref _parity, value, SettingRules.Parity);
+        set => Set(ref _parity, value, SettingRules.Defined);
     }
 
     /// <summary>Stop bits. Default Two.</summary>
@@ -129,7 +129,7 @@ public class HostLinkPlc : Component
     public SerialStopBits StopBits
     {
         get => _stopBits;
-        set => Set(ref _stopBits, value, SettingRules.StopBits);
+        set => Set(ref _stopBits, value, SettingRules.Defined);
     }
 
     /// <summary>A serial-device server's host name or address (with <see cref="TcpPort"/>) instead of a local port.</summary>
@@ -169,7 +169,7 @@ public class HostLinkPlc : Component
     public HostLinkCommandSet CommandSet
     {
         get => _commandSet;
-        set => Set(ref _commandSet, value, SettingRules.CommandSet);
+        set => Set(ref _commandSet, value, SettingRules.Defined);
     }
 
     /// <summary>How long the PLC may take to start answering, on top of the frame's wire time. Default 300 ms.</summary>

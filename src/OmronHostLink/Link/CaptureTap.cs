@@ -2,7 +2,7 @@ using OmronHostLink.Capture;
 
 namespace OmronHostLink.Link;
 
-/// <summary>The client's trace file (<see cref="HostLinkClientOptions.TraceFile"/>): every frame tapped, written to a capture.</summary>
+/// <summary>The client's trace file (the client option TraceFile, carried by <see cref="HostLinkConnectionOptions.TraceFile"/>): every frame tapped, written to a capture.</summary>
 internal sealed class CaptureTap : FrameTap, IDisposable
 {
     private readonly CaptureWriter _writer;
@@ -22,7 +22,7 @@ internal sealed class CaptureTap : FrameTap, IDisposable
         }
         catch (Exception e) when (e is IOException or UnauthorizedAccessException or NotSupportedException or ArgumentException)
         {
-            throw new ArgumentException($"TraceFile '{path}' cannot be created: {e.Message}", nameof(HostLinkClientOptions.TraceFile), e);
+            throw new ArgumentException($"TraceFile '{path}' cannot be created: {e.Message}", nameof(HostLinkConnectionOptions.TraceFile), e);
         }
     }
 

@@ -35,7 +35,7 @@ namespace OmronHostLink.Link;
 /// </remarks>
 internal sealed class FrameChannel : IValueTaskSource<bool>
 {
-    private const int PauseThreshold = 64 * 1024;
+    internal const int PauseThreshold = 64 * 1024;
     private const int ResumeThreshold = 32 * 1024;
 
     private readonly object _lock = new();

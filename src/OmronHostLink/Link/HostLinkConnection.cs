@@ -151,7 +151,7 @@ internal sealed class HostLinkConnection : IAsyncDisposable, IDisposable
     /// </summary>
     /// <returns>The round-trip time, or null when the unit did not echo the token in time.</returns>
     public ValueTask<TimeSpan?> ProbeAsync(int unit, TimeSpan turnaround, CancellationToken cancellationToken)
-        => TransactAsync(static (link, channel, probe) => link.ProbeAsync(channel, probe.unit, probe.turnaround), (unit, turnaround), unit, CModeHeaders.Test, null, cancellationToken);
+        => TransactAsync(static (link, channel, probe) => link.ProbeAsync(channel, probe.unit, probe.turnaround), (unit, turnaround), unit, CModeCommands.Test.Header, null, cancellationToken);
 
     /// <summary>
     /// Closes the link at once, from any thread, waiting for nothing: an exchange in progress fails with a
@@ -342,7 +342,7 @@ internal sealed class HostLinkConnection : IAsyncDisposable, IDisposable
         if (roundTrip is null)
         {
             _status = new LinkStatus(LinkState.NeedsResync, LinkStatus.AnyUnit);
-            HostLinkLog.Failed(_logger, unit, CModeHeaders.Test, $"No answer to a presence probe within {_resynchroniser.FenceTimeout.TotalMilliseconds:0} ms.");
+            HostLinkLog.Failed(_logger, unit, CModeCommands.Test.Header, $"No answer to a presence probe within {_resynchroniser.FenceTimeout.TotalMilliseconds:0} ms.");
         }
         else
         {

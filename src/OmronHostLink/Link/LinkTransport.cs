@@ -133,7 +133,7 @@ internal sealed class LinkTransport
     }
 
     private HostLinkConnectionException DisposedDuringExchange()
-        => new($"The client was disposed: the link to {_transport.Description} was closed during the exchange.", new ObjectDisposedException(nameof(HostLinkClient)));
+        => new($"The client was disposed: the link to {_transport.Description} was closed during the exchange.", new ObjectDisposedException(nameof(HostLinkConnection)));
 
     /// <summary>Closes the transport without waiting: synchronously where it can (every built-in transport does).</summary>
     private void CloseTransportSynchronously()

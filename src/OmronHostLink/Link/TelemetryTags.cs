@@ -6,7 +6,7 @@ namespace OmronHostLink.Link;
 /// </summary>
 internal static class TelemetryTags
 {
-    /// <summary>The link's name (<see cref="HostLinkClientOptions.LinkName"/>): tells two clients apart.</summary>
+    /// <summary>The link's name (<see cref="HostLinkConnectionOptions.LinkName"/>): tells two clients apart.</summary>
     public const string LinkName = "hostlink.link.name";
 
     /// <summary>The unit number the command went to (0-31).</summary>

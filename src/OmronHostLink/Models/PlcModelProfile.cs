@@ -1,4 +1,5 @@
 using System.Text;
+using OmronHostLink.Protocol.CMode;
 
 namespace OmronHostLink;
 
@@ -11,6 +12,7 @@ namespace OmronHostLink;
 public sealed class PlcModelProfile
 {
     private readonly HashSet<string> _cModeHeaders;
+    private readonly HashSet<CModeCommandRow> _cModeCommands;
 
     internal PlcModelProfile(
         string name,
@@ -19,7 +21,7 @@ public sealed class PlcModelProfile
         byte? modelCode,
         IReadOnlyList<PlcAreaRange> areas,
         IReadOnlyList<PlcAreaRange> zeroReadRanges,
-        IReadOnlyList<string> cModeHeaders,
+        IReadOnlyList<CModeCommandRow> cModeCommands,
         bool supportsFins,
         bool sharesTimerCounterNumbers,
         TimerCounterCoding timerCounterCoding,
@@ -31,8 +33,10 @@ public sealed class PlcModelProfile
         ModelCode = modelCode;
         Areas = areas;
         ZeroReadRanges = zeroReadRanges;
-        CModeHeaders = cModeHeaders;
-        _cModeHeaders = new HashSet<string>(cModeHeaders, StringComparer.Ordinal);
+        CModeCommands = cModeCommands;
+        _cModeCommands = new HashSet<CModeCommandRow>(cModeCommands);
+        CModeHeaders = cModeCommands.Select(c => c.Header).Distinct(StringComparer.Ordinal).ToArray();
+        _cModeHeaders = new HashSet<string>(CModeHeaders, StringComparer.Ordinal);
         SupportsFins = supportsFins;
         SharesTimerCounterNumbers = sharesTimerCounterNumbers;
         TimerCounterCoding = timerCounterCoding;
@@ -63,11 +67,14 @@ public sealed class PlcModelProfile
     /// <summary>The C-mode header codes the model accepts (RR, RD, WD, MS, MM, QQ, …).</summary>
     public IReadOnlyList<string> CModeHeaders { get; }
 
+    /// <summary>The rows of the C-mode commands the model accepts (the headers of <see cref="CModeHeaders"/>).</summary>
+    internal IReadOnlyList<CModeCommandRow> CModeCommands { get; }
+
     /// <summary>Whether the model takes FINS commands over Host Link (<c>FA</c> frames).</summary>
     public bool SupportsFins { get; }
 
     /// <summary>Whether the model has the compound read <c>QQ</c> (QQMR/QQIR).</summary>
-    public bool SupportsCompoundRead => _cModeHeaders.Contains("QQ");
+    public bool SupportsCompoundRead => _cModeCommands.Contains(CompoundCommands.ReadRow);
 
     /// <summary>
     /// Whether timers and counters share one number space (the TC area of C-series PLCs: TIM 5 and CNT 5 cannot both
@@ -92,6 +99,15 @@ public sealed class PlcModelProfile
 
     /// <summary>Every profile, in the order of <c>docs/models.md</c>.</summary>
     public static IReadOnlyList<PlcModelProfile> All => PlcModelTable.Profiles;
+
+    /// <summary>
+    /// What is wrong with a model setting (a profile name or alias, or <c>auto</c> to ask the PLC with MM), in the
+    /// writer's words, or null when it names one; the rule of every model setting.
+    /// </summary>
+    internal static string? CheckSetting(string model)
+        => SettingRules.IsAutoModel(model) || TryParse(model, out _)
+            ? null
+            : $"'{model}' is not a known PLC model; use one of {KnownNames()}, or {SettingRules.AutoModel} to ask the PLC (MM)";
 
     /// <summary>Whether the model accepts the C-mode command with header <paramref name="header"/> (e.g. <c>QQ</c>).</summary>
     /// <param name="header">The two-character header code.</param>
@@ -164,6 +180,24 @@ public sealed class PlcModelProfile
 
             word = range.Last + 1;
         }
+    }
+
+    /// <summary>Whether every word of <paramref name="count"/> from <paramref name="start"/> exists on this model (a read may span them).</summary>
+    internal bool Covers(PlcAddress start, int count)
+    {
+        long end = (long)start.Word + count;
+        int word = start.Word;
+        while (word < end)
+        {
+            if (Find(start.Area, word, start.Bank) is not { } range)
+            {
+                return false;
+            }
+
+            word = range.Last + 1;
+        }
+
+        return true;
     }
 
     /// <summary>Checks that the model takes FINS over Host Link.</summary>

@@ -1,3 +1,5 @@
+using OmronHostLink.Protocol.CMode;
+
 namespace OmronHostLink;
 
 /// <summary>
@@ -19,15 +21,29 @@ internal static class PlcModelTable
 
     // C-mode headers. The older families' list is the C200HX/HS Host Link command section (C200HX p463–490); QQ, RE/WE and
     // WG are added where a manual lists them.
-    private static readonly string[] OlderCMode = ["RR", "RL", "RH", "RC", "RG", "RD", "RJ", "WR", "WL", "WH", "WC", "WD", "WJ", "MS", "SC", "MF", "KS", "KR", "FK", "KC", "MM", "TS", "XZ"];
-    private static readonly string[] CsCjCMode = [.. OlderCMode, "RE", "WE", "QQ"];
-    private static readonly string[] Cp1CMode = [.. OlderCMode, "QQ"];
+    private static readonly CModeCommandRow[] OlderCMode =
+    [
+        Read(CModeArea.Cio), Read(CModeArea.Lr), Read(CModeArea.Holding), Read(CModeArea.TimerCounterPv), Read(CModeArea.TimerCounterStatus), Read(CModeArea.Dm), Read(CModeArea.Auxiliary),
+        Write(CModeArea.Cio), Write(CModeArea.Lr), Write(CModeArea.Holding), Write(CModeArea.TimerCounterPv), Write(CModeArea.Dm), Write(CModeArea.Auxiliary),
+        CModeCommands.StatusRead, StatusChangeCommand.CommandRow, ErrorReadCommand.CommandRow, ForceBitCommand.SetRow, ForceBitCommand.ResetRow,
+        MultipleForceCommand.CommandRow, CModeCommands.ForcedCancel, CModeCommands.ModelRead, CModeCommands.Test, CModeCommands.Abort,
+    ];
+
+    private static readonly CModeCommandRow[] EmCMode = [Read(CModeArea.Em), Write(CModeArea.Em)];
+    private static readonly CModeCommandRow[] Qq = [CompoundCommands.RegisterRow, CompoundCommands.ReadRow];
+    private static readonly CModeCommandRow[] CsCjCMode = [.. OlderCMode, .. EmCMode, .. Qq];
+    private static readonly CModeCommandRow[] Cp1CMode = [.. OlderCMode, .. Qq];
 
     // The CQM1H's end code table (CQM1H p441, 6-2-2) lists WG and QQ beside the older list (RE/WE: the CPU61's EM).
-    private static readonly string[] Cqm1hCMode = [.. OlderCMode, "WG", "QQ"];
+    private static readonly CModeCommandRow[] Cqm1hCMode = [.. OlderCMode, CModeCommands.TcStatusWrite, .. Qq];
 
     // The CP2E's list (W614 p14-40): no LR, EM, forcing or QQ commands.
-    private static readonly string[] Cp2eCMode = ["RR", "RH", "RC", "RG", "RD", "RJ", "WR", "WH", "WC", "WD", "WJ", "MS", "SC", "MF", "TS"];
+    private static readonly CModeCommandRow[] Cp2eCMode =
+    [
+        Read(CModeArea.Cio), Read(CModeArea.Holding), Read(CModeArea.TimerCounterPv), Read(CModeArea.TimerCounterStatus), Read(CModeArea.Dm), Read(CModeArea.Auxiliary),
+        Write(CModeArea.Cio), Write(CModeArea.Holding), Write(CModeArea.TimerCounterPv), Write(CModeArea.Dm), Write(CModeArea.Auxiliary),
+        CModeCommands.StatusRead, StatusChangeCommand.CommandRow, ErrorReadCommand.CommandRow, CModeCommands.Test,
+    ];
 
     public static IReadOnlyList<PlcModelProfile> Profiles { get; } = Build();
 
@@ -68,7 +84,7 @@ internal static class PlcModelTable
                 Rw(PlcArea.Dm, 6656, 6999, C200HS + " p409 (RD note 2: reads 0000, no error)"),
                 Rw(PlcArea.Dm, 7000, 9999, "RD takes 0000–9999 (" + C200HS + " p409); what these answer is not stated", false),
             ],
-            [.. OlderCMode, "QQ"], supportsFins: false, sharesTimerCounterNumbers: true, TimerCounterCoding.Bcd,
+            [.. OlderCMode, .. Qq], supportsFins: false, sharesTimerCounterNumbers: true, TimerCounterCoding.Bcd,
             "MM code: W342 p141, " + C200HX + " p490; ranges: " + C200HS + " section 11-3 (p408–411); QQ: " + C200HS + " p428 (11-3-33)"),
         new(
             "C200HX", "C200HX/HG/HE", ["C200HG", "C200HE", "C200HX/HG/HE", "C200HX-HG-HE"], 0x12,
@@ -88,7 +104,7 @@ internal static class PlcModelTable
                 Rw(PlcArea.Dm, 7000, 9999, C200HX + " p463 (extension DM: reads 0000 unless allocated in UM)"),
                 Em(0, 6143, 3, C200HX + " p465 (RE: a bank the CPU lacks reads 0000); which CPU has which banks not found", false),
             ],
-            [.. OlderCMode, "RE", "WE", "WG"], supportsFins: false, sharesTimerCounterNumbers: true, TimerCounterCoding.Bcd,
+            [.. OlderCMode, .. EmCMode, CModeCommands.TcStatusWrite], supportsFins: false, sharesTimerCounterNumbers: true, TimerCounterCoding.Bcd,
             "MM code: W342 p141, " + C200HX + " p490; ranges: " + C200HX + " section 10-3"),
         new(
             "CQM1", "CQM1", [], 0x11,
@@ -115,7 +131,7 @@ internal static class PlcModelTable
             "CQM1H-CPU61", "CQM1H-CPU61", [], 0x11,
             Cqm1hAreas(withEm: true),
             [],
-            [.. Cqm1hCMode, "RE", "WE"], supportsFins: false, sharesTimerCounterNumbers: true, TimerCounterCoding.Bcd,
+            [.. Cqm1hCMode, .. EmCMode], supportsFins: false, sharesTimerCounterNumbers: true, TimerCounterCoding.Bcd,
             "ranges: " + Cqm1h + " p470 (6-5 QQ; only the CPU61 has EM); commands: " + Cqm1h + " p441 (6-2-2); MM code 11 as the CQM1 (not found for the CQM1H)"),
         new(
             "CPM1A", "CPM1/CPM1A", ["CPM1"], 0x11,
@@ -172,7 +188,7 @@ internal static class PlcModelTable
             [
                 Rw(PlcArea.Dm, 2048, 6143, "as the SRM1 (" + CpmQ + " p369)", false),
             ],
-            [.. OlderCMode, "QQ"], supportsFins: false, sharesTimerCounterNumbers: true, TimerCounterCoding.Bcd,
+            [.. OlderCMode, .. Qq], supportsFins: false, sharesTimerCounterNumbers: true, TimerCounterCoding.Bcd,
             "MM code: " + W353 + " p300; ranges: " + W353 + " section 4-5 (IR/SR, LR); the rest not found; QQ: " + W353 + " p302 (4-5-30)"),
         Cp1e("CP1E-E", "CP1E E-type", ["CP1E E", "CP1EE", "CP1E E-type"], 2047),
         Cp1e("CP1E-N", "CP1E N/NA-type", ["CP1E N", "CP1EN", "CP1E-NA", "CP1E N-type", "CP1E NA-type"], 8191),
@@ -295,7 +311,7 @@ internal static class PlcModelTable
             areas = Intersect(areas.ToArray(), other.Areas);
         }
 
-        var headers = members.Select(m => (IEnumerable<string>)m.CModeHeaders).Aggregate((a, b) => a.Intersect(b)).ToArray();
+        var commands = members.Select(m => (IEnumerable<CModeCommandRow>)m.CModeCommands).Aggregate((a, b) => a.Intersect(b)).ToArray();
         var names = string.Join(", ", members.Select(m => m.DisplayName));
         var first = members[0];
         return new PlcModelProfile(
@@ -305,7 +321,7 @@ internal static class PlcModelTable
             code,
             [.. areas],
             [],
-            headers,
+            commands,
             members.All(m => m.SupportsFins),
             first.SharesTimerCounterNumbers,
             members.Any(m => m.TimerCounterCoding == TimerCounterCoding.BcdOrBinary) ? TimerCounterCoding.BcdOrBinary : TimerCounterCoding.Bcd,
@@ -334,6 +350,10 @@ internal static class PlcModelTable
             }
         }
     }
+
+    private static CModeCommandRow Read(CModeArea area) => AreaReadCommand.Rows[(int)area];
+
+    private static CModeCommandRow Write(CModeArea area) => AreaWriteCommand.Rows[(int)area]!;
 
     private static PlcAreaRange Rw(PlcArea area, int first, int last, string source, bool verified = true) =>
         new(area, first, last, writable: true, source, verified);

@@ -2,19 +2,19 @@ using OmronHostLink.Protocol.CMode;
 
 namespace OmronHostLink.Planning;
 
-/// <summary>QQ in C-mode plans: per unit, one registered QQIR where it costs fewer characters a cycle than area reads.</summary>
+/// <summary>QQ in C-mode plans: per unit, one registered QQIR where it costs fewer characters a cycle than area reads, in fewer reads.</summary>
 public sealed partial class ReadPlanner
 {
     /// <summary>
-    /// Per unit, whether one QQIR of some of its tags' words (the dearest to read by area, up to 128 items) plus area
-    /// reads of the rest costs fewer characters a cycle than the area reads alone; if so the unit's area reads are
-    /// replaced. A word that only bit tags need is registered as those bits where that is shorter (one character each
+    /// Per unit that may use QQ, whether one QQIR of some of its tags' words (the dearest to read by area, up to 128 items) plus area
+    /// reads of the rest costs fewer characters a cycle than the area reads alone, in fewer reads; if so the unit's area
+    /// reads are replaced. A word that only bit tags need is registered as those bits where that is shorter (one character each
     /// in the answer instead of four); a timer/counter PV comes with its completion flag (five characters, two items).
     /// The registration is not counted here: it is paid once, not per cycle.
     /// </summary>
     private void PlanCompound(SortedDictionary<(int Unit, PlcArea Area, int Bank), List<(int Start, int End)>> spaces, List<PlannedRead> reads, CompoundNeeds needs)
     {
-        foreach (int unit in spaces.Keys.Select(k => k.Unit).Distinct().ToArray())
+        foreach (int unit in spaces.Keys.Select(k => k.Unit).Distinct().Where(PlansCompound).ToArray())
         {
             var eligible = spaces.Where(s => s.Key.Unit == unit).ToArray();
             List<PlannedRead> current = reads.Where(r => r.Kind == PlannedReadKind.CModeArea && r.Unit == unit).ToList();
@@ -59,12 +59,14 @@ public sealed partial class ReadPlanner
             var restReads = new List<PlannedRead>();
             foreach (KeyValuePair<(PlcArea Area, int Bank), List<(int Start, int End)>> space in rest)
             {
-                PlanSpace(unit, space.Key.Area, space.Key.Bank, Clusters(space.Value), restReads, new SortedDictionary<int, List<PlcAddress>>());
+                PlanSpace(unit, space.Key.Area, space.Key.Bank, Clusters(space.Value), restReads, new SortedDictionary<int, List<PlcAddress[]>>());
             }
 
             int chars = CompoundAnswerCharacters(CompoundCommands.DataLength(items), out int exchanges);
             double compoundCost = chars + (exchanges * _turnaroundChars) + restReads.Sum(r => r.Characters + (r.Exchanges * _turnaroundChars));
-            if (items.Count == 0 || compoundCost >= currentCost)
+            // QQ must replace reads, not only shave characters off one: a unit holds one registration (which another
+            // tag set may take), it costs a QQMR whenever the PLC lost it, and with Auto an MM first.
+            if (items.Count == 0 || compoundCost >= currentCost || 1 + restReads.Count >= current.Count)
             {
                 continue;
             }
@@ -74,7 +76,7 @@ public sealed partial class ReadPlanner
             foreach (IGrouping<(PlcArea Area, int Bank), PlcAddress> space in addresses.Select(a => a.AsWord()).GroupBy(w => (w.Area, w.Bank)))
             {
                 var spans = space.Select(w => (w.Word, w.Word + 1)).ToList();
-                PlanSpace(unit, space.Key.Area, space.Key.Bank, Clusters(spans), fallback, new SortedDictionary<int, List<PlcAddress>>());
+                PlanSpace(unit, space.Key.Area, space.Key.Bank, Clusters(spans), fallback, new SortedDictionary<int, List<PlcAddress[]>>());
             }
 
             int at = reads.IndexOf(current[0]);

@@ -64,10 +64,42 @@ public sealed partial class ReadPlanner
     /// <summary>
     /// Whether C-mode plans may use QQ, the compound read: per unit, up to 128 items — scattered words of any area C-mode
     /// reaches, timer/counter PVs (two items each), and bits of CIO, LR, HR and AR whose word no other tag needs —
-    /// read with one QQIR where that costs fewer characters than their area reads (completion flags keep their RG
-    /// reads). Default true; false for PLCs without QQ (see <c>HostLinkClientOptions.UseCompoundRead</c>).
+    /// read with one QQIR where that costs fewer characters than their area reads and replaces more than one of them
+    /// (completion flags keep their RG reads). <see cref="CompoundReadMode.Auto"/> (the default, as
+    /// <see cref="HostLinkClientOptions.UseCompoundRead"/>'s):
+    /// QQ where <see cref="Model"/> lists it, area reads where it lacks it or is not given;
+    /// <see cref="CompoundReadMode.On"/>: QQ unless <see cref="Model"/> lacks it; <see cref="CompoundReadMode.Off"/>: never.
     /// </summary>
-    public bool UseCompoundRead { get; init; } = true;
+    public CompoundReadMode UseCompoundRead { get; init; }
+
+    /// <summary>
+    /// The PLC model of the units planned for, or null (the default) when it is not known: tags are checked against its
+    /// memory, a gap is read through only where the model has every word of it, and with
+    /// <see cref="CompoundReadMode.Auto"/> it decides QQ.
+    /// </summary>
+    public PlcModelProfile? Model { get; init; }
+
+    /// <summary>Per unit, whether QQ may be planned, overriding <see cref="UseCompoundRead"/> (the client's decision, made with each unit's model); null for the mode's.</summary>
+    internal Func<int, bool>? CompoundUnits { get; init; }
+
+    /// <summary>Per unit, its model, overriding <see cref="Model"/>; null for <see cref="Model"/>.</summary>
+    internal Func<int, PlcModelProfile?>? Models { get; init; }
+
+    /// <summary>
+    /// The one rule of <see cref="CompoundReadMode"/>: whether a unit of <paramref name="model"/> (null: not known) is
+    /// read with QQ.
+    /// </summary>
+    internal static bool UsesCompound(CompoundReadMode mode, PlcModelProfile? model) => mode switch
+    {
+        CompoundReadMode.Auto => model?.SupportsCompoundRead == true,
+        CompoundReadMode.On => model?.SupportsCompoundRead != false,
+        _ => false,
+    };
+
+    private bool PlansCompound(int unit)
+        => CommandSet == HostLinkCommandSet.CMode && (CompoundUnits is { } units ? units(unit) : UsesCompound(UseCompoundRead, ModelOf(unit)));
+
+    private PlcModelProfile? ModelOf(int unit) => Models is { } models ? models(unit) : Model;
 
     /// <summary>Plans the reads of <paramref name="tags"/>.</summary>
     /// <param name="tags">The tags; duplicates and overlaps are read once.</param>
@@ -78,7 +110,7 @@ public sealed partial class ReadPlanner
         Guard.NotNull(tags);
         Guard.Unit(defaultUnit);
         var units = new int[tags.Count];
-        var compoundNeeds = CommandSet == HostLinkCommandSet.CMode && UseCompoundRead ? new CompoundNeeds() : null;
+        var compoundNeeds = CommandSet == HostLinkCommandSet.CMode && (CompoundUnits is not null || UseCompoundRead != CompoundReadMode.Off) ? new CompoundNeeds() : null;
         var spaces = new SortedDictionary<(int Unit, PlcArea Area, int Bank), List<(int Start, int End)>>();
         var flagSpaces = new SortedDictionary<(int Unit, PlcArea Area, int Bank), List<(int Start, int End)>>();
         for (int t = 0; t < tags.Count; t++)
@@ -87,6 +119,7 @@ public sealed partial class ReadPlanner
             PlcAddress word = tag.Address.AsWord();
             word.EnsureRange(tag.WordCount, CommandSet, forWrite: false);
             units[t] = tag.Unit ?? defaultUnit;
+            ModelOf(units[t])?.EnsureRange(word, tag.WordCount, forWrite: false);
             var key = (units[t], word.Area, word.Bank);
             if (tag.IsCompletionFlag)
             {
@@ -109,7 +142,7 @@ public sealed partial class ReadPlanner
         }
 
         var reads = new List<PlannedRead>();
-        var multiple = new SortedDictionary<int, List<PlcAddress>>();
+        var multiple = new SortedDictionary<int, List<PlcAddress[]>>();
         foreach (KeyValuePair<(int Unit, PlcArea Area, int Bank), List<(int Start, int End)>> space in spaces)
         {
             List<(int Start, int End)> clusters = Clusters(space.Value);
@@ -126,13 +159,11 @@ public sealed partial class ReadPlanner
             PlanCompound(spaces, reads, compoundNeeds);
         }
 
-        foreach (KeyValuePair<int, List<PlcAddress>> unitItems in multiple)
+        foreach (KeyValuePair<int, List<PlcAddress[]>> unitItems in multiple)
         {
-            List<PlcAddress> items = unitItems.Value;
-            for (int done = 0; done < items.Count; done += MultipleMemoryAreaReadCommand.MaxItems)
+            foreach (List<PlcAddress> items in Batches(unitItems.Value, MultipleMemoryAreaReadCommand.MaxItems))
             {
-                int n = Math.Min(MultipleMemoryAreaReadCommand.MaxItems, items.Count - done);
-                reads.Add(new PlannedRead(PlannedReadKind.FinsMultiple, unitItems.Key, default, n, items.GetRange(done, n).ToArray(), MultipleChars(n), 1));
+                reads.Add(new PlannedRead(PlannedReadKind.FinsMultiple, unitItems.Key, default, items.Count, items.ToArray(), MultipleChars(items.Count), 1));
             }
         }
 
@@ -193,6 +224,40 @@ public sealed partial class ReadPlanner
         return commandMessage + FrameWriter.FinalOverhead + FrameWriter.WireLength(answer, fixedLength, atom) + (exchanges - 1);
     }
 
+    /// <summary>
+    /// Cuts the runs of words read as 0104 items into commands of at most <paramref name="max"/> items, keeping each run
+    /// (the words of one tag, or of neighbouring tags) in one command, one snapshot; only a run longer than a command
+    /// holds is cut.
+    /// </summary>
+    private static IEnumerable<List<PlcAddress>> Batches(List<PlcAddress[]> runs, int max)
+    {
+        var batch = new List<PlcAddress>();
+        foreach (PlcAddress[] run in runs)
+        {
+            if (batch.Count > 0 && batch.Count + run.Length > max)
+            {
+                yield return batch;
+                batch = new List<PlcAddress>();
+            }
+
+            foreach (PlcAddress word in run)
+            {
+                if (batch.Count == max)
+                {
+                    yield return batch;
+                    batch = new List<PlcAddress>();
+                }
+
+                batch.Add(word);
+            }
+        }
+
+        if (batch.Count > 0)
+        {
+            yield return batch;
+        }
+    }
+
     private static List<(int Start, int End)> Clusters(List<(int Start, int End)> spans)
     {
         spans.Sort((a, b) => a.Start != b.Start ? a.Start.CompareTo(b.Start) : a.End.CompareTo(b.End));
@@ -226,11 +291,12 @@ public sealed partial class ReadPlanner
         return rest == 0 ? cost : cost + FinsReadCharacters(rest) + _turnaroundChars;
     }
 
-    private void PlanSpace(int unit, PlcArea area, int bank, List<(int Start, int End)> clusters, List<PlannedRead> reads, SortedDictionary<int, List<PlcAddress>> multiple)
+    private void PlanSpace(int unit, PlcArea area, int bank, List<(int Start, int End)> clusters, List<PlannedRead> reads, SortedDictionary<int, List<PlcAddress[]>> multiple)
     {
         bool items = CommandSet == HostLinkCommandSet.Fins && UseMultipleRead;
         int itemChars = MultipleChars(1) - MultipleChars(0);
         int n = clusters.Count;
+        PlcModelProfile? model = ModelOf(unit);
 
         // best[i]: cheapest way to read clusters 0..i-1; from[i] = j: clusters j..i-1 are one area read; -1: cluster i-1 as 0104 items.
         var best = new double[n + 1];
@@ -240,6 +306,12 @@ public sealed partial class ReadPlanner
             best[i] = double.MaxValue;
             for (int j = i - 1; j >= 0; j--)
             {
+                // A gap is read through only where the model has all of it (a word it lacks would fail the read).
+                if (j < i - 1 && model is not null && !model.Covers(PlcAddress.WordOf(area, clusters[j].End, bank), clusters[j + 1].Start - clusters[j].End))
+                {
+                    break;
+                }
+
                 double cost = best[j] + RangeCost(area, clusters[i - 1].End - clusters[j].Start);
                 if (cost < best[i])
                 {
@@ -260,16 +332,13 @@ public sealed partial class ReadPlanner
         }
 
         var planned = new List<PlannedRead>();
-        var itemWords = new List<PlcAddress>();
+        var itemRuns = new List<PlcAddress[]>();
         for (int i = n; i > 0;)
         {
             if (from[i] < 0)
             {
-                for (int w = clusters[i - 1].End - 1; w >= clusters[i - 1].Start; w--)
-                {
-                    itemWords.Add(PlcAddress.WordOf(area, w, bank));
-                }
-
+                (int start, int end) = clusters[i - 1];
+                itemRuns.Add(Enumerable.Range(start, end - start).Select(w => PlcAddress.WordOf(area, w, bank)).ToArray());
                 i--;
                 continue;
             }
@@ -280,39 +349,39 @@ public sealed partial class ReadPlanner
         }
 
         planned.Reverse();
-        itemWords.Reverse();
+        itemRuns.Reverse();
 
         // The DP counted 0104 items at their marginal cost; a lone, small batch may still be dearer than reading its
         // clusters as area reads once the 0104 command's own characters are paid. Compare and keep the cheaper.
-        if (itemWords.Count > 0 && !multiple.ContainsKey(unit))
+        int itemCount = itemRuns.Sum(r => r.Length);
+        if (itemCount > 0 && !multiple.ContainsKey(unit))
         {
-            double asItems = MultipleChars(itemWords.Count) + _turnaroundChars;
+            double asItems = MultipleChars(itemCount) + _turnaroundChars;
             double asRanges = 0;
             var alternative = new List<PlannedRead>();
-            foreach (IGrouping<int, PlcAddress> run in Runs(itemWords))
+            foreach (PlcAddress[] run in itemRuns)
             {
-                int count = run.Count();
-                asRanges += RangeCost(area, count);
-                AddRange(alternative, unit, area, bank, run.Key, count);
+                asRanges += RangeCost(area, run.Length);
+                AddRange(alternative, unit, area, bank, run[0].Word, run.Length);
             }
 
             if (asRanges <= asItems)
             {
                 planned.AddRange(alternative);
                 planned.Sort((a, b) => a.Start.Word.CompareTo(b.Start.Word));
-                itemWords.Clear();
+                itemRuns.Clear();
             }
         }
 
         reads.AddRange(planned);
-        if (itemWords.Count > 0)
+        if (itemRuns.Count > 0)
         {
-            if (!multiple.TryGetValue(unit, out List<PlcAddress>? list))
+            if (!multiple.TryGetValue(unit, out List<PlcAddress[]>? list))
             {
-                multiple[unit] = list = new List<PlcAddress>();
+                multiple[unit] = list = new List<PlcAddress[]>();
             }
 
-            list.AddRange(itemWords);
+            list.AddRange(itemRuns);
         }
     }
 
@@ -349,20 +418,6 @@ public sealed partial class ReadPlanner
                 (start, end) = clusters[i];
             }
         }
-    }
-
-    private static IEnumerable<IGrouping<int, PlcAddress>> Runs(List<PlcAddress> words)
-    {
-        int runStart = 0;
-        return words.Select((w, i) =>
-        {
-            if (i == 0 || words[i - 1].Word + 1 != w.Word)
-            {
-                runStart = w.Word;
-            }
-
-            return (Start: runStart, Word: w);
-        }).ToList().GroupBy(x => x.Start, x => x.Word);
     }
 
     private void AddRange(List<PlannedRead> reads, int unit, PlcArea area, int bank, int start, int count)

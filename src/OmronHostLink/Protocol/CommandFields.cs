@@ -2,7 +2,8 @@ namespace OmronHostLink.Protocol;
 
 /// <summary>
 /// Where a command table's row puts the fields it decodes from a command or an answer, for a diagnostic view
-/// (the console's <c>explain</c>). Values are string, long, bool, string[], long[], bool[] or null.
+/// (the console's <c>explain</c>). Values are string, long, bool, string[], long[], bool[],
+/// <see cref="Fins.FinsAddressField"/>, <see cref="Fins.FinsAddressField"/>[] or null.
 /// </summary>
 internal interface ICommandFields
 {

@@ -1,3 +1,4 @@
+using ClientSetting = OmronHostLink.Declare<OmronHostLink.HostLinkClientSettings, OmronHostLink.HostLinkClientOptions>;
 using OmronHostLink.Transports;
 
 namespace OmronHostLink;
@@ -18,30 +19,69 @@ namespace OmronHostLink;
 /// </example>
 public sealed class HostLinkClientSettings
 {
-    private static readonly SettingKeys<HostLinkClientSettings> Keys = new("a Host Link client setting")
-    {
-        { nameof(Serial), (v, s) => s.Serial.Read(v) },
-        { nameof(Tcp), (v, s) => s.Tcp.Read(v) },
-        { nameof(UnitNumber), (v, s) => s.UnitNumber = v.Integer() ?? s.UnitNumber },
-        { nameof(CommandSet), (v, s) => s.CommandSet = v.Choice<HostLinkCommandSet>() ?? s.CommandSet },
-        { nameof(TurnaroundAllowance), (v, s) => s.TurnaroundAllowance = v.Duration() ?? s.TurnaroundAllowance },
-        { nameof(ReadRetries), (v, s) => s.ReadRetries = v.Integer() ?? s.ReadRetries },
-        { nameof(WriteRetries), (v, s) => s.WriteRetries = v.Integer() ?? s.WriteRetries },
-        { nameof(WordOrder), (v, s) => s.WordOrder = v.Choice<WordOrder>() ?? s.WordOrder },
-        { nameof(LocalEcho), (v, s) => s.LocalEcho = v.Boolean() ?? s.LocalEcho },
-        { nameof(FinsResponseWait), (v, s) => s.FinsResponseWait = v.Integer() ?? s.FinsResponseWait },
-        { nameof(AllowReadModifyWriteBits), (v, s) => s.AllowReadModifyWriteBits = v.Boolean() ?? s.AllowReadModifyWriteBits },
-        { nameof(Model), (v, s) => s.Model = v.Text() ?? s.Model },
-        {
+    /// <summary>The UnitNumber setting.</summary>
+    internal static readonly Setting<HostLinkClientSettings, HostLinkClientOptions, int?> UnitNumberSetting =
+        ClientSetting.Value(nameof(UnitNumber), s => s.UnitNumber, (s, v) => s.UnitNumber = v, v => v.Integer(), SettingRules.UnitNumber, o => o.UnitNumber, (o, v) => o.UnitNumber = v);
+
+    /// <summary>The CommandSet setting.</summary>
+    internal static readonly Setting<HostLinkClientSettings, HostLinkClientOptions, HostLinkCommandSet?> CommandSetSetting =
+        ClientSetting.Value(nameof(CommandSet), s => s.CommandSet, (s, v) => s.CommandSet = v, v => v.Choice<HostLinkCommandSet>(), SettingRules.Defined, o => o.CommandSet, (o, v) => o.CommandSet = v).Renamed("Protocol");
+
+    /// <summary>The TurnaroundAllowance setting.</summary>
+    internal static readonly Setting<HostLinkClientSettings, HostLinkClientOptions, TimeSpan?> TurnaroundAllowanceSetting =
+        ClientSetting.Value(nameof(TurnaroundAllowance), s => s.TurnaroundAllowance, (s, v) => s.TurnaroundAllowance = v, v => v.Duration(), SettingRules.TurnaroundAllowance, o => o.TurnaroundAllowance, (o, v) => o.TurnaroundAllowance = v);
+
+    /// <summary>The ReadRetries setting.</summary>
+    internal static readonly Setting<HostLinkClientSettings, HostLinkClientOptions, int?> ReadRetriesSetting =
+        ClientSetting.Value(nameof(ReadRetries), s => s.ReadRetries, (s, v) => s.ReadRetries = v, v => v.Integer(), SettingRules.Retries, o => o.ReadRetries, (o, v) => o.ReadRetries = v);
+
+    /// <summary>The AllowReadModifyWriteBits setting.</summary>
+    internal static readonly Setting<HostLinkClientSettings, HostLinkClientOptions, bool?> AllowReadModifyWriteBitsSetting =
+        ClientSetting.Value(nameof(AllowReadModifyWriteBits), s => s.AllowReadModifyWriteBits, (s, v) => s.AllowReadModifyWriteBits = v, v => v.Boolean(), null, o => o.AllowReadModifyWriteBits, (o, v) => o.AllowReadModifyWriteBits = v);
+
+    /// <summary>
+    /// The client settings, each declared once: key, reader, rule and how it applies to <see cref="HostLinkClientOptions"/>
+    /// (whose new instance holds the default). <see cref="Read"/>, <see cref="Validate"/> and <see cref="ToClientOptions"/>
+    /// iterate them; the console and <see cref="HostLinkPlc"/> take their defaults from them. A new setting is a line
+    /// here, its property below and its option.
+    /// </summary>
+    internal static readonly Setting<HostLinkClientSettings, HostLinkClientOptions>[] Declared =
+    [
+        UnitNumberSetting,
+        CommandSetSetting,
+        TurnaroundAllowanceSetting,
+        ReadRetriesSetting,
+        ClientSetting.Value(nameof(WriteRetries), s => s.WriteRetries, (s, v) => s.WriteRetries = v, v => v.Integer(), SettingRules.Retries, o => o.WriteRetries, (o, v) => o.WriteRetries = v),
+        ClientSetting.Value(nameof(WordOrder), s => s.WordOrder, (s, v) => s.WordOrder = v, v => v.Choice<WordOrder>(), SettingRules.Defined, o => o.WordOrder, (o, v) => o.WordOrder = v),
+        ClientSetting.Value(nameof(LocalEcho), s => s.LocalEcho, (s, v) => s.LocalEcho = v, v => v.Boolean(), null, o => o.LocalEcho, (o, v) => o.LocalEcho = v),
+        ClientSetting.Value(nameof(FinsResponseWait), s => s.FinsResponseWait, (s, v) => s.FinsResponseWait = v, v => v.Integer(), SettingRules.FinsResponseWait, o => o.FinsResponseWait, (o, v) => o.FinsResponseWait = v),
+        AllowReadModifyWriteBitsSetting,
+        ClientSetting.Value(nameof(UseCompoundRead), s => s.UseCompoundRead, (s, v) => s.UseCompoundRead = v, v => v.Choice(("true", CompoundReadMode.On), ("false", CompoundReadMode.Off)), SettingRules.Defined, o => o.UseCompoundRead, (o, v) => o.UseCompoundRead = v),
+        ClientSetting.Reference(nameof(Model), s => s.Model, (s, v) => s.Model = v, v => v.Text(), PlcModelProfile.CheckSetting, o => o.Model, (o, v) => o.Model = v),
+        ClientSetting.Value(
             nameof(HostLinkCompatibleMode),
-            (v, s) => s.HostLinkCompatibleMode = v.Choice(
+            s => s.HostLinkCompatibleMode,
+            (s, v) => s.HostLinkCompatibleMode = v,
+            v => v.Choice(
                 ("A", OmronHostLink.HostLinkCompatibleMode.ModeA),
                 ("B", OmronHostLink.HostLinkCompatibleMode.ModeB),
                 ("C", OmronHostLink.HostLinkCompatibleMode.ModeC),
-                ("D", OmronHostLink.HostLinkCompatibleMode.ModeD)) ?? s.HostLinkCompatibleMode
-        },
-        { nameof(SendInterval), (v, s) => s.SendInterval = v.Duration() ?? s.SendInterval },
-    };
+                ("D", OmronHostLink.HostLinkCompatibleMode.ModeD)),
+            SettingRules.Defined,
+            o => o.HostLinkCompatibleMode,
+            (o, v) => o.HostLinkCompatibleMode = v),
+        ClientSetting.Value(nameof(SendInterval), s => s.SendInterval, (s, v) => s.SendInterval = v, v => v.Duration(), SettingRules.SendInterval, o => o.SendInterval, (o, v) => o.SendInterval = v),
+        ClientSetting.Reference(nameof(TraceFile), s => s.TraceFile, (s, v) => s.TraceFile = v, v => v.Text(), SettingRules.TraceFile, o => o.TraceFile, (o, v) => o.TraceFile = v),
+        ClientSetting.Reference(nameof(UnitSendIntervals), s => s.UnitSendIntervals, (s, v) => s.UnitSendIntervals = v, v => v.UnitDurations(), SettingRules.UnitSendIntervals, o => o.UnitSendIntervals, (o, v) => o.UnitSendIntervals = new Dictionary<int, TimeSpan>(v)),
+    ];
+
+    private static readonly SettingKeys<HostLinkClientSettings> Keys = SettingKeys<HostLinkClientSettings>.Of(
+        "a Host Link client setting",
+        Declared,
+        (nameof(Serial), (v, s) => s.Serial.Read(v)),
+        (nameof(Tcp), (v, s) => s.Tcp.Read(v)))
+        .WithRenamed("LineBaudRate", "Serial:BaudRate")
+        .WithRenamed("ConnectTimeout", "Tcp:ConnectTimeout");
 
     private readonly List<HostLinkSettingsProblem> _readProblems = new();
 
@@ -98,6 +138,13 @@ public sealed class HostLinkClientSettings
     public string? Model { get; set; }
 
     /// <summary>
+    /// A file every frame the client sends and receives is written to, with its time and direction: a pcap for
+    /// Wireshark (see <see cref="HostLinkClientOptions.TraceFile"/>), or JSON lines for a name ending in <c>.jsonl</c>.
+    /// Default none.
+    /// </summary>
+    public string? TraceFile { get; set; }
+
+    /// <summary>
     /// The Host Link-compatible device mode of the Serial Communications Unit the client talks to, when it is set to one
     /// and its answers should be checked against it (see <see cref="HostLinkClientOptions.HostLinkCompatibleMode"/>):
     /// ModeA to ModeD, or A to D. Default none: any framing is accepted.
@@ -109,6 +156,21 @@ public sealed class HostLinkClientSettings
     /// drop a command sent right after an answer; 0 to 10 s. Default 0 (none). See <see cref="HostLinkClientOptions.SendInterval"/>.
     /// </summary>
     public TimeSpan? SendInterval { get; set; }
+
+    /// <summary>
+    /// Whether planned reads use QQ, the compound read: Auto (default: where the unit's model, configured or asked with
+    /// MM once, has it), On (unless the model is known to lack it) or Off; true and false are taken for On and Off. See
+    /// <see cref="HostLinkClientOptions.UseCompoundRead"/>.
+    /// </summary>
+    public CompoundReadMode? UseCompoundRead { get; set; }
+
+    /// <summary>
+    /// Longer gaps than <see cref="SendInterval"/> before commands to particular units (unit number to gap, each 0 to
+    /// 10 s; in configuration a section such as <c>"UnitSendIntervals": { "3": "200ms" }</c>). See
+    /// <see cref="HostLinkClientOptions.UnitSendIntervals"/>. Default none.
+    /// </summary>
+    [System.Diagnostics.CodeAnalysis.SuppressMessage("Usage", "CA2227:Collection properties should be read only", Justification = "Settings are bound and replaced as a whole, as the options' dictionary is.")]
+    public IDictionary<int, TimeSpan>? UnitSendIntervals { get; set; }
 
     /// <summary>The kinds of link a client can use; exactly one is chosen.</summary>
     internal IEnumerable<HostLinkEndpointSettings> Endpoints => [Serial, Tcp];
@@ -145,24 +207,14 @@ public sealed class HostLinkClientSettings
             endpoint.Check(this, problems);
         }
 
-        void Add(string key, string? problem)
+        foreach (Setting<HostLinkClientSettings, HostLinkClientOptions> setting in Declared)
         {
-            if (problem is not null)
+            if (setting.Check(this) is { } problem)
             {
-                problems.Add(new HostLinkSettingsProblem(key, problem));
+                problems.Add(new HostLinkSettingsProblem(setting.Key, problem));
             }
         }
 
-        Add(nameof(UnitNumber), UnitNumber is { } unit ? SettingRules.UnitNumber(unit) : null);
-        Add(nameof(CommandSet), CommandSet is { } commandSet ? SettingRules.CommandSet(commandSet) : null);
-        Add(nameof(TurnaroundAllowance), TurnaroundAllowance is { } turnaround ? SettingRules.TurnaroundAllowance(turnaround) : null);
-        Add(nameof(ReadRetries), ReadRetries is { } readRetries ? SettingRules.Retries(readRetries) : null);
-        Add(nameof(WriteRetries), WriteRetries is { } writeRetries ? SettingRules.Retries(writeRetries) : null);
-        Add(nameof(WordOrder), WordOrder is { } order ? SettingRules.WordOrder(order) : null);
-        Add(nameof(FinsResponseWait), FinsResponseWait is { } wait ? SettingRules.FinsResponseWait(wait) : null);
-        Add(nameof(Model), Model is { } model ? SettingRules.Model(model) : null);
-        Add(nameof(HostLinkCompatibleMode), HostLinkCompatibleMode is { } compatibleMode ? SettingRules.CompatibleMode(compatibleMode) : null);
-        Add(nameof(SendInterval), SendInterval is { } gap ? SettingRules.SendInterval(gap) : null);
         return problems;
     }
 
@@ -174,18 +226,10 @@ public sealed class HostLinkClientSettings
     public HostLinkClientOptions ToClientOptions()
     {
         var options = new HostLinkClientOptions();
-        options.UnitNumber = UnitNumber ?? options.UnitNumber;
-        options.CommandSet = CommandSet ?? options.CommandSet;
-        options.TurnaroundAllowance = TurnaroundAllowance ?? options.TurnaroundAllowance;
-        options.ReadRetries = ReadRetries ?? options.ReadRetries;
-        options.WriteRetries = WriteRetries ?? options.WriteRetries;
-        options.WordOrder = WordOrder ?? options.WordOrder;
-        options.LocalEcho = LocalEcho ?? options.LocalEcho;
-        options.FinsResponseWait = FinsResponseWait ?? options.FinsResponseWait;
-        options.AllowReadModifyWriteBits = AllowReadModifyWriteBits ?? options.AllowReadModifyWriteBits;
-        options.Model = Model ?? options.Model;
-        options.HostLinkCompatibleMode = HostLinkCompatibleMode ?? options.HostLinkCompatibleMode;
-        options.SendInterval = SendInterval ?? options.SendInterval;
+        foreach (Setting<HostLinkClientSettings, HostLinkClientOptions> setting in Declared)
+        {
+            setting.Apply(this, options);
+        }
 
         // Over TCP the transport cannot know the line's speed: the deadlines come from these settings. A local port
         // gives its own timing from the same values.

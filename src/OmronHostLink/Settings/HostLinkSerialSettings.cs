@@ -1,3 +1,4 @@
+using LineSetting = OmronHostLink.Declare<OmronHostLink.HostLinkSerialSettings, OmronHostLink.Transports.SerialLineSettings>;
 using OmronHostLink.Transports;
 
 namespace OmronHostLink;
@@ -10,17 +11,39 @@ namespace OmronHostLink;
 /// </summary>
 public sealed class HostLinkSerialSettings : HostLinkEndpointSettings
 {
-    private static readonly SettingKeys<HostLinkSerialSettings> Keys = new("a serial line setting")
-    {
-        { nameof(PortName), (v, s) => s.PortName = v.Text() ?? s.PortName },
-        { nameof(BaudRate), (v, s) => s.BaudRate = v.Integer() ?? s.BaudRate },
-        { nameof(DataBits), (v, s) => s.DataBits = v.Integer() ?? s.DataBits },
-        { nameof(Parity), (v, s) => s.Parity = v.Choice<SerialParity>() ?? s.Parity },
-        { nameof(StopBits), (v, s) => s.StopBits = v.Choice(("1", SerialStopBits.One), ("2", SerialStopBits.Two)) ?? s.StopBits },
-        { nameof(Handshake), (v, s) => s.Handshake = v.Choice<SerialHandshake>() ?? s.Handshake },
-        { nameof(DtrEnable), (v, s) => s.DtrEnable = v.Boolean() ?? s.DtrEnable },
-        { nameof(RtsEnable), (v, s) => s.RtsEnable = v.Boolean() ?? s.RtsEnable },
-    };
+    /// <summary>The BaudRate setting.</summary>
+    internal static readonly Setting<HostLinkSerialSettings, SerialLineSettings, int?> BaudRateSetting =
+        LineSetting.Value(nameof(BaudRate), s => s.BaudRate, (s, v) => s.BaudRate = v, v => v.Integer(), SettingRules.BaudRate, o => o.BaudRate, (o, v) => o.BaudRate = v);
+
+    /// <summary>The DataBits setting.</summary>
+    internal static readonly Setting<HostLinkSerialSettings, SerialLineSettings, int?> DataBitsSetting =
+        LineSetting.Value(nameof(DataBits), s => s.DataBits, (s, v) => s.DataBits = v, v => v.Integer(), SettingRules.DataBits, o => o.DataBits, (o, v) => o.DataBits = v);
+
+    /// <summary>The Parity setting.</summary>
+    internal static readonly Setting<HostLinkSerialSettings, SerialLineSettings, SerialParity?> ParitySetting =
+        LineSetting.Value(nameof(Parity), s => s.Parity, (s, v) => s.Parity = v, v => v.Choice<SerialParity>(), SettingRules.Defined, o => o.Parity, (o, v) => o.Parity = v);
+
+    /// <summary>The StopBits setting.</summary>
+    internal static readonly Setting<HostLinkSerialSettings, SerialLineSettings, SerialStopBits?> StopBitsSetting =
+        LineSetting.Value(nameof(StopBits), s => s.StopBits, (s, v) => s.StopBits = v, v => v.Choice(("1", SerialStopBits.One), ("2", SerialStopBits.Two)), SettingRules.Defined, o => o.StopBits, (o, v) => o.StopBits = v);
+
+    /// <summary>
+    /// The serial line's settings, each declared once: key, reader, rule and how it applies to
+    /// <see cref="SerialLineSettings"/> (whose new instance holds the default, Omron's 9600 7E2).
+    /// </summary>
+    internal static readonly Setting<HostLinkSerialSettings, SerialLineSettings>[] Declared =
+    [
+        LineSetting.Reference(nameof(PortName), s => s.PortName, (s, v) => s.PortName = v, v => v.Text(), SettingRules.PortName, o => o.PortName, (o, v) => o.PortName = v),
+        BaudRateSetting,
+        DataBitsSetting,
+        ParitySetting,
+        StopBitsSetting,
+        LineSetting.Value(nameof(Handshake), s => s.Handshake, (s, v) => s.Handshake = v, v => v.Choice<SerialHandshake>(), SettingRules.Defined, o => o.Handshake, (o, v) => o.Handshake = v),
+        LineSetting.Value(nameof(DtrEnable), s => s.DtrEnable, (s, v) => s.DtrEnable = v, v => v.Boolean(), null, o => o.DtrEnable, (o, v) => o.DtrEnable = v),
+        LineSetting.Value(nameof(RtsEnable), s => s.RtsEnable, (s, v) => s.RtsEnable = v, v => v.Boolean(), null, o => o.RtsEnable, (o, v) => o.RtsEnable = v),
+    ];
+
+    private static readonly SettingKeys<HostLinkSerialSettings> Keys = SettingKeys<HostLinkSerialSettings>.Of("a serial line setting", Declared);
 
     /// <summary>The local port: <c>COM3</c>, <c>/dev/ttyUSB0</c>, or any device path or link to one.</summary>
     public string? PortName { get; set; }
@@ -62,14 +85,11 @@ public sealed class HostLinkSerialSettings : HostLinkEndpointSettings
     internal SerialLineSettings ToLineSettings()
     {
         var line = new SerialLineSettings();
-        line.PortName = PortName ?? line.PortName;
-        line.BaudRate = BaudRate ?? line.BaudRate;
-        line.DataBits = DataBits ?? line.DataBits;
-        line.Parity = Parity ?? line.Parity;
-        line.StopBits = StopBits ?? line.StopBits;
-        line.Handshake = Handshake ?? line.Handshake;
-        line.DtrEnable = DtrEnable ?? line.DtrEnable;
-        line.RtsEnable = RtsEnable ?? line.RtsEnable;
+        foreach (Setting<HostLinkSerialSettings, SerialLineSettings> setting in Declared)
+        {
+            setting.Apply(this, line);
+        }
+
         return line;
     }
 
@@ -85,13 +105,12 @@ public sealed class HostLinkSerialSettings : HostLinkEndpointSettings
             }
         }
 
-        Add(nameof(PortName), PortName is null ? null : SettingRules.PortName(PortName));
-        Add(nameof(BaudRate), BaudRate is { } baud ? SettingRules.BaudRate(baud) : null);
-        Add(nameof(DataBits), DataBits is { } bits ? SettingRules.DataBits(bits) : null);
-        Add(nameof(Parity), Parity is { } parity ? SettingRules.Parity(parity) : null);
-        Add(nameof(StopBits), StopBits is { } stop ? SettingRules.StopBits(stop) : null);
-        Add(nameof(Handshake), Handshake is { } handshake ? SettingRules.Handshake(handshake) : null);
-        Add(nameof(RtsEnable), SettingRules.RtsEnable(RtsEnable == true, Handshake ?? SerialHandshake.None));
+        foreach (Setting<HostLinkSerialSettings, SerialLineSettings> setting in Declared)
+        {
+            Add(setting.Key, setting.Check(this));
+        }
+
+        Add(nameof(RtsEnable), SettingRules.RtsEnable(RtsEnable == true, Handshake == SerialHandshake.RequestToSend));
         if (!IsChosen && client.Endpoints.Any(e => e.IsChosen))
         {
             // Behind a serial-device server only the line's speed and format matter here; the rest is the server's.

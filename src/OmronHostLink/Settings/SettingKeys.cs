@@ -10,7 +10,38 @@ internal sealed class SettingKeys<T> : IEnumerable<string>
     private readonly List<string> _names = new();
     private readonly string _what;
 
+    private readonly Dictionary<string, string> _renamed = new(StringComparer.OrdinalIgnoreCase);
+
     public SettingKeys(string what) => _what = what;
+
+    /// <summary>The keys of declared settings (with the keys they had before a rename) and of sections read by hand.</summary>
+    public static SettingKeys<T> Of<TOptions>(string what, IEnumerable<Setting<T, TOptions>> declared, params (string Name, Action<SettingValue, T> Read)[] sections)
+        where TOptions : new()
+    {
+        var keys = new SettingKeys<T>(what);
+        foreach ((string name, Action<SettingValue, T> read) in sections)
+        {
+            keys.Add(name, read);
+        }
+
+        foreach (Setting<T, TOptions> setting in declared)
+        {
+            keys.Add(setting.Key, setting.Read);
+            if (setting.FormerKey is { } former)
+            {
+                keys._renamed.Add(former, setting.Key);
+            }
+        }
+
+        return keys;
+    }
+
+    /// <summary>A key that was renamed or moved (<c>LineBaudRate</c> → <c>Serial:BaudRate</c>): reading it says where it is now.</summary>
+    public SettingKeys<T> WithRenamed(string former, string now)
+    {
+        _renamed.Add(former, now);
+        return this;
+    }
 
     public void Add(string name, Action<SettingValue, T> read)
     {
@@ -30,6 +61,10 @@ internal sealed class SettingKeys<T> : IEnumerable<string>
             if (_readers.TryGetValue(child.Key, out Action<SettingValue, T>? read))
             {
                 read(new SettingValue(child, prefix + Canonical(child.Key), problems), target);
+            }
+            else if (_renamed.TryGetValue(child.Key, out string? now))
+            {
+                problems.Add(new HostLinkSettingsProblem(prefix + child.Key, $"is now called {prefix + now}; rename the key"));
             }
             else
             {

@@ -126,6 +126,39 @@ internal sealed class SettingValue
         return null;
     }
 
+    /// <summary>
+    /// A section of unit numbers to durations (<c>"UnitSendIntervals": { "3": "200ms" }</c>); null when the key is null
+    /// in the file or nothing in it can be used. A key that is not a unit number is a problem at its own key path.
+    /// </summary>
+    public IDictionary<int, TimeSpan>? UnitDurations()
+    {
+        if (!IsSection)
+        {
+            if (_node.Value is not null)
+            {
+                Problem("expects a section of unit numbers and durations, such as \"3\": \"200ms\"");
+            }
+
+            return null;
+        }
+
+        var map = new Dictionary<int, TimeSpan>();
+        foreach (SettingNode child in _node.Children)
+        {
+            var value = new SettingValue(child, _key + ":" + child.Key, _problems);
+            if (!int.TryParse(child.Key.Trim(), NumberStyles.None, CultureInfo.InvariantCulture, out int unit))
+            {
+                value.Problem($"'{child.Key}' is not a unit number (0-{HostLinkRules.MaxUnitNumber})");
+            }
+            else if (value.Duration() is { } duration)
+            {
+                map[unit] = duration;
+            }
+        }
+
+        return map.Count == 0 ? null : map;
+    }
+
     public void Section<T>(SettingKeys<T> keys, T target)
     {
         if (!IsSection && _node.Value is not null)

@@ -7,7 +7,7 @@ namespace OmronHostLink.Transports;
 public sealed class LineTiming
 {
     /// <summary>Omron's default line: 9600 bps, 1 start + 7 data + even parity + 2 stop bits.</summary>
-    public static LineTiming Default { get; } = new(9600, 11);
+    public static LineTiming Default { get; } = new(SerialLineSettings.DefaultBaudRate, new SerialLineSettings().BitsPerCharacter);
 
     /// <summary>Creates the timing.</summary>
     /// <param name="baudRate">Bits per second, 300-1,000,000.</param>

@@ -6,6 +6,9 @@ namespace OmronHostLink.Transports;
 /// </summary>
 public sealed class SerialLineSettings
 {
+    /// <summary>The line speed of an Omron Host Link port as it leaves the factory, and of every default here.</summary>
+    internal const int DefaultBaudRate = 9600;
+
     /// <summary>
     /// The device: <c>COM3</c> on Windows; <c>/dev/ttyUSB0</c>, <c>/dev/ttyS0</c>, <c>/dev/pts/5</c> or a symbolic
     /// link to one (such as <c>/tmp/ttyV0</c> made by socat) on Linux.
@@ -13,7 +16,7 @@ public sealed class SerialLineSettings
     public string PortName { get; set; } = "";
 
     /// <summary>Line speed in bits per second; one of the standard rates 300 to 230400. Default 9600.</summary>
-    public int BaudRate { get; set; } = 9600;
+    public int BaudRate { get; set; } = DefaultBaudRate;
 
     /// <summary>Data bits per character: 7 (the Host Link default) or 8.</summary>
     public int DataBits { get; set; } = 7;
@@ -58,10 +61,10 @@ public sealed class SerialLineSettings
         Check(nameof(PortName), SettingRules.PortName(PortName ?? ""));
         Check(nameof(BaudRate), SettingRules.BaudRate(BaudRate));
         Check(nameof(DataBits), SettingRules.DataBits(DataBits));
-        Check(nameof(Parity), SettingRules.Parity(Parity));
-        Check(nameof(StopBits), SettingRules.StopBits(StopBits));
-        Check(nameof(Handshake), SettingRules.Handshake(Handshake));
-        Check(nameof(RtsEnable), SettingRules.RtsEnable(RtsEnable, Handshake));
+        Check(nameof(Parity), SettingRules.Defined(Parity));
+        Check(nameof(StopBits), SettingRules.Defined(StopBits));
+        Check(nameof(Handshake), SettingRules.Defined(Handshake));
+        Check(nameof(RtsEnable), SettingRules.RtsEnable(RtsEnable, Handshake == SerialHandshake.RequestToSend));
     }
 
     private static void Check(string property, string? problem)

@@ -96,7 +96,7 @@ internal static class ScaleBenchmark
         int chars = ReadPlanner.CModeReadCharacters(PlcArea.Dm, 1, out _);
         double tagMs = chars * BitsPerCharacter * 1000.0 / s.Baud;
         PlcTag[] tags = words.Select(w => new PlcTag($"D{w}", PlcValueType.Word)).ToArray();
-        ReadPlan plan = new ReadPlanner(HostLinkCommandSet.CMode, new LineTiming(s.Baud, BitsPerCharacter)).Plan(tags);
+        ReadPlan plan = new ReadPlanner(HostLinkCommandSet.CMode, new LineTiming(s.Baud, BitsPerCharacter)) { UseCompoundRead = CompoundReadMode.Off }.Plan(tags);
         double busy = plan.Characters * BitsPerCharacter * 1000.0 / s.Baud;
 
         Console.WriteLine($"# Scale: worker → MQTT. {Environment.ProcessorCount} cores, {RuntimeInformation.OSDescription}, {RuntimeInformation.FrameworkDescription}, {DateTime.UtcNow:yyyy-MM-dd HH:mm} UTC");
@@ -282,6 +282,9 @@ internal static class ScaleBenchmark
                 ["Tcp"] = $"127.0.0.1:{servers[l].Port}",
                 ["Serial"] = new JsonObject { ["BaudRate"] = s.Baud },
                 ["CommandSet"] = "CMode",
+
+                // One RD a tag, as the figures above count them (QQ would read each link's tags with one QQIR).
+                ["UseCompoundRead"] = "Off",
                 ["Groups"] = groups,
             };
         }

@@ -19,10 +19,12 @@ internal sealed class SerialDeviceServer : IAsyncDisposable
     private readonly int _baudRate;
     private readonly int _bitsPerCharacter;
     private readonly LineClock _clock;
+    private readonly Func<Stream, Stream>? _plcSide;
     private Task _acceptLoop = Task.CompletedTask;
 
-    private SerialDeviceServer(VirtualPlc plc, int baudRate, int bitsPerCharacter, LineClock clock)
+    private SerialDeviceServer(VirtualPlc plc, int baudRate, int bitsPerCharacter, LineClock clock, Func<Stream, Stream>? plcSide)
     {
+        _plcSide = plcSide;
         Plc = plc;
         _clock = clock;
         _baudRate = baudRate;
@@ -63,10 +65,10 @@ internal sealed class SerialDeviceServer : IAsyncDisposable
     /// <summary>Answer frames the PLC has sent (one per single-frame transaction): the simulator's own counter.</summary>
     public long AnswerFrames => Plc.FaultCounters.Frames;
 
-    /// <summary>Starts listening on a free loopback port.</summary>
-    public static SerialDeviceServer Start(VirtualPlc plc, int baudRate, int bitsPerCharacter, LineClock clock)
+    /// <summary>Starts listening on a free loopback port; <paramref name="plcSide"/> wraps the line at the PLC's end (to watch it), or is null.</summary>
+    public static SerialDeviceServer Start(VirtualPlc plc, int baudRate, int bitsPerCharacter, LineClock clock, Func<Stream, Stream>? plcSide = null)
     {
-        var server = new SerialDeviceServer(plc, baudRate, bitsPerCharacter, clock);
+        var server = new SerialDeviceServer(plc, baudRate, bitsPerCharacter, clock, plcSide);
         server._listener.Start();
         server._acceptLoop = server.AcceptLoopAsync();
         return server;
@@ -123,7 +125,7 @@ internal sealed class SerialDeviceServer : IAsyncDisposable
         {
             await using (line.ConfigureAwait(false))
             {
-                await Plc.RunAsync(line, _stop.Token).ConfigureAwait(false);
+                await Plc.RunAsync(_plcSide?.Invoke(line) ?? line, _stop.Token).ConfigureAwait(false);
             }
         }
     }

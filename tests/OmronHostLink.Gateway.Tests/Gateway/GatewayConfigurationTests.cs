@@ -2,6 +2,7 @@ using Microsoft.Extensions.Hosting;
 using Microsoft.Extensions.Logging;
 using Microsoft.Extensions.Options;
 using OmronHostLink.Gateway;
+using OmronHostLink.Gateway.Polling;
 using OmronHostLink.Gateway.Tests.Telemetry;
 
 namespace OmronHostLink.Gateway.Tests.Gateway;

@@ -4,11 +4,13 @@ using System.Net.Sockets;
 using Microsoft.Extensions.DependencyInjection;
 using Microsoft.Extensions.Hosting;
 using Microsoft.Extensions.Logging;
-using Xunit.Abstractions;
+using OmronHostLink.Gateway;
+using OmronHostLink.Gateway.Polling;
+using OmronHostLink.Gateway.Tests.Mqtt;
 using OmronHostLink.Simulator;
 using OmronHostLink.Simulator.Hosting;
-using OmronHostLink.Gateway;
-using OmronHostLink.Gateway.Tests.Mqtt;
+using OmronHostLink.Gateway.Statistics;
+using Xunit.Abstractions;
 
 namespace OmronHostLink.Gateway.Tests.Gateway;
 
@@ -61,24 +63,8 @@ public sealed class GatewayHostTests(ITestOutputHelper output) : IDisposable
     }
 
     /// <summary>Waits until <paramref name="condition"/> (about the log) holds, looking again at each new log entry.</summary>
-    private static async Task Eventually(Func<bool> condition, string what, CapturingLoggerProvider logs)
-    {
-        var clock = Stopwatch.StartNew();
-        while (true)
-        {
-            Task next = logs.NextEntry;
-            if (condition())
-            {
-                return;
-            }
-
-            TimeSpan left = Patience - clock.Elapsed;
-            if (left <= TimeSpan.Zero || !await next.WaitAsync(left).ContinueWith(t => t.IsCompletedSuccessfully, TaskScheduler.Default))
-            {
-                throw new Xunit.Sdk.XunitException($"Timed out waiting until {what}. Log:{Environment.NewLine}{logs.Dump()}");
-            }
-        }
-    }
+    private static Task Eventually(Func<bool> condition, string what, CapturingLoggerProvider logs)
+        => OmronHostLink.Testing.Eventually.UntilAsync(condition, what, logs);
 
     private static IEnumerable<LogEntry> Values(CapturingLoggerProvider logs, string group)
         => logs.WithEvent(GatewayLog.Events.Values).Where(e => (string?)e["Group"] == group);
@@ -231,7 +217,9 @@ public sealed class GatewayHostTests(ITestOutputHelper output) : IDisposable
         try
         {
             await Eventually(() => logs.WithEvent(GatewayLog.Events.GroupFailed).Count == 1 && Values(logs, "done").Any(), "the failure and the flag are logged", logs);
-            await Task.Delay(300); // six more polls of each
+            long transactions = host.Services.GetRequiredService<LinkStatistics>().Unit("plc", 0)!.Transactions;
+            await OmronHostLink.Testing.Eventually.UntilAsync(
+                () => host.Services.GetRequiredService<LinkStatistics>().Unit("plc", 0)!.Transactions >= transactions + 12, "six more polls of each group", logs);
             LogEntry failed = logs.WithEvent(GatewayLog.Events.GroupFailed).Should().ContainSingle("once per distinct failure").Subject;
             failed.Message.Should().StartWith("plc/code: unit 0 D100 cannot be read: ").And.Contain("0x00A1");
             Values(logs, "done").Single()["Values"].Should().Be("1");
@@ -336,7 +324,7 @@ public sealed class GatewayHostTests(ITestOutputHelper output) : IDisposable
         using IHost host = BuildHost(config, logs);
         await host.StartAsync();
         await Eventually(() => logs.WithEvent(GatewayLog.Events.LinkStarted).Count == 1, "the link starts", logs);
-        await Task.Delay(200);
+        await OmronHostLink.Testing.Eventually.UntilAsync(() => Volatile.Read(ref accepted).Count > 0, "the link connects to the silent PLC");
 
         var clock = Stopwatch.StartNew();
         await host.StopAsync();
@@ -381,7 +369,7 @@ public sealed class GatewayHostTests(ITestOutputHelper output) : IDisposable
             await host.StopAsync();
         }
 
-        logs.WithEvent(GatewayLog.Events.SimulatorStarted).Should().ContainSingle();
+        logs.WithEvent(OmronHostLink.Gateway.Simulation.SimulatorLog.Events.Started).Should().ContainSingle();
     }
 
     public static TheoryData<string, string?, string> BadSettings => new()
@@ -391,7 +379,7 @@ public sealed class GatewayHostTests(ITestOutputHelper output) : IDisposable
         { "HostLink:Links:plc:Groups:g:Address", "D100.03", "HostLink:Links:plc:Groups:g:Address D100.03 names a bit" },
         { "HostLink:Links:plc:Groups:g:Count", "20000", "HostLink:Links:plc:Groups:g:Count" },
         { "HostLink:Links:plc:Groups:g:Type", "flot", "HostLink:Links:plc:Groups:g:Type 'flot' is not one of word, bcd" },
-        { "HostLink:Links:plc:Groups:g:Unit", "32", "HostLink:Links:plc:Groups:g:Unit must be 0-31" },
+        { "HostLink:Links:plc:Groups:g:Unit", "32", "HostLink:Links:plc:Groups:g:Unit: 32 is not a unit number (0-31)" },
         { "HostLink:Links:plc:Groups:g:Interval", "00:00:00", "HostLink:Links:plc:Groups:g:Interval must be more than 0" },
         { "HostLink:Links:plc:Groups:g:Interval", "2.00:00:00", "HostLink:Links:plc:Groups:g:Interval must be more than 0 and at most 1 day; it is 2.00:00:00" },
         { "HostLink:Links:plc:Backoff:Max", "3.00:00:00", "HostLink:Links:plc:Backoff:Max must be at most 1 day; it is 3.00:00:00" },
@@ -437,7 +425,5 @@ public sealed class GatewayHostTests(ITestOutputHelper output) : IDisposable
         Messages(error!).Should().Contain(m => m.Contains("HostLink:Links:plc:Serial:BaudRate", StringComparison.Ordinal));
     }
 
-    private static IEnumerable<string> Messages(Exception e) => e is AggregateException a
-        ? a.InnerExceptions.SelectMany(Messages).Prepend(e.Message)
-        : e.InnerException is null ? [e.Message] : Messages(e.InnerException).Prepend(e.Message);
+    private static IEnumerable<string> Messages(Exception e) => ExceptionMessages.Of(e);
 }

@@ -1,17 +1,19 @@
 using System.Diagnostics;
 using System.Globalization;
 using Microsoft.Extensions.Hosting;
-using OmronHostLink.Simulator;
-using OmronHostLink.Gateway.Tests.Mqtt;
 using OmronHostLink.Gateway;
+using OmronHostLink.Gateway.Polling;
+using OmronHostLink.Gateway.Tests.Mqtt;
+using OmronHostLink.Simulator;
 using Xunit.Abstractions;
 
 namespace OmronHostLink.Gateway.Tests.Gateway;
 
 /// <summary>
-/// How the groups of one link share it, read from the frames that reach the PLC: one watch per group on the link's one
-/// client, whose gate takes waiting reads in turn. The PLC answers after a turnaround, as on a real line, so the link
-/// (not the worker's handling of what it read) is what the groups share.
+/// How the groups of one link share it, read from the frames that reach the PLC: one planned watch per unit and
+/// interval on the link's one client, whose gate takes waiting reads in turn. The PLC answers after a turnaround, as on
+/// a real line, so the link (not the worker's handling of what it read) is what the groups share. The link reads by area
+/// (UseCompoundRead Off), so that each group's reads are the RD frames of its words.
 /// </summary>
 public sealed class LinkSchedulingTests(ITestOutputHelper output) : IAsyncLifetime
 {
@@ -88,7 +90,6 @@ public sealed class LinkSchedulingTests(ITestOutputHelper output) : IAsyncLifeti
             logs = l;
             // Each group of unit 5 fails once when the outage begins (x, y, z), then only one of them tries again.
             await Eventually(() => OfUnit5(l, GatewayLog.Events.UnitDown).Count == 1 && OfUnit5(l, GatewayLog.Events.UnitStillDown).Count >= 3, l);
-            await Task.Delay(TimeSpan.FromSeconds(1));
             before = Reads().Count;
             int attempts = OfUnit5(l, GatewayLog.Events.UnitStillDown).Count;
             // Three more attempts on the silent unit, and unit 0 polled meanwhile: counted, not timed, so a busy
@@ -119,6 +120,7 @@ public sealed class LinkSchedulingTests(ITestOutputHelper output) : IAsyncLifeti
         ["HostLink:Links:plc:TurnaroundAllowance"] = allowance,
         ["HostLink:Links:plc:ReadRetries"] = "1",
         ["HostLink:Links:plc:Tcp:ConnectTimeout"] = "00:00:00.500",
+        ["HostLink:Links:plc:UseCompoundRead"] = "Off",
     };
 
     private static void Group(Dictionary<string, string?> config, string name, string address, int count = 1, int intervalMs = 50, int unit = 0)
@@ -159,17 +161,6 @@ public sealed class LinkSchedulingTests(ITestOutputHelper output) : IAsyncLifeti
         return clock.Elapsed;
     }
 
-    private static async Task Eventually(Func<bool> condition, CapturingLoggerProvider logs)
-    {
-        var clock = Stopwatch.StartNew();
-        while (!condition())
-        {
-            if (clock.Elapsed > TimeSpan.FromSeconds(15))
-            {
-                throw new Xunit.Sdk.XunitException($"Timed out. Log:{Environment.NewLine}{logs.Dump()}");
-            }
-
-            await Task.Delay(10);
-        }
-    }
+    private static Task Eventually(Func<bool> condition, CapturingLoggerProvider logs)
+        => OmronHostLink.Testing.Eventually.UntilAsync(condition, "the log shows it", logs);
 }

@@ -1,3 +1,4 @@
+using OmronHostLink.Gateway.Configuration;
 using OmronHostLink.Gateway.Polling;
 
 namespace OmronHostLink.Gateway.Tests.Gateway;

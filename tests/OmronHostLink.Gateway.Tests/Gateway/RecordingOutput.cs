@@ -1,7 +1,7 @@
 namespace OmronHostLink.Gateway.Tests.Gateway;
 
-/// <summary>An output that records what the polling reports: tag outcomes and unit states, in order.</summary>
-public sealed class RecordingOutput : ITagOutput
+/// <summary>An output that records what the polling reports: tag outcomes, unit states, scan plans and cycles, in order.</summary>
+internal sealed class RecordingOutput : ITagOutput, IScanOutput
 {
     private readonly List<object> _events = new();
 
@@ -22,6 +22,12 @@ public sealed class RecordingOutput : ITagOutput
 
     /// <summary>The tag outcomes reported so far.</summary>
     public IReadOnlyList<TagChange> Tags => Events.OfType<TagChange>().ToArray();
+
+    /// <summary>The scan classes' plans reported so far.</summary>
+    public IReadOnlyList<ScanPlan> Plans => Events.OfType<ScanPlan>().ToArray();
+
+    /// <summary>The scan classes' cycles reported so far.</summary>
+    public IReadOnlyList<ScanCycle> Cycles => Events.OfType<ScanCycle>().ToArray();
 
     /// <inheritdoc/>
     public void LinkOpened(string link, HostLinkUnit client)
@@ -48,6 +54,24 @@ public sealed class RecordingOutput : ITagOutput
         lock (_events)
         {
             _events.Add(new UnitReport(link, unit, state, detail));
+        }
+    }
+
+    /// <inheritdoc/>
+    public void ScanPlanned(ScanPlan plan)
+    {
+        lock (_events)
+        {
+            _events.Add(plan);
+        }
+    }
+
+    /// <inheritdoc/>
+    public void ScanCycled(ScanCycle cycle)
+    {
+        lock (_events)
+        {
+            _events.Add(cycle);
         }
     }
 }

@@ -3,6 +3,7 @@ using System.Text.Json;
 using Microsoft.Extensions.Logging.Abstractions;
 using Microsoft.Extensions.Time.Testing;
 using OmronHostLink.Gateway.Mqtt;
+using OmronHostLink.Gateway.Queue;
 
 namespace OmronHostLink.Gateway.Tests.Mqtt;
 
@@ -220,7 +221,7 @@ public sealed class DurableQueueTests : IDisposable
     {
         var options = new MqttOptions { ClientId = "gw", TopicPrefix = "p", StateDirectory = _directory };
         var topics = new MqttTopics("p", "gw");
-        using (var store = new OutboundQueueStore(options, _directory, NullLogger.Instance))
+        using (var store = MqttOutboundQueue.OpenStore(options, _directory, NullLogger.Instance))
         {
             OutboundQueue queue = store.CreateQueue(options, topics, _time);
             queue.Enqueue(new OutboundMessage("p/l/0/a", Bytes("1"), Retain: true));
@@ -228,13 +229,13 @@ public sealed class DurableQueueTests : IDisposable
         }
 
         options.DurableQueue.Enabled = true;
-        using (var store = new OutboundQueueStore(options, _directory, NullLogger.Instance))
+        using (var store = MqttOutboundQueue.OpenStore(options, _directory, NullLogger.Instance))
         {
             OutboundQueue queue = store.CreateQueue(options, topics, _time);
             queue.Enqueue(new OutboundMessage("p/l/0/a", Bytes("3"), Retain: true));
         }
 
-        using (var store = new OutboundQueueStore(options, _directory, NullLogger.Instance))
+        using (var store = MqttOutboundQueue.OpenStore(options, _directory, NullLogger.Instance))
         {
             List<OutboundMessage> sent = Drain(store.CreateQueue(options, topics, _time));
             sent.Select(m => m.Topic).Should().Equal("p/status/gw/lost", "p/l/0/a");

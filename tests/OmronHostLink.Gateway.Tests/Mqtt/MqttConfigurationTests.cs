@@ -1,10 +1,11 @@
 using Microsoft.Extensions.DependencyInjection;
 using Microsoft.Extensions.Hosting;
 using MQTTnet;
-using OmronHostLink.Simulator;
-using OmronHostLink.Simulator.Hosting;
 using OmronHostLink.Gateway;
 using OmronHostLink.Gateway.Mqtt;
+using OmronHostLink.Gateway.Polling;
+using OmronHostLink.Simulator;
+using OmronHostLink.Simulator.Hosting;
 
 namespace OmronHostLink.Gateway.Tests.Mqtt;
 
@@ -158,7 +159,5 @@ public sealed class MqttConfigurationTests
             .And.NotContain("Unspecified");
     }
 
-    private static IEnumerable<string> Messages(Exception e) => e is AggregateException a
-        ? a.InnerExceptions.SelectMany(Messages).Prepend(e.Message)
-        : e.InnerException is null ? [e.Message] : Messages(e.InnerException).Prepend(e.Message);
+    private static IEnumerable<string> Messages(Exception e) => ExceptionMessages.Of(e);
 }

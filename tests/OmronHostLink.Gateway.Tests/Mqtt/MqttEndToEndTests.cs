@@ -4,8 +4,9 @@ using System.Text.Json;
 using Microsoft.Extensions.DependencyInjection;
 using Microsoft.Extensions.Hosting;
 using Microsoft.Extensions.Logging;
-using OmronHostLink.Simulator;
 using OmronHostLink.Gateway.Mqtt;
+using OmronHostLink.Gateway.Queue;
+using OmronHostLink.Simulator;
 using Xunit.Abstractions;
 
 namespace OmronHostLink.Gateway.Tests.Mqtt;

@@ -61,21 +61,9 @@ public static class MqttGatewayConfig
     public static IHost Build(Dictionary<string, string?> config, CapturingLoggerProvider logs, Action<IServiceCollection>? services = null)
         => TestGatewayHost.Build(config, logs, TimeSpan.FromSeconds(10), services);
 
-    /// <summary>Waits until <paramref name="condition"/> holds, checking every 20 ms, at most <paramref name="patience"/> (default 20 s).</summary>
-    public static async Task Eventually(Func<bool> condition, string what, CapturingLoggerProvider logs, TimeSpan? patience = null)
-    {
-        TimeSpan limit = patience ?? TimeSpan.FromSeconds(20);
-        var clock = Stopwatch.StartNew();
-        while (!condition())
-        {
-            if (clock.Elapsed > limit)
-            {
-                throw new Xunit.Sdk.XunitException($"Timed out waiting until {what}. Log:{Environment.NewLine}{logs.Dump()}");
-            }
-
-            await Task.Delay(20);
-        }
-    }
+    /// <summary>Waits until <paramref name="condition"/> holds (the shared wait, looking again at each new log entry).</summary>
+    public static Task Eventually(Func<bool> condition, string what, CapturingLoggerProvider logs, TimeSpan? patience = null)
+        => OmronHostLink.Testing.Eventually.UntilAsync(condition, what, logs, patience);
 
     private static class StateRoot
     {

@@ -198,14 +198,6 @@ public sealed class MqttSecurityTests(ITestOutputHelper output) : IAsyncLifetime
         await host.StartAsync();
     }
 
-    private sealed class AsyncHost(IHost host) : IAsyncDisposable
-    {
-        public async ValueTask DisposeAsync()
-        {
-            await host.StopAsync();
-            host.Dispose();
-        }
-    }
 
     private sealed class BrokerLog(MosquittoBroker broker, ITestOutputHelper output) : IAsyncDisposable
     {

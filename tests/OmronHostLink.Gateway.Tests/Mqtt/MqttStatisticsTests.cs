@@ -1,5 +1,6 @@
 using System.Text.Json;
 using Microsoft.Extensions.Hosting;
+using OmronHostLink.Gateway.Polling;
 using OmronHostLink.Simulator;
 using Xunit.Abstractions;
 

@@ -1,5 +1,6 @@
 using System.Text;
 using OmronHostLink.Gateway.Mqtt;
+using OmronHostLink.Gateway.Queue;
 
 namespace OmronHostLink.Gateway.Tests.Mqtt;
 

@@ -2,6 +2,7 @@ using System.Text.Json;
 using Microsoft.Extensions.Hosting;
 using OmronHostLink.Gateway;
 using OmronHostLink.Gateway.Mqtt;
+using OmronHostLink.Gateway.Polling;
 using OmronHostLink.Simulator;
 using Xunit.Abstractions;
 
@@ -170,6 +171,9 @@ public sealed class MqttWriteSafetyTests(ITestOutputHelper output) : IAsyncLifet
         Dictionary<string, string?> config = MqttGatewayConfig.Create(_simulator.Port, _broker, ClientId);
         config["Mqtt:Writes:Enabled"] = "true";
         config["Mqtt:Writes:ReplyPrefixes:0"] = "replies";
+
+        // The frames' headers tell reads (R…) from writes: the link reads by area, without MM and QQ.
+        config["HostLink:Links:plc:UseCompoundRead"] = "Off";
         MqttGatewayConfig.Group(config, "setpoint", "D500", "int16", intervalMs: 50, writable: true);
         MqttGatewayConfig.Group(config, "temperature", "D700", "float", intervalMs: 50, writable: true);
         MqttGatewayConfig.Group(config, "readonly", "D600", "int16", intervalMs: 50);
@@ -182,12 +186,4 @@ public sealed class MqttWriteSafetyTests(ITestOutputHelper output) : IAsyncLifet
         await MqttGatewayConfig.Eventually(() => _logs.WithEvent(GatewayLog.Events.LinkStarted).Count > 0, "the link polls", _logs);
     }
 
-    private sealed class AsyncHost(IHost host) : IAsyncDisposable
-    {
-        public async ValueTask DisposeAsync()
-        {
-            await host.StopAsync();
-            host.Dispose();
-        }
-    }
 }

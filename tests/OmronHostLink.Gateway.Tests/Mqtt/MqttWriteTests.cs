@@ -1,9 +1,10 @@
 using System.Text;
 using System.Text.Json;
 using Microsoft.Extensions.Hosting;
-using OmronHostLink.Simulator;
 using OmronHostLink.Gateway;
 using OmronHostLink.Gateway.Mqtt;
+using OmronHostLink.Gateway.Polling;
+using OmronHostLink.Simulator;
 using Xunit.Abstractions;
 
 namespace OmronHostLink.Gateway.Tests.Mqtt;
@@ -152,6 +153,9 @@ public sealed class MqttWriteTests(ITestOutputHelper output) : IAsyncLifetime
     {
         Dictionary<string, string?> config = MqttGatewayConfig.Create(_simulator.Port, _broker);
         config["Mqtt:Writes:Enabled"] = writes ? "true" : "false";
+
+        // The frames' headers tell reads (R…) from writes: the link reads by area, without MM and QQ.
+        config["HostLink:Links:plc:UseCompoundRead"] = "Off";
         config["Mqtt:Writes:ReplyPrefixes:0"] = "replies";
         MqttGatewayConfig.Group(config, "setpoint", "D500", "int16", intervalMs: 50, writable: true);
         MqttGatewayConfig.Group(config, "readonly", "D600", "int16", intervalMs: 50);
@@ -169,12 +173,4 @@ public sealed class MqttWriteTests(ITestOutputHelper output) : IAsyncLifetime
         }
     }
 
-    private sealed class AsyncHost(IHost host) : IAsyncDisposable
-    {
-        public async ValueTask DisposeAsync()
-        {
-            await host.StopAsync();
-            host.Dispose();
-        }
-    }
 }

@@ -1,5 +1,6 @@
 using System.Text.Json;
 using OmronHostLink.Gateway.Mqtt;
+using OmronHostLink.Gateway.Writes;
 
 namespace OmronHostLink.Gateway.Tests.Mqtt;
 

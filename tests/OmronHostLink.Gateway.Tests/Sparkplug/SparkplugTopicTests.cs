@@ -12,12 +12,12 @@ public sealed class SparkplugTopicTests
     }
 
     [Theory]
-    [InlineData("spBv1.0/Plant1/DCMD/gateway1/line1-unit03", SparkplugMessageType.DCMD, "line1-unit03")]
-    [InlineData("spBv1.0/Plant1/NCMD/gateway1", SparkplugMessageType.NCMD, null)]
-    public void Commands_are_read_back(string text, SparkplugMessageType type, string? device)
+    [InlineData("spBv1.0/Plant1/DCMD/gateway1/line1-unit03", nameof(SparkplugMessageType.DCMD), "line1-unit03")]
+    [InlineData("spBv1.0/Plant1/NCMD/gateway1", nameof(SparkplugMessageType.NCMD), null)]
+    public void Commands_are_read_back(string text, string type, string? device)
     {
         SparkplugTopic.TryParse(text, out SparkplugTopic? topic).Should().BeTrue();
-        topic!.Type.Should().Be(type);
+        topic!.Type.Should().Be(Enum.Parse<SparkplugMessageType>(type));
         topic.GroupId.Should().Be("Plant1");
         topic.EdgeNodeId.Should().Be("gateway1");
         topic.DeviceId.Should().Be(device);

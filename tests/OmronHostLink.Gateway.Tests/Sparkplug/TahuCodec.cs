@@ -7,7 +7,7 @@ namespace OmronHostLink.Gateway.Tests.Sparkplug;
 /// <summary>
 /// Eclipse Tahu's JavaScript payload library (npm <c>sparkplug-payload</c>) in a node process: the independent
 /// implementation that decodes what the gateway publishes and encodes the commands a host application sends.
-/// <c>.ci/run</c> installs node and runs <c>npm ci</c> in <c>Sparkplug/Tahu</c>.
+/// <c>./build.sh prepare</c> (which <c>./build.sh test</c> and CI run) installs node and runs <c>npm ci</c> in <c>Sparkplug/Tahu</c>.
 /// </summary>
 public sealed class TahuCodec : IDisposable
 {
@@ -21,7 +21,7 @@ public sealed class TahuCodec : IDisposable
             ?? throw new InvalidOperationException("node is not installed; the Sparkplug tests decode with Eclipse Tahu's JavaScript library. Install it (Debian: apt-get install nodejs npm) and run npm ci in " + folder + ".");
         if (!Directory.Exists(Path.Combine(folder, "node_modules", "sparkplug-payload")))
         {
-            throw new InvalidOperationException($"sparkplug-payload is not installed: run 'npm ci' in {folder} (.ci/run does).");
+            throw new InvalidOperationException($"sparkplug-payload is not installed: run 'npm ci' in {folder} (./build.sh prepare does).");
         }
 
         var start = new ProcessStartInfo(node, "codec.js")

@@ -1,6 +1,7 @@
 using System.Diagnostics;
 using System.Net;
 using Microsoft.Extensions.Hosting;
+using OmronHostLink.Gateway.Polling;
 using OmronHostLink.Simulator;
 using OmronHostLink.Simulator.Hosting;
 
@@ -103,7 +104,5 @@ public sealed class TagFileGatewayTests : IDisposable
         }
     }
 
-    private static IEnumerable<string> Messages(Exception e) => e is AggregateException a
-        ? a.InnerExceptions.SelectMany(Messages).Prepend(e.Message)
-        : e.InnerException is null ? [e.Message] : Messages(e.InnerException).Prepend(e.Message);
+    private static IEnumerable<string> Messages(Exception e) => ExceptionMessages.Of(e);
 }

@@ -126,8 +126,11 @@ public sealed class HostLinkWatcherTests
         await using InProcessLine line = InProcessLine.Start();
         using var ui = new SingleThreadContext();
         var overruns = new BlockingCollection<WatchOverrunEventArgs>();
-        using var watcher = new HostLinkWatcher(line.Client, new[] { "D100" }, TimeSpan.FromMilliseconds(50));
-        watcher.ValueChanged += (_, _) => Thread.Sleep(200);
+        var time = new Microsoft.Extensions.Time.Testing.FakeTimeProvider();
+        using var watcher = new HostLinkWatcher(line.Client, new[] { "D100" }, new WatchOptions { Interval = TimeSpan.FromMilliseconds(50), TimeProvider = time });
+
+        // The handler takes 200 ms of the watch's clock: the cycle outlasts its 50 ms interval.
+        watcher.ValueChanged += (_, _) => time.Advance(TimeSpan.FromMilliseconds(200));
         watcher.Overrun += (_, e) => overruns.Add(e);
 
         await ui.Run(watcher.Start, Limit);
@@ -149,7 +152,14 @@ public sealed class HostLinkWatcherTests
         await ui.Run(watcher.Stop, Limit);
         watcher.IsRunning.Should().BeFalse();
         line.Plc.WriteWords("D100", new ushort[] { 9 });
-        await Task.Delay(300);
+
+        // Several cycles' worth of proof that time passed: transactions on the same link, each queued behind any read
+        // a watch still running would make, then the UI thread emptied of what was posted to it.
+        for (int i = 0; i < 3; i++)
+        {
+            await line.Client.ReadWordsAsync("D100", 1);
+        }
+
         await ui.Run(() => { }, Limit);
         seen.Should().BeEmpty("nothing is raised after Stop");
 

@@ -51,8 +51,8 @@ public sealed class WatchDemotionTests
         int sent = line.FramesSent;
         pending = watch.MoveNextAsync();
         await clock.NextTimerAsync();
+        // The watch waits on this clock's timer (armed, above): until it fires, nothing can be sent.
         clock.Advance(Period - TimeSpan.FromTicks(1));
-        await Task.Delay(50);
         pending.IsCompleted.Should().BeFalse();
         line.FramesSent.Should().Be(sent, "a demoted unit is not read during its demotion period");
         clock.Advance(TimeSpan.FromTicks(1));

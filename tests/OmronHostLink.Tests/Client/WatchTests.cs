@@ -255,11 +255,7 @@ public sealed class WatchTests
         (await Next(watch)).IsInitial.Should().BeTrue();
 
         ValueTask<bool> pending = watch.MoveNextAsync();
-        using var patience = new CancellationTokenSource(Patience);
-        while (line.FramesSent < 20)
-        {
-            await Task.Delay(10, patience.Token);
-        }
+        await Eventually.UntilAsync(() => line.FramesSent >= 20, "the watch has polled 20 times without a change", patience: Patience);
 
         pending.IsCompleted.Should().BeFalse();
         line.Plc.WriteWord(PlcArea.Dm, 100, 1);

@@ -9,7 +9,7 @@ namespace OmronHostLink.Tests.Documentation;
 /// </summary>
 public sealed partial class DocumentationCodeTests
 {
-    private static readonly string Root = FindRoot();
+    private static readonly string Root = RepositoryRoot.Path;
 
     private static readonly string[] CompiledFolders =
     [
@@ -114,18 +114,6 @@ public sealed partial class DocumentationCodeTests
         return blocks;
     }
 
-    private static string FindRoot()
-    {
-        for (DirectoryInfo? d = new(AppContext.BaseDirectory); d is not null; d = d.Parent)
-        {
-            if (File.Exists(Path.Combine(d.FullName, "OmronHostLink.sln")))
-            {
-                return d.FullName;
-            }
-        }
-
-        throw new InvalidOperationException("The repository root (OmronHostLink.sln) is not above " + AppContext.BaseDirectory);
-    }
 
     [GeneratedRegex(@"^\s*```(\w*)\s*$")]
     private static partial Regex Fence();

@@ -46,9 +46,9 @@ public class FinsCommandRoundTripTests
         };
         yield return new object[] { "0402", (Func<Random, FinsCommand>)(r => r.Next(2) == 0 ? new StopCommand(null) : new StopCommand((ushort)r.Next(65536))) };
         yield return new object[] { "0501", (Func<Random, FinsCommand>)(r => r.Next(2) == 0 ? new CpuUnitDataReadCommand() : new CpuUnitDataReadCommand((byte)r.Next(256))) };
-        yield return new object[] { "0601", (Func<Random, FinsCommand>)(_ => new CpuUnitStatusReadCommand()) };
+        yield return new object[] { "0601", (Func<Random, FinsCommand>)(_ => FinsCommands.CpuUnitStatusReadCommand) };
         yield return new object[] { "0620", (Func<Random, FinsCommand>)(r => new CycleTimeReadCommand(r.Next(2) == 0)) };
-        yield return new object[] { "0701", (Func<Random, FinsCommand>)(_ => new ClockReadCommand()) };
+        yield return new object[] { "0701", (Func<Random, FinsCommand>)(_ => FinsCommands.ClockReadCommand) };
         yield return new object[]
         {
             "0702",
@@ -70,7 +70,7 @@ public class FinsCommandRoundTripTests
                     BitAddress(r)))
                 .ToArray())),
         };
-        yield return new object[] { "2302", (Func<Random, FinsCommand>)(_ => new ForcedSetResetCancelCommand()) };
+        yield return new object[] { "2302", (Func<Random, FinsCommand>)(_ => FinsCommands.ForcedCancelCommand) };
         yield return new object[]
         {
             "raw",

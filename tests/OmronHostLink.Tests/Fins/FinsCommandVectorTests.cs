@@ -148,9 +148,9 @@ public class FinsCommandVectorTests
     [Fact]
     public void Parameterless_commands()
     {
-        Parse("f_0601_cmd", out _).Should().BeOfType<CpuUnitStatusReadCommand>();
-        Parse("f_0701_cmd", out _).Should().BeOfType<ClockReadCommand>();
-        Parse("f_2302_cmd", out _).Should().BeOfType<ForcedSetResetCancelCommand>();
+        Parse("f_0601_cmd", out _).Row.Should().BeSameAs(FinsCommands.CpuUnitStatusRead);
+        Parse("f_0701_cmd", out _).Row.Should().BeSameAs(FinsCommands.ClockRead);
+        Parse("f_2302_cmd", out _).Row.Should().BeSameAs(FinsCommands.ForcedCancel);
     }
 
     [Fact]

@@ -63,9 +63,9 @@ public class FinsValidationTests
         dna.Should().Throw<ArgumentOutOfRangeException>();
         var gct = () => FinsHeader.Network(0, 0, 0, 0, 0, 0, gct: 8);
         gct.Should().Throw<ArgumentOutOfRangeException>();
-        var unit = () => FinsMessage.EncodeCommandFrame(32, FinsHeader.Direct(), new ClockReadCommand());
+        var unit = () => FinsMessage.EncodeCommandFrame(32, FinsHeader.Direct(), FinsCommands.ClockReadCommand);
         unit.Should().Throw<ArgumentOutOfRangeException>();
-        var response = () => FinsMessage.EncodeCommandFrame(0, FinsHeader.Direct().ToResponseHeader(), new ClockReadCommand());
+        var response = () => FinsMessage.EncodeCommandFrame(0, FinsHeader.Direct().ToResponseHeader(), FinsCommands.ClockReadCommand);
         response.Should().Throw<ArgumentException>();
     }
 

@@ -69,12 +69,13 @@ internal sealed class RuntimeStalls : IAsyncDisposable
     private async Task RunAsync()
     {
         long periodTicks = Stopwatch.Frequency * Period.Ticks / TimeSpan.TicksPerSecond;
-        while (!_stop.IsCancellationRequested)
+        using var tick = new PeriodicTimer(Period);
+        long due = Stopwatch.GetTimestamp() + periodTicks;
+        while (await tick.WaitForNextTickAsync(_stop.Token).ConfigureAwait(false))
         {
-            long due = Stopwatch.GetTimestamp() + periodTicks;
-            await Task.Delay(Period, _stop.Token).ConfigureAwait(false);
             long now = Stopwatch.GetTimestamp();
             long late = now - due;
+            due = now + periodTicks;
             if (late > Granularity)
             {
                 lock (_gate)

@@ -79,12 +79,5 @@ public sealed class LinkStateTests
     });
 
     /// <summary>Waits for the scripted PLC (which runs on the real clock) to have seen something.</summary>
-    private static async Task WaitUntil(Func<bool> condition)
-    {
-        using var patience = new CancellationTokenSource(TimeSpan.FromSeconds(10));
-        while (!condition())
-        {
-            await Task.Delay(1, patience.Token);
-        }
-    }
+    private static Task WaitUntil(Func<bool> condition) => Eventually.UntilAsync(condition, "the scripted PLC has seen it");
 }

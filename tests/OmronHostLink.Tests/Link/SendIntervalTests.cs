@@ -1,4 +1,3 @@
-using Microsoft.Extensions.Time.Testing;
 using OmronHostLink.Simulator.Hosting;
 using OmronHostLink.Tests.Infrastructure;
 using OmronHostLink.Transports;
@@ -7,7 +6,8 @@ namespace OmronHostLink.Tests.Link;
 
 /// <summary>
 /// The send interval: the next command waits until the gap since the end of the last exchange is the longer of the
-/// link's and its unit's. On a fake clock, so "not yet" and "now" are exact.
+/// link's and its unit's. On a fake clock that reports the timers the link arms: a command is "not yet" sent once the
+/// link is waiting on the clock for exactly the gap, and nothing can move until the test advances the clock.
 /// </summary>
 public sealed class SendIntervalTests
 {
@@ -15,9 +15,9 @@ public sealed class SendIntervalTests
 
     private static Task OffContext(Func<Task> test) => Task.Run(test);
 
-    private static (HostLinkClient Client, ScriptedPlc Plc, FakeTimeProvider Time) Line(TimeSpan sendInterval, Dictionary<int, TimeSpan>? units = null)
+    private static (HostLinkClient Client, ScriptedPlc Plc, TimerRecordingTimeProvider Time) Line(TimeSpan sendInterval, Dictionary<int, TimeSpan>? units = null)
     {
-        var time = new FakeTimeProvider();
+        var time = new TimerRecordingTimeProvider();
         (Stream host, Stream plc) = InMemoryLink.CreatePair();
         var options = new HostLinkClientOptions
         {
@@ -37,12 +37,17 @@ public sealed class SendIntervalTests
 
     private static async Task WaitForFrames(ScriptedPlc plc, int count)
     {
-        for (int i = 0; i < 500 && plc.Received.Count < count; i++)
-        {
-            await Task.Delay(10);
-        }
-
+        await Eventually.UntilAsync(() => plc.Received.Count >= count, $"the PLC has received {count} frames");
         plc.Received.Count.Should().Be(count);
+    }
+
+    /// <summary>Starts a probe and waits until the link waits on the clock before sending it; returns the wait armed.</summary>
+    private static async Task<(Task<TimeSpan?> Probe, TimeSpan Wait)> ProbeWaitingAsync(HostLinkUnit unit, TimerRecordingTimeProvider time)
+    {
+        int armed = time.Armed.Count;
+        Task<TimeSpan?> probe = unit.ProbeAsync();
+        await time.ArmedAsync(armed + 1);
+        return (probe, time.Armed[armed]);
     }
 
     [Fact]
@@ -55,12 +60,11 @@ public sealed class SendIntervalTests
         (await client.ProbeAsync()).Should().NotBeNull("the first command has no exchange before it to keep a gap from");
         await WaitForFrames(plc, 1);
 
-        Task<TimeSpan?> second = client.ProbeAsync();
-        await Task.Delay(200);
-        plc.Received.Count.Should().Be(1, "the gap since the first exchange ended is not yet 40 ms");
+        (Task<TimeSpan?> second, TimeSpan wait) = await ProbeWaitingAsync(client, time);
+        wait.Should().Be(TimeSpan.FromMilliseconds(40), "the first timer the link arms is the whole gap, before anything is sent");
+        plc.Received.Count.Should().Be(1, "the link waits on the clock for the gap since the first exchange ended");
 
         time.Advance(TimeSpan.FromMilliseconds(39));
-        await Task.Delay(100);
         plc.Received.Count.Should().Be(1, "39 ms is still short of the interval");
 
         time.Advance(TimeSpan.FromMilliseconds(1));
@@ -78,17 +82,17 @@ public sealed class SendIntervalTests
         (await client.ProbeAsync()).Should().NotBeNull();
         await WaitForFrames(plc, 1);
 
-        Task<TimeSpan?> toUnit3 = client.Unit(3).ProbeAsync();
+        (Task<TimeSpan?> toUnit3, TimeSpan wait3) = await ProbeWaitingAsync(client.Unit(3), time);
+        wait3.Should().Be(TimeSpan.FromMilliseconds(50), "unit 3 needs 50 ms after the last exchange");
         time.Advance(TimeSpan.FromMilliseconds(49));
-        await Task.Delay(150);
         plc.Received.Count.Should().Be(1, "unit 3 needs 50 ms after the last exchange");
         time.Advance(TimeSpan.FromMilliseconds(1));
         await WaitForFrames(plc, 2);
         (await toUnit3).Should().NotBeNull();
 
-        Task<TimeSpan?> toUnit0 = client.ProbeAsync();
+        (Task<TimeSpan?> toUnit0, TimeSpan wait0) = await ProbeWaitingAsync(client, time);
+        wait0.Should().Be(TimeSpan.FromMilliseconds(10), "unit 0 keeps the link's 10 ms");
         time.Advance(TimeSpan.FromMilliseconds(9));
-        await Task.Delay(150);
         plc.Received.Count.Should().Be(2, "unit 0 keeps the link's 10 ms");
         time.Advance(TimeSpan.FromMilliseconds(1));
         await WaitForFrames(plc, 3);

@@ -87,7 +87,7 @@ public sealed class TelemetryAndTransportTests
     [Fact]
     public async Task Frames_are_logged_at_trace_and_transactions_at_debug()
     {
-        var provider = new CapturingLoggerProvider();
+        using var provider = new CapturingLoggerProvider();
         using var factory = LoggerFactory.Create(b => b.SetMinimumLevel(LogLevel.Trace).AddProvider(provider));
         var plc = new VirtualPlc();
         (Stream host, Stream plcEnd) = InMemoryLink.CreatePair();
@@ -117,27 +117,5 @@ public sealed class TelemetryAndTransportTests
         d.TryAdd("hostlink.unit", null);
         d.TryAdd("error.type", null);
         return d;
-    }
-
-    private sealed class CapturingLoggerProvider : ILoggerProvider
-    {
-        public ConcurrentQueue<(LogLevel Level, string Message)> Entries { get; } = new();
-
-        public ILogger CreateLogger(string categoryName) => new Logger(this);
-
-        public void Dispose()
-        {
-        }
-
-        private sealed class Logger(CapturingLoggerProvider owner) : ILogger
-        {
-            public IDisposable? BeginScope<TState>(TState state)
-                where TState : notnull => null;
-
-            public bool IsEnabled(LogLevel logLevel) => true;
-
-            public void Log<TState>(LogLevel logLevel, EventId eventId, TState state, Exception? exception, Func<TState, Exception?, string> formatter)
-                => owner.Entries.Enqueue((logLevel, formatter(state, exception)));
-        }
     }
 }

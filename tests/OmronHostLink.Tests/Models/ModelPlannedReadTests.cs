@@ -22,7 +22,7 @@ public sealed class ModelPlannedReadTests
             plc.WriteWord(PlcArea.Dm, i * 20, (ushort)(i + 1));
         }
 
-        await using var line = EmulatedLine.Start(plc, "CP2E", configure: o => o.UseCompoundRead = true);
+        await using var line = EmulatedLine.Start(plc, "CP2E", configure: o => o.UseCompoundRead = CompoundReadMode.On);
 
         PlcTagValue[] values = await line.Client.ReadTagsAsync(Scattered);
 
@@ -36,7 +36,7 @@ public sealed class ModelPlannedReadTests
         // CQM1/CPM1 manual p388: the CPM1A has QQ.
         var plc = new VirtualPlc(new VirtualPlcOptions { Model = "CPM1A" });
         plc.WriteWord(PlcArea.Dm, 780, 0x0780);
-        await using var line = EmulatedLine.Start(plc, "CPM1A", configure: o => o.UseCompoundRead = true);
+        await using var line = EmulatedLine.Start(plc, "CPM1A", configure: o => o.UseCompoundRead = CompoundReadMode.On);
 
         PlcTagValue[] values = await line.Client.ReadTagsAsync(Scattered);
 

@@ -23,7 +23,7 @@ public sealed class CompoundPlanTests : IAsyncDisposable
     {
         (Stream host, Stream plcEnd) = InMemoryLink.CreatePair();
         _session = _plc.RunAsync(plcEnd, _stop.Token);
-        _client = HostLinkClient.ForStream(host, new HostLinkClientOptions { LineTiming = new LineTiming(115200, 11), TurnaroundAllowance = InProcessLine.InMemoryAllowance, UseCompoundRead = true });
+        _client = HostLinkClient.ForStream(host, new HostLinkClientOptions { LineTiming = new LineTiming(115200, 11), TurnaroundAllowance = InProcessLine.InMemoryAllowance, UseCompoundRead = CompoundReadMode.On });
         _client.FrameObserver = (sent, frame) =>
         {
             if (sent)
@@ -46,8 +46,8 @@ public sealed class CompoundPlanTests : IAsyncDisposable
     public void Scattered_words_go_into_one_QQIR_per_unit_where_it_is_cheaper()
     {
         PlcTag[] tags = [.. Isolated(20), .. Isolated(10, unit: 1), new PlcTag("T5", PlcValueType.Word, null)];
-        ReadPlan areas = new ReadPlanner { UseCompoundRead = false }.Plan(tags);
-        ReadPlan plan = new ReadPlanner().Plan(tags);
+        ReadPlan areas = new ReadPlanner { UseCompoundRead = CompoundReadMode.Off }.Plan(tags);
+        ReadPlan plan = new ReadPlanner { UseCompoundRead = CompoundReadMode.On }.Plan(tags);
 
         // The timer's PV is one more item of unit 0's QQIR (its flag and PV: five characters instead of an RC read).
         plan.Reads.Select(r => (r.Kind, r.Unit, r.Count)).Should().Equal((PlannedReadKind.CModeCompound, 0, 21), (PlannedReadKind.CModeCompound, 1, 10));
@@ -69,7 +69,7 @@ public sealed class CompoundPlanTests : IAsyncDisposable
             PlcTag.Parse("D9000.04:bit"), // DM is read by words
         ];
 
-        PlannedRead qq = new ReadPlanner().Plan(tags).Reads.Should().ContainSingle().Which;
+        PlannedRead qq = new ReadPlanner { UseCompoundRead = CompoundReadMode.On }.Plan(tags).Reads.Should().ContainSingle().Which;
 
         qq.Kind.Should().Be(PlannedReadKind.CModeCompound);
         qq.Items.Where(a => a.IsBit).Should().BeEquivalentTo([PlcAddress.Parse("CIO100.03"), PlcAddress.Parse("H200.15")]);
@@ -94,7 +94,7 @@ public sealed class CompoundPlanTests : IAsyncDisposable
         ];
 
         PlcTagValue[] byQq = await _client.ReadTagsAsync(tags);
-        PlcTagValue[] byArea = await _client.ReadTagsAsync(new ReadPlanner(HostLinkCommandSet.CMode, _client.LineTiming) { UseCompoundRead = false }.Plan(tags));
+        PlcTagValue[] byArea = await _client.ReadTagsAsync(new ReadPlanner(HostLinkCommandSet.CMode, _client.LineTiming) { UseCompoundRead = CompoundReadMode.Off }.Plan(tags));
 
         Sent("@00QQIR").Should().Be(1);
         byQq.Select(v => v.Value).Should().Equal(byArea.Select(v => v.Value));
@@ -105,15 +105,15 @@ public sealed class CompoundPlanTests : IAsyncDisposable
     public void A_dense_range_keeps_its_area_read_and_the_option_turns_QQ_off()
     {
         PlcTag[] dense = Enumerable.Range(0, 30).Select(i => new PlcTag($"D{i}", PlcValueType.Word)).ToArray();
-        new ReadPlanner().Plan(dense).Reads.Should().ContainSingle().Which.Kind.Should().Be(PlannedReadKind.CModeArea);
-        new ReadPlanner { UseCompoundRead = false }.Plan(Isolated(20)).Reads.Should().OnlyContain(r => r.Kind == PlannedReadKind.CModeArea);
+        new ReadPlanner { UseCompoundRead = CompoundReadMode.On }.Plan(dense).Reads.Should().ContainSingle().Which.Kind.Should().Be(PlannedReadKind.CModeArea);
+        new ReadPlanner { UseCompoundRead = CompoundReadMode.Off }.Plan(Isolated(20)).Reads.Should().OnlyContain(r => r.Kind == PlannedReadKind.CModeArea);
         new ReadPlanner(HostLinkCommandSet.Fins).Plan(Isolated(20)).Reads.Should().NotContain(r => r.Kind == PlannedReadKind.CModeCompound);
     }
 
     [Fact]
     public void Beyond_128_words_the_dearest_go_to_QQ_and_the_rest_to_area_reads()
     {
-        ReadPlan plan = new ReadPlanner().Plan(Isolated(150, step: 60));
+        ReadPlan plan = new ReadPlanner { UseCompoundRead = CompoundReadMode.On }.Plan(Isolated(150, step: 60));
         plan.Reads.Should().ContainSingle(r => r.Kind == PlannedReadKind.CModeCompound).Which.Count.Should().Be(128);
         plan.Reads.Where(r => r.Kind == PlannedReadKind.CModeArea).Sum(r => r.Count).Should().BeGreaterThanOrEqualTo(22);
     }
@@ -124,7 +124,7 @@ public sealed class CompoundPlanTests : IAsyncDisposable
         PlcTag[] tags = [.. Isolated(40), .. Isolated(15, unit: 1), PlcTag.Parse("D300:int32")];
         PlcTagValue[] first = await _client.ReadTagsAsync(tags);
         PlcTagValue[] second = await _client.ReadTagsAsync(tags);
-        PlcTagValue[] byArea = await _client.ReadTagsAsync(new ReadPlanner(HostLinkCommandSet.CMode, _client.LineTiming) { UseCompoundRead = false }.Plan(tags));
+        PlcTagValue[] byArea = await _client.ReadTagsAsync(new ReadPlanner(HostLinkCommandSet.CMode, _client.LineTiming) { UseCompoundRead = CompoundReadMode.Off }.Plan(tags));
 
         first.Select(v => v.Value).Should().Equal(byArea.Select(v => v.Value));
         second.Select(v => v.Value).Should().Equal(byArea.Select(v => v.Value));
@@ -167,7 +167,7 @@ public sealed class CompoundPlanTests : IAsyncDisposable
     {
         PlcTag[] a = Isolated(20);
         PlcTag[] b = [new PlcTag("D7001", PlcValueType.Word), new PlcTag("D8001", PlcValueType.Word)];
-        new ReadPlanner().Plan(b).Reads.Should().ContainSingle().Which.Kind.Should().Be(PlannedReadKind.CModeCompound);
+        new ReadPlanner { UseCompoundRead = CompoundReadMode.On }.Plan(b).Reads.Should().ContainSingle().Which.Kind.Should().Be(PlannedReadKind.CModeCompound);
 
         await _client.ReadTagsAsync(a);
         (await _client.ReadTagsAsync(b)).Select(v => v.Value).Should().Equal((ushort)(7001 * 7), (ushort)(8001 * 7));

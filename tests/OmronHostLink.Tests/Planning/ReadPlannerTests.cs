@@ -7,7 +7,7 @@ namespace OmronHostLink.Tests.Planning;
 public class ReadPlannerTests
 {
     // Area-read planning; the compound read (QQ) on top of it is tested in CompoundPlanTests.
-    private static readonly ReadPlanner CMode = new(HostLinkCommandSet.CMode) { UseCompoundRead = false };
+    private static readonly ReadPlanner CMode = new(HostLinkCommandSet.CMode) { UseCompoundRead = CompoundReadMode.Off };
     private static readonly ReadPlanner Fins = new(HostLinkCommandSet.Fins);
 
     private static PlcTag[] Tags(params string[] addresses) => addresses.Select(a => new PlcTag(a)).ToArray();
@@ -60,7 +60,7 @@ public class ReadPlannerTests
     [Fact]
     public void A_turnaround_makes_commands_dearer_so_larger_gaps_are_merged()
     {
-        var slow = new ReadPlanner(HostLinkCommandSet.CMode, LineTiming.Default, TimeSpan.FromMilliseconds(20)) { UseCompoundRead = false };
+        var slow = new ReadPlanner(HostLinkCommandSet.CMode, LineTiming.Default, TimeSpan.FromMilliseconds(20)) { UseCompoundRead = CompoundReadMode.Off };
         slow.Plan(Tags("D0", "D8")).Reads.Should().ContainSingle();
         slow.Plan(Tags("D0", "D30")).Reads.Should().HaveCount(2);
     }
@@ -240,7 +240,7 @@ public class ReadPlannerTests
             foreach (ReadPlanner planner in new[] { CMode, Fins })
             {
                 ReadPlan plan = planner.Plan(tags);
-                ReadPlan naive = new ReadPlanner(planner.CommandSet, useMultipleRead: false) { UseCompoundRead = false }.Plan(tags);
+                ReadPlan naive = new ReadPlanner(planner.CommandSet, useMultipleRead: false) { UseCompoundRead = CompoundReadMode.Off }.Plan(tags);
                 plan.Characters.Should().BeLessThanOrEqualTo(tags.Sum(t => planner.CommandSet == HostLinkCommandSet.CMode
                     ? ReadPlanner.CModeReadCharacters(t.Address.Area, t.WordCount, out _)
                     : ReadPlanner.FinsReadCharacters(t.WordCount)));

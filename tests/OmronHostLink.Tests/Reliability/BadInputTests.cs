@@ -122,7 +122,8 @@ public sealed class BadInputTests
 
         public override async ValueTask<int> ReadAsync(Memory<byte> buffer, CancellationToken cancellationToken = default)
         {
-            await Task.Delay(Timeout.Infinite, cancellationToken);
+            // Nothing ever arrives: the read ends only when it is cancelled.
+            await new TaskCompletionSource().Task.WaitAsync(cancellationToken);
             return 0;
         }
 

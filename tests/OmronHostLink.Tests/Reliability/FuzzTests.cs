@@ -2,6 +2,7 @@ using System.Buffers;
 using System.Diagnostics;
 using System.Globalization;
 using System.Text;
+using OmronHostLink.Link;
 using OmronHostLink.Protocol;
 using OmronHostLink.Protocol.CMode;
 using OmronHostLink.Protocol.Fins;
@@ -131,11 +132,22 @@ public sealed class FuzzTests(ITestOutputHelper output)
             e.Should().BeOfType<HostLinkTimeoutException>();
         }
 
-        // Between transactions nobody reads the pipe: the pump must stop at the pipe's pause threshold, not buffer the flood.
-        await Task.Delay(300);
-        long first = flood.Served;
-        await Task.Delay(300);
-        flood.Served.Should().Be(first, "the pump is held back by the bounded pipe (64 KiB) while nobody reads");
+        // Between transactions nobody reads the buffer: the pump must stop at its pause threshold, not buffer the flood.
+        // The flood answers each read after a thread-pool hop, so rounds of the thread pool are what a pump needs to go
+        // on: once the count has held still for a round of hops, it must hold still for 500 more.
+        long first;
+        int tries = 0;
+        do
+        {
+            (++tries).Should().BeLessThan(500, "a bounded pump stops");
+            first = flood.Served;
+            await ThreadPoolRounds(20);
+        }
+        while (flood.Served != first);
+
+        await ThreadPoolRounds(500);
+        flood.Served.Should().Be(first, "the pump is held back by the bounded buffer (64 KiB) while nobody reads");
+        flood.Served.Should().BeGreaterThanOrEqualTo(FrameChannel.PauseThreshold, "the pump ran until the buffer reached its bound");
         output.WriteLine($"flood with '@' {withAt}: {e.GetType().Name}; the pump stopped after {first} bytes served");
     }
 
@@ -508,6 +520,15 @@ public sealed class FuzzTests(ITestOutputHelper output)
     }
 
     /// <summary>A stream that never ends: every read returns a full buffer of one byte value; writes go to <see cref="Stream.Null"/>.</summary>
+    /// <summary>Hops to the thread pool <paramref name="rounds"/> times: each hop queues behind the work already there.</summary>
+    private static async Task ThreadPoolRounds(int rounds)
+    {
+        for (int i = 0; i < rounds; i++)
+        {
+            await Task.Run(static () => { });
+        }
+    }
+
     private sealed class FloodStream(byte value) : PassThroughStream(Null)
     {
         private long _served;

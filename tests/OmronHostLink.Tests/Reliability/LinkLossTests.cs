@@ -81,7 +81,6 @@ public sealed class LinkLossTests
             await ReadLineAsync(plcEnd).WaitAsync(TimeSpan.FromSeconds(5));
             await plcEnd.WriteAsync(Encoding.ASCII.GetBytes("@00RD0012"));
             await plcEnd.FlushAsync();
-            await Task.Delay(50);
             await pty.CloseAsync();
 
             var e = await FluentActions.Awaiting(() => call).Should().ThrowAsync<HostLinkConnectionException>();

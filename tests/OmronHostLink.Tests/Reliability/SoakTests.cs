@@ -95,9 +95,17 @@ public sealed class SoakTests(ITestOutputHelper output)
             await Task.WhenAll(callers.Select(c => Task.Run(() => c.RunAsync(() => Interlocked.Increment(ref issued) <= target, stop.Token))));
             TimeSpan faultPhase = clock.Elapsed;
 
-            // Phase 2: faults stop. Answers already scheduled late are still on their way; let them land first.
+            // Phase 2: faults stop. Answers already scheduled late are still on their way: each link's session answers in
+            // order, so a presence probe answered on every link (after as many tries as it takes) lands after them.
             faults.Drop = faults.Corrupt = faults.Noise = faults.Truncate = faults.Late = 0;
-            await Task.Delay(LateBy * 3);
+            foreach (HostLinkClient c in clients)
+            {
+                for (int tries = 0; await c.ProbeAsync(Slack) is null; tries++)
+                {
+                    tries.Should().BeLessThan(20, "a link answers once its late answers have landed");
+                }
+            }
+
             long faultsBefore = plc.FaultCounters.Total;
             stats.CheckBounds();
             var recovery = new Stats(stalls);
@@ -108,7 +116,6 @@ public sealed class SoakTests(ITestOutputHelper output)
             }
 
             plc.FaultCounters.Total.Should().Be(faultsBefore, "no fault is injected after they are switched off");
-            await Task.Delay(50);
             recovery.CheckBounds();
 
             // Phase 3: every write reported successful is in the simulator's memory.

@@ -22,11 +22,15 @@ public sealed class SerialTransportTests
         return buffer;
     }
 
-    private static async Task AssertPendingAsync(Task task)
+    /// <summary>
+    /// The read is pending in the port's I/O loop: that loop (one per port, reads and writes alike) has since carried out
+    /// a write queued after the read — one byte, read at the peer — and the read still waits.
+    /// </summary>
+    private static async Task AssertPendingAsync(Task task, Stream port, Stream peer)
     {
-        // Give the read time to reach the port's I/O loop; it must still be waiting.
-        await Task.Delay(100);
-        task.IsCompleted.Should().BeFalse("nothing has been sent yet");
+        await port.WriteAsync("."u8.ToArray());
+        (await ReadExactlyAsync(peer, 1)).Should().Equal((byte)'.');
+        task.IsCompleted.Should().BeFalse("nothing has been sent to it yet");
     }
 
     [Fact]
@@ -148,7 +152,7 @@ public sealed class SerialTransportTests
 
         using var cts = new CancellationTokenSource();
         Task<int> read = b.ReadAsync(new byte[16], cts.Token).AsTask();
-        await AssertPendingAsync(read);
+        await AssertPendingAsync(read, b, a);
 
         var clock = Stopwatch.StartNew();
         cts.Cancel();
@@ -195,8 +199,9 @@ public sealed class SerialTransportTests
     {
         await using var pair = await SocatPtyPair.StartAsync();
         Stream a = await OpenPortAsync(pair.PathA);
+        using Stream b = await OpenPortAsync(pair.PathB);
         Task<int> read = a.ReadAsync(new byte[16]).AsTask();
-        await AssertPendingAsync(read);
+        await AssertPendingAsync(read, a, b);
 
         var clock = Stopwatch.StartNew();
         a.Dispose();
@@ -211,9 +216,10 @@ public sealed class SerialTransportTests
         await using var pair = await SocatPtyPair.StartAsync();
         var transport = new SerialTransport(new SerialLineSettings { PortName = pair.PathA });
         Stream a = await transport.OpenAsync(CancellationToken.None);
+        using Stream b = await OpenPortAsync(pair.PathB);
         using var cts = new CancellationTokenSource();
         Task<int> read = a.ReadAsync(new byte[16], cts.Token).AsTask();
-        await AssertPendingAsync(read);
+        await AssertPendingAsync(read, a, b);
 
         var clock = Stopwatch.StartNew();
         await transport.CloseAsync();
@@ -242,8 +248,9 @@ public sealed class SerialTransportTests
     {
         await using var pair = await SocatPtyPair.StartAsync();
         using Stream a = await OpenPortAsync(pair.PathA);
+        using Stream b = await OpenPortAsync(pair.PathB);
         Task<int> read = a.ReadAsync(new byte[16]).AsTask();
-        await AssertPendingAsync(read);
+        await AssertPendingAsync(read, a, b);
 
         await pair.CloseAsync();
 
@@ -277,7 +284,6 @@ public sealed class SerialTransportTests
 
         using var cts = new CancellationTokenSource();
         Task write = a.WriteAsync(new byte[4 * 1024 * 1024], cts.Token).AsTask();
-        await Task.Delay(200);
         write.IsCompleted.Should().BeFalse("4 MB cannot fit in the pty buffers");
 
         var clock = Stopwatch.StartNew();

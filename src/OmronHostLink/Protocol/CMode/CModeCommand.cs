@@ -53,7 +53,7 @@ internal abstract class CModeCommand
     /// MF 01) reads the same as an answer carrying only an end code.
     /// </summary>
     internal static bool AnswerCanEqualCommand(string header, int textLength)
-        => header == CModeHeaders.Test || textLength == CModeResponse.EndCodeLength;
+        => header == CModeCommands.Test.Header || textLength == CModeResponse.EndCodeLength;
 
     /// <summary>Length of the unframed message: prefix and text.</summary>
     public int MessageLength => PrefixLength + TextLength;

@@ -12,7 +12,7 @@ internal static class CModeCommands
 {
     /// <summary>MS: STATUS READ: end code, status word (4) and the FAL/FALS message (16) when one is active.</summary>
     public static CModeCommandRow StatusRead { get; } = Simple(
-        CModeHeaders.StatusRead,
+        "MS",
         "STATUS READ",
         CommandEffect.ReadOnly,
         CModeResponse.EndCodeLength + 4 + 16,
@@ -41,7 +41,7 @@ internal static class CModeCommands
 
     /// <summary>MM: PLC MODEL READ: end code and the model code (2).</summary>
     public static CModeCommandRow ModelRead { get; } = Simple(
-        CModeHeaders.ModelRead,
+        "MM",
         "PLC MODEL READ",
         CommandEffect.ReadOnly,
         CModeResponse.EndCodeLength + 2,
@@ -60,7 +60,7 @@ internal static class CModeCommands
 
     /// <summary>KC: FORCED SET/RESET CANCEL (cancels every forced bit).</summary>
     public static CModeCommandRow ForcedCancel { get; } = Simple(
-        CModeHeaders.ForcedSetResetCancel,
+        "KC",
         "FORCED SET/RESET CANCEL",
         CommandEffect.NotRepeatable,
         CModeResponse.EndCodeLength,
@@ -77,7 +77,25 @@ internal static class CModeCommands
         describeAnswer: null);
 
     /// <summary>XZ: ABORT. Stops the Host Link exchange in progress; the PLC sends no answer.</summary>
-    public static CModeCommandRow Abort { get; } = Simple(CModeHeaders.Abort, "ABORT", CommandEffect.NotRepeatable, 0, static _ => null, describeAnswer: null, expectsAnswer: false);
+    public static CModeCommandRow Abort { get; } = Simple("XZ", "ABORT", CommandEffect.NotRepeatable, 0, static _ => null, describeAnswer: null, expectsAnswer: false);
+
+    /// <summary>TS: TEST, the row of <see cref="TestCommand"/>; the link's presence probes and resynchronisation fences are TS.</summary>
+    public static CModeCommandRow Test => TestCommand.CommandRow;
+
+    /// <summary>WG: TC STATUS WRITE, which the older C-series list (C200HX, CQM1H); named only: CS/CJ have no WG.</summary>
+    public static CModeCommandRow TcStatusWrite { get; } = NamedOnly("WG", "TC STATUS WRITE");
+
+    /// <summary><c>**</c>: INITIALIZE (<c>@**</c>, no unit, no FCS, no answer).</summary>
+    public static CModeCommandRow Initialize { get; } = NamedOnly("**", "INITIALIZE");
+
+    /// <summary>IC: the answer to a header the PLC does not know (no end code).</summary>
+    public static CModeCommandRow UndefinedCommand { get; } = new("IC", "UNDEFINED COMMAND (response)", CommandEffect.ReadOnly, 0) { IsCommand = false, AnswerHasEndCode = false };
+
+    /// <summary>EX: TXD sent by the PLC in Host Link mode (no end code).</summary>
+    public static CModeCommandRow Txd { get; } = new("EX", "TXD (PLC to host)", CommandEffect.ReadOnly, 122) { IsCommand = false, AnswerHasEndCode = false };
+
+    /// <summary>FA: a FINS command or answer carried in a Host Link frame (executed by the FINS table's rows).</summary>
+    public static CModeCommandRow Fins { get; } = NamedOnly("FA", "FINS COMMAND OVER HOST LINK");
 
     /// <summary>The MS command.</summary>
     public static CModeCommand StatusReadCommand { get; } = new SimpleCommand(StatusRead);
@@ -118,10 +136,10 @@ internal static class CModeCommands
         rows.Add(CompoundCommands.RegisterRow);
         rows.Add(CompoundCommands.ReadRow);
         rows.Add(Abort);
-        rows.Add(NamedOnly(CModeHeaders.Initialize, "INITIALIZE") );
-        rows.Add(new CModeCommandRow(CModeHeaders.UndefinedCommand, "UNDEFINED COMMAND (response)", CommandEffect.ReadOnly, 0) { IsCommand = false, AnswerHasEndCode = false });
-        rows.Add(new CModeCommandRow(CModeHeaders.Txd, "TXD (PLC to host)", CommandEffect.ReadOnly, 122) { IsCommand = false, AnswerHasEndCode = false });
-        rows.Add(NamedOnly(CModeHeaders.Fins, "FINS COMMAND OVER HOST LINK"));
+        rows.Add(Initialize);
+        rows.Add(UndefinedCommand);
+        rows.Add(Txd);
+        rows.Add(Fins);
         return rows.ToArray();
     }
 

@@ -175,7 +175,7 @@ internal static class CModeResponse
 
         if (text.Length == EndCodeLength && HexAscii.TryParseByte(text, out byte code) && code != 0)
         {
-            throw new HostLinkEndCodeException((EndCode)code, CModeHeaders.Test, unit);
+            throw new HostLinkEndCodeException((EndCode)code, CModeCommands.Test.Header, unit);
         }
 
         throw new HostLinkFrameException(FrameError.Malformed, $"The TS echo '{FrameText.Printable(text)}' differs from the text sent '{FrameText.Printable(sent)}'.");

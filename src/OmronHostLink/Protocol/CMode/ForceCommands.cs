@@ -35,7 +35,7 @@ internal sealed class ForceBitCommand : CModeCommand
     internal static CModeCommandRow ResetRow { get; } = CreateRow(set: false);
 
     private static CModeCommandRow CreateRow(bool set)
-        => new(set ? CModeHeaders.ForcedSet : CModeHeaders.ForcedReset, set ? "FORCED SET" : "FORCED RESET", CommandEffect.NotRepeatable, CModeResponse.EndCodeLength)
+        => new(set ? "KS" : "KR", set ? "FORCED SET" : "FORCED RESET", CommandEffect.NotRepeatable, CModeResponse.EndCodeLength)
         {
             Parse = text => Parse(set, text),
             Execute = static (command, plc, _) =>
@@ -62,7 +62,7 @@ internal sealed class ForceBitCommand : CModeCommand
 
     private static ForceBitCommand Parse(bool set, ReadOnlySpan<byte> text)
     {
-        CModeCommandParser.ExpectLength(text, 10, set ? CModeHeaders.ForcedSet : CModeHeaders.ForcedReset);
+        CModeCommandParser.ExpectLength(text, 10, (set ? SetRow : ResetRow).Header);
         if (!ForceAreaInfo.TryParse(text.Slice(0, 4), out ForceArea area)
             || !HexAscii.TryParseDecimal(text.Slice(4, 4), out int word)
             || !HexAscii.TryParseDecimal(text.Slice(8, 2), out int bit))
@@ -159,7 +159,7 @@ internal sealed class MultipleForceCommand : CModeCommand
     public override CModeCommandRow Row => CommandRow;
 
     /// <summary>FK: MULTIPLE FORCED SET/RESET.</summary>
-    internal static CModeCommandRow CommandRow { get; } = new(CModeHeaders.MultipleForcedSetReset, "MULTIPLE FORCED SET/RESET", CommandEffect.NotRepeatable, CModeResponse.EndCodeLength)
+    internal static CModeCommandRow CommandRow { get; } = new("FK", "MULTIPLE FORCED SET/RESET", CommandEffect.NotRepeatable, CModeResponse.EndCodeLength)
     {
         Parse = Parse,
         Execute = static (command, plc, _) =>
@@ -183,7 +183,7 @@ internal sealed class MultipleForceCommand : CModeCommand
 
     private static MultipleForceCommand Parse(ReadOnlySpan<byte> text)
     {
-        CModeCommandParser.ExpectLength(text, 24, CModeHeaders.MultipleForcedSetReset);
+        CModeCommandParser.ExpectLength(text, 24, CommandRow.Header);
         if (!ForceAreaInfo.TryParse(text.Slice(0, 4), out ForceArea area) || !HexAscii.TryParseDecimal(text.Slice(4, 4), out int word))
         {
             throw CModeCommandParser.Reject(EndCode.EntryNumberDataError, "Area name or word is not valid.");

@@ -48,12 +48,14 @@ internal sealed class StatusChangeCommand : CModeCommand
     /// <inheritdoc/>
     public override CModeCommandRow Row => CommandRow;
 
+    private const string HeaderCode = "SC";
+
     /// <summary>SC: STATUS CHANGE.</summary>
-    internal static CModeCommandRow CommandRow { get; } = new(CModeHeaders.StatusChange, "STATUS CHANGE", CommandEffect.NotRepeatable, CModeResponse.EndCodeLength)
+    internal static CModeCommandRow CommandRow { get; } = new(HeaderCode, "STATUS CHANGE", CommandEffect.NotRepeatable, CModeResponse.EndCodeLength)
     {
         Parse = static text =>
         {
-            CModeCommandParser.ExpectLength(text, 2, CModeHeaders.StatusChange);
+            CModeCommandParser.ExpectLength(text, 2, HeaderCode);
             if (!HexAscii.TryParseByte(text, out byte code) || !TryGetMode(code, out PlcMode mode))
             {
                 throw CModeCommandParser.Reject(EndCode.EntryNumberDataError, "SC mode must be 00, 02 or 03.");
@@ -112,12 +114,14 @@ internal sealed class ErrorReadCommand : CModeCommand
     /// <inheritdoc/>
     public override CModeCommandRow Row => CommandRow;
 
+    private const string HeaderCode = "MF";
+
     /// <summary>MF: ERROR READ (end code and two error words). The row's effect is the reading one; clearing is not repeatable.</summary>
-    internal static CModeCommandRow CommandRow { get; } = new(CModeHeaders.ErrorRead, "ERROR READ", CommandEffect.ReadOnly, CModeResponse.EndCodeLength + 8)
+    internal static CModeCommandRow CommandRow { get; } = new(HeaderCode, "ERROR READ", CommandEffect.ReadOnly, CModeResponse.EndCodeLength + 8)
     {
         Parse = static text =>
         {
-            CModeCommandParser.ExpectLength(text, 2, CModeHeaders.ErrorRead);
+            CModeCommandParser.ExpectLength(text, 2, HeaderCode);
             if (!HexAscii.TryParseDecimal(text, out int clear) || clear > 1)
             {
                 throw CModeCommandParser.Reject(EndCode.EntryNumberDataError, "MF error clear must be 00 or 01.");
@@ -193,7 +197,7 @@ internal sealed class TestCommand : CModeCommand
     public override CModeCommandRow Row => CommandRow;
 
     /// <summary>TS: TEST. The echo carries no end code; any text up to the longest a TS may carry.</summary>
-    internal static CModeCommandRow CommandRow { get; } = new(CModeHeaders.Test, "TEST", CommandEffect.ReadOnly, MaxTextLength)
+    internal static CModeCommandRow CommandRow { get; } = new("TS", "TEST", CommandEffect.ReadOnly, MaxTextLength)
     {
         AnswerHasEndCode = false,
         Parse = static text => text.Length > MaxTextLength
@@ -216,7 +220,7 @@ internal sealed class TestCommand : CModeCommand
     /// <returns>The number of characters written.</returns>
     internal static int WriteMessage(int unit, ReadOnlySpan<byte> text, Span<byte> destination)
     {
-        MessagePrefix.Write(destination, unit, CModeHeaders.Test);
+        MessagePrefix.Write(destination, unit, CommandRow.Header);
         text.CopyTo(destination.Slice(PrefixLength));
         return PrefixLength + text.Length;
     }

@@ -1,3 +1,5 @@
+using System.Globalization;
+
 namespace OmronHostLink.Protocol.Fins;
 
 /// <summary>
@@ -11,7 +13,22 @@ internal sealed class ClockWriteCommand : FinsCommand
     public const ushort Code = 0x0702;
 
     /// <summary>The command's row: 0702 CLOCK WRITE.</summary>
-    internal static FinsCommandRow CommandRow { get; } = new(Code, "CLOCK WRITE", CommandEffect.NotRepeatable, 0) { Parse = static p => ParseParameters(p) };
+    internal static FinsCommandRow CommandRow { get; } = new(Code, "CLOCK WRITE", CommandEffect.NotRepeatable, 0) 
+    {
+        Parse = static p => ParseParameters(p),
+        Execute = static (command, plc) =>
+        {
+            var write = (ClockWriteCommand)command;
+            plc.Clock = write.IncludesSecond ? write.Time : write.Time.AddSeconds(plc.Clock.Second);
+            return FinsReply.Done;
+        },
+        DescribeCommand = static (command, fields) =>
+        {
+            var clock = (ClockWriteCommand)command;
+            fields.Field("clock", clock.Time.ToString(clock.IncludesSecond ? "yyyy-MM-dd HH:mm:ss" : "yyyy-MM-dd HH:mm", CultureInfo.InvariantCulture));
+            fields.Field("dayOfWeek", clock.DayOfWeek?.ToString());
+        },
+    };
 
     /// <summary>Sets the clock to <paramref name="time"/> (to the second), with its day of week.</summary>
     /// <exception cref="ArgumentOutOfRangeException">The year is outside 1970–2069.</exception>

@@ -1,3 +1,5 @@
+using System.Globalization;
+
 namespace OmronHostLink.Protocol.Fins;
 
 /// <summary>
@@ -10,7 +12,24 @@ internal sealed class CpuUnitDataReadCommand : FinsCommand
     public const ushort Code = 0x0501;
 
     /// <summary>The command's row: 0501 CPU UNIT DATA READ.</summary>
-    internal static FinsCommandRow CommandRow { get; } = new(Code, "CPU UNIT DATA READ", CommandEffect.ReadOnly, FinsCpuUnitData.MaxLength) { Parse = static p => ParseParameters(p) };
+    internal static FinsCommandRow CommandRow { get; } = new(Code, "CPU UNIT DATA READ", CommandEffect.ReadOnly, FinsCpuUnitData.MaxLength) 
+    {
+        Parse = static p => ParseParameters(p),
+        Execute = static (_, plc) =>
+        {
+            FinsCpuUnitData unit = plc.UnitData;
+            var data = new byte[unit.Length];
+            unit.Write(data);
+            return FinsReply.Ok(data);
+        },
+        DescribeCommand = static (command, fields) => fields.Field("selector", ((CpuUnitDataReadCommand)command).Selector is { } selector ? selector.ToString("X2", CultureInfo.InvariantCulture) : null),
+        DescribeAnswer = static (data, fields) =>
+        {
+            FinsCpuUnitData unit = FinsCpuUnitData.Read(data);
+            fields.Field("model", unit.Model);
+            fields.Field("version", unit.Version);
+        },
+    };
 
     /// <summary>Reads the CPU Unit data with no parameter.</summary>
     public CpuUnitDataReadCommand()

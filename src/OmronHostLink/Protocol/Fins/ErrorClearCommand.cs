@@ -1,3 +1,5 @@
+using System.Globalization;
+
 namespace OmronHostLink.Protocol.Fins;
 
 /// <summary>
@@ -10,7 +12,16 @@ internal sealed class ErrorClearCommand : FinsCommand
     public const ushort Code = 0x2101;
 
     /// <summary>The command's row: 2101 ERROR CLEAR.</summary>
-    internal static FinsCommandRow CommandRow { get; } = new(Code, "ERROR CLEAR", CommandEffect.NotRepeatable, 0) { Parse = static p => ParseParameters(p) };
+    internal static FinsCommandRow CommandRow { get; } = new(Code, "ERROR CLEAR", CommandEffect.NotRepeatable, 0) 
+    {
+        Parse = static p => ParseParameters(p),
+        Execute = static (_, plc) =>
+        {
+            plc.ClearErrors();
+            return FinsReply.Done;
+        },
+        DescribeCommand = static (command, fields) => fields.Field("errorCode", ((ErrorClearCommand)command).ErrorCode.ToString("X4", CultureInfo.InvariantCulture)),
+    };
 
     /// <summary>The error code that clears all errors.</summary>
     public const ushort AllErrors = 0xFFFF;

@@ -11,7 +11,24 @@ internal sealed class ErrorLogReadCommand : FinsCommand
     public const ushort Code = 0x2102;
 
     /// <summary>The command's row: 2102 ERROR LOG READ.</summary>
-    internal static FinsCommandRow CommandRow { get; } = new(Code, "ERROR LOG READ", CommandEffect.ReadOnly, FinsErrorLog.HeaderLength + (MaxRecords * FinsErrorLogRecord.Length)) { Parse = static p => ParseParameters(p) };
+    internal static FinsCommandRow CommandRow { get; } = new(Code, "ERROR LOG READ", CommandEffect.ReadOnly, FinsErrorLog.HeaderLength + (MaxRecords * FinsErrorLogRecord.Length)) 
+    {
+        Parse = static p => ParseParameters(p),
+        Execute = static (_, _) =>
+        {
+            // A PLC without errors: 20 records kept, none stored.
+            var log = new FinsErrorLog(20, 0, []);
+            var data = new byte[log.Length];
+            log.Write(data);
+            return FinsReply.Ok(data);
+        },
+        DescribeCommand = static (command, fields) =>
+        {
+            var log = (ErrorLogReadCommand)command;
+            fields.Field("firstRecord", (long)log.FirstRecord);
+            fields.Field("count", (long)log.Count);
+        },
+    };
 
     /// <summary>The most records one FA response carries: (538 − 6) / 10.</summary>
     public const int MaxRecords = 53;

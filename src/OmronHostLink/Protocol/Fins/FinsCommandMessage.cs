@@ -30,7 +30,7 @@ internal sealed class FinsCommandMessage
     /// <summary>The raw parameter bytes.</summary>
     public ReadOnlyMemory<byte> Parameters => _parameters;
 
-    /// <summary>The typed command (see <see cref="FinsCommand.Parse"/>).</summary>
+    /// <summary>The typed command, as the rows of <paramref name="table"/> (default: the standard table) read it (see <see cref="FinsCommand.Parse"/>).</summary>
     /// <exception cref="FinsFormatException">The parameters do not fit the command; its end code is the answer to send.</exception>
-    public FinsCommand ToCommand() => FinsCommand.Parse(CommandCode, _parameters);
+    public FinsCommand ToCommand(FinsCommandTable? table = null) => (table ?? FinsCommandTable.Standard).Parse(CommandCode, _parameters);
 }

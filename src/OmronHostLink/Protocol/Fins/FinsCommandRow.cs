@@ -5,9 +5,23 @@ namespace OmronHostLink.Protocol.Fins;
 /// <summary>Rebuilds a command from its parameter bytes, as a PLC reads them; refuses with <see cref="FinsFormatException"/>.</summary>
 internal delegate FinsCommand FinsParse(ReadOnlySpan<byte> parameters);
 
+/// <summary>Executes a parsed command against the PLC side: the response code and data the PLC answers with.</summary>
+internal delegate FinsReply FinsExecute(FinsCommand command, IFinsPlc plc);
+
+/// <summary>Puts a parsed command's parameters, as fields, into <paramref name="fields"/>.</summary>
+internal delegate void FinsDescribeCommand(FinsCommand command, ICommandFields fields);
+
+/// <summary>
+/// Puts the fields of a normal-completion answer's data into <paramref name="fields"/>; throws
+/// <see cref="HostLinkFrameException"/> when the data does not have the answer's shape.
+/// </summary>
+internal delegate void FinsDescribeAnswer(ReadOnlySpan<byte> data, ICommandFields fields);
+
 /// <summary>
 /// One FINS command as the manuals define it, in one place: command code (MRC SRC), the manual's name, what repeating
-/// it does, the longest data its answer can carry, and how the PLC side reads its parameters. The rows are
+/// it does, the longest data its answer can carry, and how the PLC side reads its parameters and executes the command,
+/// and how a diagnostic view describes its parameters and its answer's data. The parser, the simulator, <c>explain</c>
+/// and the client all read these rows. The rows are
 /// <see cref="FinsCommandTable"/>; each command type names its row, and one command may narrow the row's facts
 /// (0620 that initialises is not repeated; 0101 of n words is answered with 2n bytes).
 /// </summary>
@@ -48,6 +62,15 @@ internal sealed class FinsCommandRow
 
     /// <summary>How the PLC reads the parameters; null for a row this library names but does not read.</summary>
     public FinsParse? Parse { get; init; }
+
+    /// <summary>How the PLC executes it; null for a command the PLC answers 0401 (undefined command).</summary>
+    public FinsExecute? Execute { get; init; }
+
+    /// <summary>The command's parameters as fields for <c>explain</c>; null for a command without parameters.</summary>
+    public FinsDescribeCommand? DescribeCommand { get; init; }
+
+    /// <summary>The fields of a normal-completion answer's data; null when the data does not describe itself.</summary>
+    public FinsDescribeAnswer? DescribeAnswer { get; init; }
 
     /// <inheritdoc/>
     public override string ToString() => $"{CodeText} {Name}";

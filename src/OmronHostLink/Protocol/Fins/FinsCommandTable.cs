@@ -1,8 +1,8 @@
 namespace OmronHostLink.Protocol.Fins;
 
 /// <summary>
-/// The FINS commands this library models, as rows (<see cref="FinsCommandRow"/>): what the parser, <c>explain</c> and the
-/// client look a command code up in. <see cref="Standard"/> is the library's set; <see cref="With"/> extends a table.
+/// The FINS commands this library models, as rows (<see cref="FinsCommandRow"/>): what the parser, the simulator,
+/// <c>explain</c> and the client look a command code up in. <see cref="Standard"/> is the library's set; <see cref="With"/> extends a table.
 /// </summary>
 internal sealed class FinsCommandTable
 {
@@ -21,14 +21,14 @@ internal sealed class FinsCommandTable
         RunCommand.CommandRow,
         StopCommand.CommandRow,
         CpuUnitDataReadCommand.CommandRow,
-        CpuUnitStatusReadCommand.CommandRow,
+        FinsCommands.CpuUnitStatusRead,
         CycleTimeReadCommand.CommandRow,
-        ClockReadCommand.CommandRow,
+        FinsCommands.ClockRead,
         ClockWriteCommand.CommandRow,
         ErrorClearCommand.CommandRow,
         ErrorLogReadCommand.CommandRow,
         ForcedSetResetCommand.CommandRow,
-        ForcedSetResetCancelCommand.CommandRow,
+        FinsCommands.ForcedCancel,
     ]);
 
     /// <summary>The rows, by command code.</summary>

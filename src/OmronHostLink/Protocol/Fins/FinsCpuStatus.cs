@@ -98,4 +98,16 @@ public sealed class FinsCpuStatus
         FinsBytes.WriteAsciiPadded(ErrorMessage, destination.Slice(LengthWithoutMessage, MessageLength));
         return Length;
     }
+
+    /// <summary>The FINS mode of a <see cref="PlcMode"/> (a PLC in any other state reports RUN).</summary>
+    internal static FinsCpuMode ModeOf(PlcMode mode) => mode switch
+    {
+        PlcMode.Program => FinsCpuMode.Program,
+        PlcMode.Monitor => FinsCpuMode.Monitor,
+        _ => FinsCpuMode.Run,
+    };
+
+    /// <summary>A mode as the console shows it: <c>PROGRAM</c>, or <c>unknown mode 07</c>.</summary>
+    internal static string ModeName(FinsCpuMode mode)
+        => Enum.IsDefined(typeof(FinsCpuMode), mode) ? mode.ToString().ToUpperInvariant() : $"unknown mode {(byte)mode:X2}";
 }

@@ -33,7 +33,7 @@ internal readonly struct FinsHeader : IEquatable<FinsHeader>
     public const int DirectLength = 4;
 
     /// <summary>The longest response wait time a Host Link FINS frame carries: one hex digit, in units of 10 ms.</summary>
-    public const int MaxResponseWait = 15;
+    public const int MaxResponseWait = SettingRules.MaxFinsResponseWait;
 
     /// <summary>Bytes of a network header (ICF RSV GCT DNA DA1 DA2 SNA SA1 SA2 SID).</summary>
     public const int NetworkLength = 10;

@@ -234,5 +234,5 @@ internal static class FinsMessage
         return frame;
     }
 
-    private static void WritePrefix(Span<byte> destination, int unit) => MessagePrefix.Write(destination, unit, CMode.CModeHeaders.Fins);
+    private static void WritePrefix(Span<byte> destination, int unit) => MessagePrefix.Write(destination, unit, CMode.CModeCommands.Fins.Header);
 }

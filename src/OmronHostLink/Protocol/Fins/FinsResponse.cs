@@ -122,7 +122,7 @@ internal sealed class FinsResponse
 
         if (hostLinkEnd != OmronHostLink.EndCode.NormalCompletion)
         {
-            throw new HostLinkEndCodeException(hostLinkEnd, CMode.CModeHeaders.Fins, unit);
+            throw new HostLinkEndCodeException(hostLinkEnd, CMode.CModeCommands.Fins.Header, unit);
         }
 
         ReadOnlySpan<byte> hex = text.Slice(2);

@@ -10,7 +10,12 @@ internal sealed class ForcedSetResetCommand : FinsCommand
     public const ushort Code = 0x2301;
 
     /// <summary>The command's row: 2301 FORCED SET/RESET.</summary>
-    internal static FinsCommandRow CommandRow { get; } = new(Code, "FORCED SET/RESET", CommandEffect.NotRepeatable, 0) { Parse = static p => ParseParameters(p) };
+    internal static FinsCommandRow CommandRow { get; } = new(Code, "FORCED SET/RESET", CommandEffect.NotRepeatable, 0) 
+    {
+        Parse = static p => ParseParameters(p),
+        Execute = static (command, plc) => Execute((ForcedSetResetCommand)command, plc),
+        DescribeCommand = static (command, fields) => fields.Field("items", ((ForcedSetResetCommand)command).Items.Select(i => FinsAddressField.Of(i.Address, i.Action.ToString())).ToArray()),
+    };
 
     /// <summary>The most bits one command carries: (<see cref="FinsCommand.MaxParameterLength"/> − 2) / 6.</summary>
     public const int MaxItems = (MaxParameterLength - 2) / FinsForcedBit.Length;
@@ -85,5 +90,51 @@ internal sealed class ForcedSetResetCommand : FinsCommand
         }
 
         return new ForcedSetResetCommand(items);
+    }
+
+    /// <summary>Forces or releases each bit, as the PLC does: refused in RUN mode (2206), and all or none.</summary>
+    private static FinsReply Execute(ForcedSetResetCommand force, IFinsPlc plc)
+    {
+        if (plc.Mode == PlcMode.Run)
+        {
+            return FinsReply.Code(FinsEndCodes.NotExecutableInRunMode);
+        }
+
+        var targets = new List<(FinsForceAction Action, FinsPlcMemory.Location Where)>();
+        foreach (FinsForcedBit item in force.Items)
+        {
+            byte code = item.Address.AreaCode;
+            if (code is not (FinsMemoryArea.CioBit or FinsMemoryArea.WorkBit or FinsMemoryArea.HoldingBit or FinsMemoryArea.TimerCounterFlag))
+            {
+                return FinsReply.Code(FinsEndCodes.AreaClassificationMissing);
+            }
+
+            if (!FinsPlcMemory.TryLocate(item.Address, 0, out FinsPlcMemory.Location where))
+            {
+                return FinsReply.Code(FinsEndCodes.AddressRangeError);
+            }
+
+            targets.Add((item.Action, where));
+        }
+
+        foreach ((FinsForceAction action, FinsPlcMemory.Location where) in targets)
+        {
+            int bit = where.Flag ? 0 : where.Bit;
+            switch (action)
+            {
+                case FinsForceAction.ForceSet or FinsForceAction.ForceReset:
+                    plc.ForceBit(where.Area, where.Word, bit, action == FinsForceAction.ForceSet);
+                    break;
+                case FinsForceAction.ReleaseToOn or FinsForceAction.ReleaseToOff:
+                    plc.ReleaseForced(where.Area, where.Word, bit);
+                    FinsPlcMemory.Set(plc, where, action == FinsForceAction.ReleaseToOn);
+                    break;
+                default:
+                    plc.ReleaseForced(where.Area, where.Word, bit);
+                    break;
+            }
+        }
+
+        return FinsReply.Done;
     }
 }

@@ -10,7 +10,43 @@ internal sealed class MemoryAreaFillCommand : FinsCommand
     public const ushort Code = 0x0103;
 
     /// <summary>The command's row: 0103 MEMORY AREA FILL.</summary>
-    internal static FinsCommandRow CommandRow { get; } = new(Code, "MEMORY AREA FILL", CommandEffect.Idempotent, 0) { Parse = static p => ParseParameters(p) };
+    internal static FinsCommandRow CommandRow { get; } = new(Code, "MEMORY AREA FILL", CommandEffect.Idempotent, 0) 
+    {
+        Parse = static p => ParseParameters(p),
+        Execute = static (command, plc) =>
+        {
+            var fill = (MemoryAreaFillCommand)command;
+            ushort check = FinsPlcMemory.Check(fill.Address, fill.Count, write: true);
+            if (check != FinsEndCodes.NormalCompletion)
+            {
+                return FinsReply.Code(check);
+            }
+
+            int size = fill.Address.ElementSize;
+            var bytes = new byte[fill.Count * size];
+            for (int i = 0; i < fill.Count; i++)
+            {
+                if (size == 2)
+                {
+                    FinsBytes.WriteUInt16(bytes, i * 2, fill.Value);
+                }
+                else
+                {
+                    bytes[i] = fill.Value != 0 ? (byte)1 : (byte)0;
+                }
+            }
+
+            FinsPlcMemory.Write(plc, fill.Address, fill.Count, bytes);
+            return FinsReply.Done;
+        },
+        DescribeCommand = static (command, fields) =>
+        {
+            var fill = (MemoryAreaFillCommand)command;
+            FinsAddressField.AddTo(fields, fill.Address);
+            fields.Field("count", (long)fill.Count);
+            fields.Field("value", (long)fill.Value);
+        },
+    };
 
     /// <summary>Creates the command.</summary>
     /// <param name="address">The first word (a 2-byte word area).</param>

@@ -15,7 +15,22 @@ internal sealed class MemoryAreaReadCommand : FinsCommand
     public const ushort Code = 0x0101;
 
     /// <summary>The command's row: 0101 MEMORY AREA READ.</summary>
-    internal static FinsCommandRow CommandRow { get; } = new(Code, "MEMORY AREA READ", CommandEffect.ReadOnly, MaxResponseDataBytes) { Parse = static p => ParseParameters(p) };
+    internal static FinsCommandRow CommandRow { get; } = new(Code, "MEMORY AREA READ", CommandEffect.ReadOnly, MaxResponseDataBytes) 
+    {
+        Parse = static p => ParseParameters(p),
+        Execute = static (command, plc) =>
+        {
+            var read = (MemoryAreaReadCommand)command;
+            ushort check = FinsPlcMemory.Check(read.Address, read.Count, write: false);
+            return check == FinsEndCodes.NormalCompletion ? FinsReply.Ok(FinsPlcMemory.Read(plc, read.Address, read.Count)) : FinsReply.Code(check);
+        },
+        DescribeCommand = static (command, fields) =>
+        {
+            var read = (MemoryAreaReadCommand)command;
+            FinsAddressField.AddTo(fields, read.Address);
+            fields.Field("count", (long)read.Count);
+        },
+    };
 
     /// <summary>The most response data bytes one FA response holds (1,076 characters).</summary>
     public const int MaxResponseDataBytes = 538;

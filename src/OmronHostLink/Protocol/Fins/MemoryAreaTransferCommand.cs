@@ -10,7 +10,34 @@ internal sealed class MemoryAreaTransferCommand : FinsCommand
     public const ushort Code = 0x0105;
 
     /// <summary>The command's row: 0105 MEMORY AREA TRANSFER.</summary>
-    internal static FinsCommandRow CommandRow { get; } = new(Code, "MEMORY AREA TRANSFER", CommandEffect.Idempotent, 0) { Parse = static p => ParseParameters(p) };
+    internal static FinsCommandRow CommandRow { get; } = new(Code, "MEMORY AREA TRANSFER", CommandEffect.Idempotent, 0) 
+    {
+        Parse = static p => ParseParameters(p),
+        Execute = static (command, plc) =>
+        {
+            var transfer = (MemoryAreaTransferCommand)command;
+            if (FinsMemoryArea.ElementSize(transfer.Source.AreaCode) != 2 || FinsMemoryArea.ElementSize(transfer.Destination.AreaCode) != 2)
+            {
+                return FinsReply.Code(FinsEndCodes.AreaClassificationMissing);
+            }
+
+            ushort check = FinsPlcMemory.Check(transfer.Source, transfer.Count, write: false);
+            check = check != FinsEndCodes.NormalCompletion ? check : FinsPlcMemory.Check(transfer.Destination, transfer.Count, write: true);
+            if (check == FinsEndCodes.NormalCompletion && transfer.Count > 0)
+            {
+                FinsPlcMemory.Write(plc, transfer.Destination, transfer.Count, FinsPlcMemory.Read(plc, transfer.Source, transfer.Count));
+            }
+
+            return FinsReply.Code(check);
+        },
+        DescribeCommand = static (command, fields) =>
+        {
+            var transfer = (MemoryAreaTransferCommand)command;
+            fields.Field("source", FinsAddressField.Of(transfer.Source));
+            fields.Field("destination", FinsAddressField.Of(transfer.Destination));
+            fields.Field("count", (long)transfer.Count);
+        },
+    };
 
     /// <summary>Creates the command.</summary>
     /// <param name="source">The first word copied (a 2-byte word area).</param>

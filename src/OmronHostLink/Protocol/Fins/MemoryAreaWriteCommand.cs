@@ -15,7 +15,38 @@ internal sealed class MemoryAreaWriteCommand : FinsCommand
     public const ushort Code = 0x0102;
 
     /// <summary>The command's row: 0102 MEMORY AREA WRITE.</summary>
-    internal static FinsCommandRow CommandRow { get; } = new(Code, "MEMORY AREA WRITE", CommandEffect.Idempotent, 0) { Parse = static p => ParseParameters(p) };
+    internal static FinsCommandRow CommandRow { get; } = new(Code, "MEMORY AREA WRITE", CommandEffect.Idempotent, 0) 
+    {
+        Parse = static p => ParseParameters(p),
+        Execute = static (command, plc) =>
+        {
+            var write = (MemoryAreaWriteCommand)command;
+            ushort check = FinsPlcMemory.Check(write.Address, write.Count, write: true);
+            if (check == FinsEndCodes.NormalCompletion)
+            {
+                FinsPlcMemory.Write(plc, write.Address, write.Count, write.Data.Span);
+            }
+
+            return FinsReply.Code(check);
+        },
+        DescribeCommand = static (command, fields) =>
+        {
+            var write = (MemoryAreaWriteCommand)command;
+            FinsAddressField.AddTo(fields, write.Address);
+            fields.Field("count", (long)write.Count);
+            ReadOnlySpan<byte> data = write.Data.Span;
+
+            // The write data as words (2-byte elements) or bits (bit areas); other element sizes stay in the parameters.
+            if (write.Address.IsBit)
+            {
+                fields.Field("bits", data.ToArray().Select(b => b != 0).ToArray());
+            }
+            else if (write.Address.ElementSize == 2)
+            {
+                fields.Field("words", FinsWords.Read(data, data.Length / 2).Select(w => (long)w).ToArray());
+            }
+        },
+    };
 
     /// <summary>The most data bytes one command carries (<see cref="FinsCommand.MaxParameterLength"/> − 6).</summary>
     public const int MaxDataBytes = MaxParameterLength - 6;

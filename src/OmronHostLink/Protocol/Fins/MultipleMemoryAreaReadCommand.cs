@@ -10,7 +10,28 @@ internal sealed class MultipleMemoryAreaReadCommand : FinsCommand
     public const ushort Code = 0x0104;
 
     /// <summary>The command's row: 0104 MULTIPLE MEMORY AREA READ.</summary>
-    internal static FinsCommandRow CommandRow { get; } = new(Code, "MULTIPLE MEMORY AREA READ", CommandEffect.ReadOnly, MemoryAreaReadCommand.MaxResponseDataBytes) { Parse = static p => ParseParameters(p) };
+    internal static FinsCommandRow CommandRow { get; } = new(Code, "MULTIPLE MEMORY AREA READ", CommandEffect.ReadOnly, MemoryAreaReadCommand.MaxResponseDataBytes) 
+    {
+        Parse = static p => ParseParameters(p),
+        Execute = static (command, plc) =>
+        {
+            var data = new List<byte>();
+            foreach (FinsMemoryAddress item in ((MultipleMemoryAreaReadCommand)command).Items)
+            {
+                ushort check = FinsPlcMemory.Check(item, 1, write: false);
+                if (check != FinsEndCodes.NormalCompletion)
+                {
+                    return FinsReply.Code(check);
+                }
+
+                data.Add(item.AreaCode);
+                data.AddRange(FinsPlcMemory.Read(plc, item, 1));
+            }
+
+            return FinsReply.Ok(data.ToArray());
+        },
+        DescribeCommand = static (command, fields) => fields.Field("items", ((MultipleMemoryAreaReadCommand)command).Items.Select(a => FinsAddressField.Of(a)).ToArray()),
+    };
 
     /// <summary>The most items one command carries (<see cref="FinsCommand.MaxParameterLength"/> / 4).</summary>
     public const int MaxItems = MaxParameterLength / FinsMemoryAddress.Length;

@@ -1,3 +1,5 @@
+using System.Globalization;
+
 namespace OmronHostLink.Protocol.Fins;
 
 /// <summary>
@@ -10,7 +12,22 @@ internal sealed class RunCommand : FinsCommand
     public const ushort Code = 0x0401;
 
     /// <summary>The command's row: 0401 RUN.</summary>
-    internal static FinsCommandRow CommandRow { get; } = new(Code, "RUN", CommandEffect.NotRepeatable, 0) { Parse = static p => ParseParameters(p) };
+    internal static FinsCommandRow CommandRow { get; } = new(Code, "RUN", CommandEffect.NotRepeatable, 0) 
+    {
+        Parse = static p => ParseParameters(p),
+        Execute = static (command, plc) =>
+        {
+            // [unverified] With no mode given the CPU Unit goes to MONITOR mode.
+            plc.Mode = ((RunCommand)command).Mode == FinsCpuMode.Run ? PlcMode.Run : PlcMode.Monitor;
+            return FinsReply.Done;
+        },
+        DescribeCommand = static (command, fields) =>
+        {
+            var run = (RunCommand)command;
+            fields.Field("programNumber", run.ProgramNumber is { } program ? program.ToString("X4", CultureInfo.InvariantCulture) : null);
+            fields.Field("mode", run.Mode is { } mode ? FinsCpuStatus.ModeName(mode) : null);
+        },
+    };
 
     /// <summary>The program number CS/CJ CPU Units expect.</summary>
     public const ushort AnyProgram = 0xFFFF;

@@ -1,3 +1,5 @@
+using System.Globalization;
+
 namespace OmronHostLink.Protocol.Fins;
 
 /// <summary>0402 STOP: puts the CPU Unit into PROGRAM mode. Parameter (optional): program number(2, <c>FFFF</c>).</summary>
@@ -7,7 +9,16 @@ internal sealed class StopCommand : FinsCommand
     public const ushort Code = 0x0402;
 
     /// <summary>The command's row: 0402 STOP.</summary>
-    internal static FinsCommandRow CommandRow { get; } = new(Code, "STOP", CommandEffect.NotRepeatable, 0) { Parse = static p => ParseParameters(p) };
+    internal static FinsCommandRow CommandRow { get; } = new(Code, "STOP", CommandEffect.NotRepeatable, 0) 
+    {
+        Parse = static p => ParseParameters(p),
+        Execute = static (_, plc) =>
+        {
+            plc.Mode = PlcMode.Program;
+            return FinsReply.Done;
+        },
+        DescribeCommand = static (command, fields) => fields.Field("programNumber", ((StopCommand)command).ProgramNumber is { } program ? program.ToString("X4", CultureInfo.InvariantCulture) : null),
+    };
 
     /// <summary>Stops with program number FFFF.</summary>
     public StopCommand()
