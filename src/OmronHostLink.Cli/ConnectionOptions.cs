@@ -27,6 +27,7 @@ internal sealed class ConnectionOptions
         ["Model"] = "--model",
         ["HostLinkCompatibleMode"] = "--compatible-mode",
         ["LocalEcho"] = "--local-echo",
+        ["TraceFile"] = "--trace",
         ["UseCompoundRead"] = "--compound-read",
     };
 
@@ -166,6 +167,7 @@ internal sealed class ConnectionOptions
             CommandSet = options.GetValue(Fins) ? HostLinkCommandSet.Fins : HostLinkCommandSet.CMode,
             Model = options.GetValue(Model),
             LocalEcho = options.GetValue(LocalEcho) ? true : null,
+            TraceFile = options.GetValue(Trace),
             HostLinkCompatibleMode = options.GetValue(CompatibleMode) switch
             {
                 "a" => HostLinkCompatibleMode.ModeA,
@@ -218,19 +220,14 @@ internal sealed class ConnectionOptions
             throw new UsageException(problem);
         }
 
-        string? trace = parse.GetValue(Trace);
         HostLinkClient client;
         try
         {
-            client = settings.CreateClient(trace is null ? configure : o =>
-            {
-                configure?.Invoke(o);
-                o.TraceFile = trace;
-            });
+            client = settings.CreateClient(configure);
         }
         catch (ArgumentException e) when (e.ParamName == nameof(HostLinkClientOptions.TraceFile))
         {
-            throw new UsageException($"--trace: cannot create '{trace}': {e.InnerException?.Message ?? e.Message}", e);
+            throw new UsageException($"--trace: cannot create '{settings.TraceFile}': {e.InnerException?.Message ?? e.Message}", e);
         }
 
         if (output.Verbose)
