@@ -9,8 +9,8 @@ namespace OmronHostLink.Cli.Tests;
 /// </summary>
 internal static class Tshark
 {
-    /// <summary>The dissector, copied beside the test assembly from tools/wireshark.</summary>
-    public static string Dissector => Path.Combine(AppContext.BaseDirectory, "wireshark", "omron-hostlink.lua");
+    /// <summary>The dissector the repository ships, in tools/wireshark.</summary>
+    public static string Dissector => RepositoryRoot.Combine("tools", "wireshark", "omron-hostlink.lua");
 
     /// <summary>Runs tshark over <paramref name="capture"/> and returns one row a frame, one cell a field (its first occurrence).</summary>
     public static async Task<List<string[]>> FieldsAsync(string capture, params string[] fields)
