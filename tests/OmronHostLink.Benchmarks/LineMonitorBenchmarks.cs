@@ -43,7 +43,7 @@ public class LineMonitorBenchmarks
         long ticks = Stopwatch.GetTimestamp();
         for (int at = 0; at < line.Length; at += 12)
         {
-            chunks.Add(new TapChunk(0, line.AsSpan(at, Math.Min(12, line.Length - at)).ToArray(), ticks));
+            chunks.Add(new TapChunk(0, line.AsSpan(at, Math.Min(12, line.Length - at)).ToArray(), ticks, ticks));
             ticks += Stopwatch.Frequency / 1000;
         }
 

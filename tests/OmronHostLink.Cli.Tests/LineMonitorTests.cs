@@ -143,6 +143,68 @@ public sealed class LineMonitorTests
         x.Latency.Should().Be(TimeSpan.FromMilliseconds(3));
     }
 
+    [Fact]
+    public void With_two_ports_a_reader_that_runs_late_does_not_put_its_answers_after_the_next_command()
+    {
+        const string command = "@00RD0000001057*\r";
+        const string answer = "@00RD00000AFFFF80002F*\r";
+        var events = new List<MonitorEvent>();
+        var monitor = new LineMonitor(twoPorts: true, new MonitorClock(), null, events.Add);
+
+        monitor.Take(Quiet(1, 5));
+        monitor.Take(Chunk(0, command, 10));
+        monitor.Take(Chunk(0, command, 200));
+        monitor.Held.Should().Be(1, "the second command waits for the PLC's reader to read past it");
+        events.Should().BeEmpty();
+
+        // The PLC's reader wakes 250 ms late and reads both answers at once: stamped after the second command, but its
+        // watermark says they may have come any time after 5 ms.
+        monitor.Take(Chunk(1, answer + answer, 260, clearMs: 259));
+        monitor.Flush(300 * Ms);
+
+        events.Should().AllBeOfType<MonitorEvent.Exchanged>();
+        events.OfType<MonitorEvent.Exchanged>().Select(e => e.Exchange)
+            .Select(x => (x.Status, x.CommandFrames.Count, x.AnswerFrames.Count))
+            .Should().Equal((ExchangeStatus.Ok, 1, 1), (ExchangeStatus.Ok, 1, 1));
+    }
+
+    [Fact]
+    public void With_two_ports_a_command_nobody_answered_is_closed_when_the_plc_reader_has_read_past_the_next_one()
+    {
+        const string command = "@00RD0000001057*\r";
+        const string answer = "@00RD00000AFFFF80002F*\r";
+        var events = new List<MonitorEvent>();
+        var monitor = new LineMonitor(twoPorts: true, new MonitorClock(), null, events.Add);
+
+        monitor.Take(Quiet(1, 5));
+        monitor.Take(Chunk(0, command, 10));
+        monitor.Take(Chunk(0, command, 100));
+        monitor.Take(Quiet(1, 60));
+        events.Should().BeEmpty("the PLC's reader has not yet read past the second command");
+
+        monitor.Take(Quiet(1, 101));
+        Single(events).Status.Should().Be(ExchangeStatus.Unanswered);
+
+        monitor.Take(Chunk(1, answer, 110));
+        monitor.Flush(200 * Ms);
+        List<MonitoredExchange> exchanges = events.OfType<MonitorEvent.Exchanged>().Select(e => e.Exchange).ToList();
+        exchanges.Select(x => x.Status).Should().Equal(ExchangeStatus.Unanswered, ExchangeStatus.Ok);
+        exchanges[1].Latency.Should().Be(TimeSpan.FromMilliseconds(10));
+    }
+
+    [Fact]
+    public void With_two_ports_an_answer_nobody_asked_for_waits_for_the_host_reader_then_is_a_stray()
+    {
+        var events = new List<MonitorEvent>();
+        var monitor = new LineMonitor(twoPorts: true, new MonitorClock(), null, events.Add);
+
+        monitor.Take(Chunk(1, "@00RD00000AFFFF80002F*\r", 10));
+        events.Should().BeEmpty("the host's reader may still hold the command it answers");
+
+        monitor.Take(Quiet(0, 11));
+        events.Should().ContainSingle().Which.Should().BeOfType<MonitorEvent.Stray>();
+    }
+
     private static MonitoredExchange Single(List<MonitorEvent> events)
         => events.OfType<MonitorEvent.Exchanged>().Should().ContainSingle().Which.Exchange;
 
@@ -159,5 +221,10 @@ public sealed class LineMonitorTests
         return events;
     }
 
-    private static TapChunk Chunk(int source, string text, int atMs) => new(source, Encoding.Latin1.GetBytes(text), atMs * Ms);
+    /// <summary>A read that returned <paramref name="text"/> at <paramref name="atMs"/>, having begun at <paramref name="clearMs"/> (by default just before).</summary>
+    private static TapChunk Chunk(int source, string text, int atMs, int? clearMs = null)
+        => new(source, Encoding.Latin1.GetBytes(text), atMs * Ms, (clearMs ?? atMs - 1) * Ms);
+
+    /// <summary>A poll that began at <paramref name="atMs"/> and found the port quiet.</summary>
+    private static TapChunk Quiet(int source, int atMs) => new(source, [], atMs * Ms, atMs * Ms);
 }

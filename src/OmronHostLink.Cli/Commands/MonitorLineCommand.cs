@@ -83,13 +83,18 @@ internal static class MonitorLineCommand
                 output.Note(names.Length == 1
                     ? $"Listening to {settings[0]} (both directions; nothing is sent). Ctrl+C stops."
                     : $"Listening to the host on {settings[0]} and the PLC on {settings[1]} (nothing is sent). Ctrl+C stops.");
-                var monitor = new LineMonitor(names.Length == 2, clock, writer, e =>
-                {
-                    stats.Count(e);
-                    Write(output, clock, e);
-                });
+                var monitor = new LineMonitor(
+                    names.Length == 2,
+                    clock,
+                    writer,
+                    e =>
+                    {
+                        stats.Count(e);
+                        Write(output, clock, e);
+                    },
+                    readersProveQuiet: taps.TrueForAll(t => t.ProvesQuiet));
                 long started = Stopwatch.GetTimestamp();
-                using var ticker = new Timer(_ => chunks.Writer.TryWrite(new TapChunk(-1, [], Stopwatch.GetTimestamp())), null, TickInterval, TickInterval);
+                using var ticker = new Timer(_ => chunks.Writer.TryWrite(new TapChunk(-1, [], Stopwatch.GetTimestamp(), 0)), null, TickInterval, TickInterval);
 
                 // Pairing, capturing and printing run on a thread of their own, with the readers' scheduling (see
                 // RealTimeScheduling): a collection this work needs runs on it, and the readers wait for it to end.

@@ -11,27 +11,31 @@ internal sealed class FrameAssembler
     private readonly int _source;
     private readonly List<byte> _pending = new();
     private long _firstTicks;
+    private long _firstEarliest;
     private long _atTicks;
+    private long _atEarliest;
 
     public FrameAssembler(int source)
     {
         _source = source;
     }
 
-    /// <summary>Takes one chunk and returns the frames it completes.</summary>
-    public void Take(TapChunk chunk, List<MonitoredFrame> frames)
+    /// <summary>Takes one chunk, whose bytes arrived at or after <paramref name="earliest"/>, and returns the frames it completes.</summary>
+    public void Take(TapChunk chunk, long earliest, List<MonitoredFrame> frames)
     {
         foreach (byte b in chunk.Bytes)
         {
             if (_pending.Count == 0)
             {
                 _firstTicks = chunk.Ticks;
+                _firstEarliest = earliest;
             }
 
             _pending.Add(b);
             if (b == (byte)'@')
             {
                 _atTicks = chunk.Ticks;
+                _atEarliest = earliest;
             }
 
             if (b == (byte)'\r')
@@ -40,7 +44,7 @@ internal sealed class FrameAssembler
             }
             else if (_pending.Count > Protocol.FrameReader.MaxFrameLength)
             {
-                frames.Add(new MonitoredFrame(_source, _pending.ToArray(), _firstTicks, chunk.Ticks, framed: false));
+                frames.Add(new MonitoredFrame(_source, _pending.ToArray(), _firstTicks, chunk.Ticks, framed: false, _firstEarliest));
                 _pending.Clear();
             }
         }
@@ -51,7 +55,7 @@ internal sealed class FrameAssembler
     {
         if (_pending.Count > 0)
         {
-            frames.Add(new MonitoredFrame(_source, _pending.ToArray(), _firstTicks, ticks, framed: false));
+            frames.Add(new MonitoredFrame(_source, _pending.ToArray(), _firstTicks, ticks, framed: false, _firstEarliest));
             _pending.Clear();
         }
     }
@@ -64,11 +68,11 @@ internal sealed class FrameAssembler
         if (at > 0)
         {
             // '@' never appears inside a frame: what comes before the last one is not part of this frame.
-            frames.Add(new MonitoredFrame(_source, run.AsSpan(0, at).ToArray(), _firstTicks, _atTicks, framed: false));
-            frames.Add(new MonitoredFrame(_source, run.AsSpan(at).ToArray(), _atTicks, lastTicks, framed: true));
+            frames.Add(new MonitoredFrame(_source, run.AsSpan(0, at).ToArray(), _firstTicks, _atTicks, framed: false, _firstEarliest));
+            frames.Add(new MonitoredFrame(_source, run.AsSpan(at).ToArray(), _atTicks, lastTicks, framed: true, _atEarliest));
             return;
         }
 
-        frames.Add(new MonitoredFrame(_source, run, _firstTicks, lastTicks, framed: true));
+        frames.Add(new MonitoredFrame(_source, run, _firstTicks, lastTicks, framed: true, _firstEarliest));
     }
 }

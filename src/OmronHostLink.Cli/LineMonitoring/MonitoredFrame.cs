@@ -6,10 +6,11 @@ namespace OmronHostLink.Cli.LineMonitoring;
 /// <summary>One frame (or run of bytes that does not frame) heard on a tapped port, with when its first and last bytes arrived.</summary>
 internal sealed class MonitoredFrame
 {
-    public MonitoredFrame(int source, byte[] bytes, long firstTicks, long lastTicks, bool framed)
+    public MonitoredFrame(int source, byte[] bytes, long firstTicks, long lastTicks, bool framed, long earliestTicks = 0)
     {
         Source = source;
         Bytes = bytes;
+        EarliestTicks = earliestTicks;
         FirstTicks = firstTicks;
         LastTicks = lastTicks;
         IsFrame = framed;
@@ -21,6 +22,13 @@ internal sealed class MonitoredFrame
 
     /// <summary>The bytes, CR included for a frame.</summary>
     public byte[] Bytes { get; }
+
+    /// <summary>
+    /// Stopwatch time before which its first byte had provably not arrived: the reader's watermark (<see cref="TapChunk.Clear"/>)
+    /// before the read that brought it. With <see cref="FirstTicks"/> it brackets the first byte's arrival, however late the
+    /// reader ran.
+    /// </summary>
+    public long EarliestTicks { get; }
 
     /// <summary>Stopwatch time of the read that brought its first byte.</summary>
     public long FirstTicks { get; }

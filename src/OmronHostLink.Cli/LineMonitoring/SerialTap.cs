@@ -7,8 +7,9 @@ namespace OmronHostLink.Cli.LineMonitoring;
 
 /// <summary>
 /// Listens to one serial port without ever writing to it: a thread of its own reads whatever arrives and hands it on,
-/// stamped with the time the read returned, to a channel that never blocks the reader (a slow console cannot make the
-/// port's buffer overflow).
+/// stamped with the time the read returned and the reader's watermark (<see cref="TapChunk.Clear"/>), to a channel that
+/// never blocks the reader (a slow console cannot make the port's buffer overflow). A quiet port's watermark is handed
+/// on by itself each time a poll finds nothing.
 /// </summary>
 /// <remarks>
 /// The port's speed and format are set with System.IO.Ports (a pseudo-terminal in the 8-bit framing it holds). On Linux
@@ -16,12 +17,14 @@ namespace OmronHostLink.Cli.LineMonitoring;
 /// serves reads from one polling thread that sleeps a millisecond whenever no read is queued, and bytes arriving then
 /// are stamped up to a millisecond late, which is the whole error a latency reading may have. The descriptor is opened
 /// before System.IO.Ports, which then claims the device exclusively. On Linux the reader asks for real-time scheduling
-/// where it is allowed (<see cref="RealTimeScheduling"/>). On Windows the port's own stream is read.
+/// where it is allowed (<see cref="RealTimeScheduling"/>). On Windows the port's own stream is read, with blocking
+/// reads that cannot prove the port quiet (<see cref="ProvesQuiet"/>).
 /// </remarks>
 internal sealed class SerialTap : IDisposable
 {
     private const short PollIn = 0x1;
-    private const int PollMilliseconds = 100;
+    /// <summary>How long a poll waits: a quiet port's watermark (<see cref="TapChunk.Clear"/>) moves this often, and a frame of the other port waits at most about this long for it.</summary>
+    private const int PollMilliseconds = 20;
 
     private readonly int _source;
     private readonly ChannelWriter<TapChunk> _output;
@@ -105,6 +108,9 @@ internal sealed class SerialTap : IDisposable
         }
     }
 
+    /// <summary>Whether the reader proves its port quiet with polls that time out (not on Windows; see <see cref="LineMonitor"/>).</summary>
+    public bool ProvesQuiet => _raw is not null;
+
     /// <summary>Whether the reader thread runs with real-time scheduling (see the remarks).</summary>
     public bool RealTime { get; private set; }
 
@@ -112,15 +118,30 @@ internal sealed class SerialTap : IDisposable
     {
         RealTime = RealTimeScheduling.TryRaiseThisThread();
         var buffer = new byte[4096];
+        long clear = 0;
         try
         {
             while (!_stopping)
             {
-                if (_raw is not null && !Readable(_raw.SafeFileHandle))
+                if (_raw is not null)
                 {
-                    continue;
+                    long polled = System.Diagnostics.Stopwatch.GetTimestamp();
+                    int ready = Poll(_raw.SafeFileHandle);
+                    if (ready == 0)
+                    {
+                        // Nothing was waiting when the poll began, nor came before it timed out: every byte that reached
+                        // the port before the poll began has been handed over.
+                        clear = polled;
+                        _output.TryWrite(new TapChunk(_source, [], polled, clear));
+                    }
+
+                    if (ready <= 0)
+                    {
+                        continue;
+                    }
                 }
 
+                long entered = System.Diagnostics.Stopwatch.GetTimestamp();
                 int n = _raw is not null ? _raw.Read(buffer, 0, buffer.Length) : _stream.Read(buffer, 0, buffer.Length);
                 long ticks = System.Diagnostics.Stopwatch.GetTimestamp();
                 if (n <= 0)
@@ -128,8 +149,14 @@ internal sealed class SerialTap : IDisposable
                     throw new IOException("the device hung up (it is gone, or the other end of a pseudo-terminal closed)");
                 }
 
+                if (n < buffer.Length)
+                {
+                    // A read that did not fill the buffer took all there was: every byte that had come before it began.
+                    clear = entered;
+                }
+
                 Interlocked.Add(ref _bytes, n);
-                _output.TryWrite(new TapChunk(_source, buffer.AsSpan(0, n).ToArray(), ticks));
+                _output.TryWrite(new TapChunk(_source, buffer.AsSpan(0, n).ToArray(), ticks, clear));
             }
         }
         catch (Exception e) when (e is IOException or ObjectDisposedException or InvalidOperationException or UnauthorizedAccessException)
@@ -142,8 +169,8 @@ internal sealed class SerialTap : IDisposable
         }
     }
 
-    /// <summary>Waits up to <see cref="PollMilliseconds"/> for bytes to read.</summary>
-    private static bool Readable(SafeFileHandle handle)
+    /// <summary>Waits up to <see cref="PollMilliseconds"/> for bytes to read: 1 when there are, 0 when none came, -1 when a signal interrupted the wait.</summary>
+    private static int Poll(SafeFileHandle handle)
     {
         var fd = new PollFd { Fd = (int)handle.DangerousGetHandle(), Events = PollIn };
         int ready = Poll(ref fd, 1, PollMilliseconds);
@@ -153,13 +180,13 @@ internal sealed class SerialTap : IDisposable
             if (errno == 4)
             {
                 // EINTR: a signal; poll again.
-                return false;
+                return -1;
             }
 
             throw new IOException($"poll failed (errno {errno}).");
         }
 
-        return ready > 0;
+        return ready > 0 ? 1 : 0;
     }
 
     private static IntPtr OpenReadOnly(string path)
