@@ -13,6 +13,11 @@ public sealed class LineMonitorTests
 {
     private static readonly long Ms = Stopwatch.Frequency / 1000;
 
+    /// <summary>RD of DM 0000, 1 word, to unit 00, and its answer (golden vectors).</summary>
+    private const string ReadCommand = "@00RD0000001057*\r";
+
+    private const string ReadAnswer = "@00RD00000AFFFF80002F*\r";
+
     [Fact]
     public void A_command_and_its_answer_are_paired_with_the_latency_from_the_commands_last_byte_to_the_answers_first()
     {
@@ -146,20 +151,15 @@ public sealed class LineMonitorTests
     [Fact]
     public void With_two_ports_a_reader_that_runs_late_does_not_put_its_answers_after_the_next_command()
     {
-        const string command = "@00RD0000001057*\r";
-        const string answer = "@00RD00000AFFFF80002F*\r";
         var events = new List<MonitorEvent>();
-        var monitor = new LineMonitor(twoPorts: true, new MonitorClock(), null, events.Add);
-
-        monitor.Take(Quiet(1, 5));
-        monitor.Take(Chunk(0, command, 10));
-        monitor.Take(Chunk(0, command, 200));
+        LineMonitor monitor = TwoPortsAfterACommand(events);
+        monitor.Take(Chunk(0, ReadCommand, 200));
         monitor.Held.Should().Be(1, "the second command waits for the PLC's reader to read past it");
         events.Should().BeEmpty();
 
         // The PLC's reader wakes 250 ms late and reads both answers at once: stamped after the second command, but its
         // watermark says they may have come any time after 5 ms.
-        monitor.Take(Chunk(1, answer + answer, 260, clearMs: 259));
+        monitor.Take(Chunk(1, ReadAnswer + ReadAnswer, 260, clearMs: 259));
         monitor.Flush(300 * Ms);
 
         events.Should().AllBeOfType<MonitorEvent.Exchanged>();
@@ -171,21 +171,16 @@ public sealed class LineMonitorTests
     [Fact]
     public void With_two_ports_a_command_nobody_answered_is_closed_when_the_plc_reader_has_read_past_the_next_one()
     {
-        const string command = "@00RD0000001057*\r";
-        const string answer = "@00RD00000AFFFF80002F*\r";
         var events = new List<MonitorEvent>();
-        var monitor = new LineMonitor(twoPorts: true, new MonitorClock(), null, events.Add);
-
-        monitor.Take(Quiet(1, 5));
-        monitor.Take(Chunk(0, command, 10));
-        monitor.Take(Chunk(0, command, 100));
+        LineMonitor monitor = TwoPortsAfterACommand(events);
+        monitor.Take(Chunk(0, ReadCommand, 100));
         monitor.Take(Quiet(1, 60));
         events.Should().BeEmpty("the PLC's reader has not yet read past the second command");
 
         monitor.Take(Quiet(1, 101));
         Single(events).Status.Should().Be(ExchangeStatus.Unanswered);
 
-        monitor.Take(Chunk(1, answer, 110));
+        monitor.Take(Chunk(1, ReadAnswer, 110));
         monitor.Flush(200 * Ms);
         List<MonitoredExchange> exchanges = events.OfType<MonitorEvent.Exchanged>().Select(e => e.Exchange).ToList();
         exchanges.Select(x => x.Status).Should().Equal(ExchangeStatus.Unanswered, ExchangeStatus.Ok);
@@ -198,11 +193,20 @@ public sealed class LineMonitorTests
         var events = new List<MonitorEvent>();
         var monitor = new LineMonitor(twoPorts: true, new MonitorClock(), null, events.Add);
 
-        monitor.Take(Chunk(1, "@00RD00000AFFFF80002F*\r", 10));
+        monitor.Take(Chunk(1, ReadAnswer, 10));
         events.Should().BeEmpty("the host's reader may still hold the command it answers");
 
         monitor.Take(Quiet(0, 11));
         events.Should().ContainSingle().Which.Should().BeOfType<MonitorEvent.Stray>();
+    }
+
+    /// <summary>Two ports: the PLC's port found quiet at 5 ms, then the host's RD at 10 ms (paired at once: nothing came before it).</summary>
+    private static LineMonitor TwoPortsAfterACommand(List<MonitorEvent> events)
+    {
+        var monitor = new LineMonitor(twoPorts: true, new MonitorClock(), null, events.Add);
+        monitor.Take(Quiet(1, 5));
+        monitor.Take(Chunk(0, ReadCommand, 10));
+        return monitor;
     }
 
     private static MonitoredExchange Single(List<MonitorEvent> events)
