@@ -24,6 +24,7 @@ TOOLS=(
   "npm npm"                              # restores that library (tests/OmronHostLink.Gateway.Tests/Sparkplug/Tahu)
   "chromium chromium"                    # the headless browser the gateway's status page is tested in
   "chromium-driver chromedriver"         # its WebDriver, which the status-page tests drive it through (Selenium)
+  "tshark tshark"                        # Wireshark's console runs the repository's Host Link dissector (tools/wireshark)
 )
 
 # npm folders whose packages the tests load, restored with npm ci from their package-lock.json.
@@ -48,6 +49,8 @@ install_tools() {
   fi
   echo "Installing ${missing[*]}"
   apt-get update -qq
+  # wireshark-common (tshark's) asks whether non-root users may capture packets; the tests only read capture files: no.
+  echo "wireshark-common wireshark-common/install-setuid boolean false" | debconf-set-selections
   DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
 }
 

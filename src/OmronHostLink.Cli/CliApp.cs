@@ -16,9 +16,13 @@ internal static class CliApp
     /// <param name="stderr">Errors, notes and, with <c>--verbose</c>, frames.</param>
     /// <param name="cancellationToken">Ctrl+C: stops <c>monitor</c> and <c>simulate</c> cleanly and cancels any exchange.</param>
     /// <returns>The exit code (see <see cref="ExitCodes"/>).</returns>
-    internal static async Task<int> RunAsync(string[] args, TextWriter stdout, TextWriter stderr, CancellationToken cancellationToken)
+    internal static Task<int> RunAsync(string[] args, TextWriter stdout, TextWriter stderr, CancellationToken cancellationToken)
+        => RunAsync(args, stdout, stderr, null, cancellationToken);
+
+    /// <summary>Runs the command line with serial ports opened by <paramref name="serialPorts"/> (null: the system's).</summary>
+    internal static async Task<int> RunAsync(string[] args, TextWriter stdout, TextWriter stderr, Func<Transports.SerialLineSettings, Transports.IHostLinkTransport>? serialPorts, CancellationToken cancellationToken)
     {
-        var context = new CliContext(stdout, stderr);
+        var context = new CliContext(stdout, stderr, serialPorts);
         RootCommand root = BuildRoot(context);
         // No response files: Host Link frames start with '@', which would otherwise name a file to read arguments from.
         ParseResult parse = root.Parse(args, new ParserConfiguration { ResponseFileTokenReplacer = null });
@@ -76,7 +80,7 @@ internal static class CliApp
                 return ExitCodes.InvalidInput;
             }
 
-            return await RunAsync(target is null ? ["--help"] : [target, "--help"], context.Out, context.Error, cancellationToken).ConfigureAwait(false);
+            return await RunAsync(target is null ? ["--help"] : [target, "--help"], context.Out, context.Error, context.SerialPorts, cancellationToken).ConfigureAwait(false);
         });
         return command;
     }
@@ -87,6 +91,7 @@ internal static class CliApp
         root.Add(context.Verbose);
         root.Add(PortsCommand.Create(context));
         root.Add(ScanCommand.Create(context));
+        root.Add(DetectCommand.Create(context));
         root.Add(TestCommand.Create(context));
         root.Add(StatusCommand.Create(context));
         root.Add(ErrorsCommand.Create(context));
@@ -95,6 +100,7 @@ internal static class CliApp
         root.Add(ReadCommand.Create(context));
         root.Add(WriteCommand.Create(context));
         root.Add(MonitorCommand.Create(context));
+        root.Add(MonitorLineCommand.Create(context));
         root.Add(ExplainCommand.Create(context));
         root.Add(PlanCommand.Create(context));
         root.Add(RawCommand.Create(context));

@@ -6,10 +6,11 @@ namespace OmronHostLink.Cli;
 /// <summary>What every command shares: the output streams and the global options, and how a command body is run.</summary>
 internal sealed class CliContext
 {
-    public CliContext(TextWriter output, TextWriter error)
+    public CliContext(TextWriter output, TextWriter error, Func<Transports.SerialLineSettings, Transports.IHostLinkTransport>? serialPorts = null)
     {
         Out = output;
         Error = error;
+        SerialPorts = serialPorts ?? (settings => new Transports.SerialTransport(settings));
         Verbose = new Option<bool>("--verbose", "-v")
         {
             Description = "Print every frame sent and received, with direction and time (to stderr), and stack traces of errors.",
@@ -20,6 +21,12 @@ internal sealed class CliContext
     public TextWriter Out { get; }
 
     public TextWriter Error { get; }
+
+    /// <summary>
+    /// Opens a serial port at the given settings: the system's port, or in tests an emulated line that shows what other
+    /// settings do (<c>detect</c> opens one per speed and format it tries).
+    /// </summary>
+    public Func<Transports.SerialLineSettings, Transports.IHostLinkTransport> SerialPorts { get; }
 
     /// <summary><c>--verbose</c>, on every command.</summary>
     public Option<bool> Verbose { get; }
@@ -85,6 +92,7 @@ internal sealed class CliContext
     {
         string message = e switch
         {
+            HostLinkEndCodeException { EndCode: EndCode.NotExecutableInRunMode } => e.Message.Trim().TrimEnd('.') + ". A CS/CJ takes C-mode writes in PROGRAM or MONITOR mode only; MONITOR keeps its program running: switch with 'hostlink mode monitor --yes' and the same --port or --tcp, or write with --fins.",
             UsageException => e.Message,
             ArgumentException => Addresses.InCliWords(Addresses.FirstSentence(e.Message)),
             NotSupportedException => Addresses.InCliWords(e.Message), // the model lacks what was asked for

@@ -26,6 +26,8 @@ internal sealed class ConnectionOptions
         ["ReadRetries"] = "--retries",
         ["Model"] = "--model",
         ["HostLinkCompatibleMode"] = "--compatible-mode",
+        ["LocalEcho"] = "--local-echo",
+        ["TraceFile"] = "--trace",
         ["UseCompoundRead"] = "--compound-read",
     };
 
@@ -48,6 +50,8 @@ internal sealed class ConnectionOptions
         Retries = OptionValues.OptionalInteger("--retries", $"Times a read is repeated after a timeout or damaged frame, 0-{SettingRules.MaxRetries} (default {DefaultRetries ?? HostLinkClientSettings.ReadRetriesSetting.Default}; writes are never repeated).", int.MinValue, int.MaxValue, "n");
         Fins = new Option<bool>("--fins") { Description = "Use FINS over Host Link (FA) where C-mode would otherwise be used: reads, writes, bit writes, status and mode." };
         CompatibleMode = OptionValues.OptionalChoice("--compatible-mode", "The Host Link-compatible device mode the PLC's Serial Communications Unit is set to (A: CS/CJ/C, B: CVM1/CV, C: C200H, D: C500/C120): each answer frame is checked to be framed as that mode frames it. Default: any framing.", "a|b|c|d", "a", "b", "c", "d");
+        Trace = new Option<string?>("--trace") { Description = "Write every frame sent and received, with its time and direction, to this file: a pcap for Wireshark (tools/wireshark/omron-hostlink.lua), or JSON lines for a name ending in .jsonl.", HelpName = "file" };
+        LocalEcho = new Option<bool>("--local-echo") { Description = "The line echoes what is sent (a 2-wire RS-485 adapter without echo suppression; 'hostlink detect' tells): read our own frames back before each answer." };
         Set = new Option<string[]>("--set")
         {
             Description = "Any client setting as key=value, as in configuration (repeatable): --set UseCompoundRead=true, --set UnitSendIntervals:3=200ms, --set SendInterval=20ms. See docs/settings.md.",
@@ -91,6 +95,10 @@ internal sealed class ConnectionOptions
 
     public Option<string?> CompatibleMode { get; }
 
+    public Option<bool> LocalEcho { get; }
+
+    public Option<string?> Trace { get; }
+
     /// <summary><c>--set key=value</c>: every client setting, read as configuration reads it.</summary>
     public Option<string[]> Set { get; }
     public Option<string?> CompoundRead { get; }
@@ -129,6 +137,8 @@ internal sealed class ConnectionOptions
         command.Add(Fins);
         command.Add(Model);
         command.Add(CompatibleMode);
+        command.Add(LocalEcho);
+        command.Add(Trace);
         command.Add(Set);
         if (PlansReads)
         {
@@ -156,6 +166,8 @@ internal sealed class ConnectionOptions
             WordOrder = WordOrder,
             CommandSet = options.GetValue(Fins) ? HostLinkCommandSet.Fins : HostLinkCommandSet.CMode,
             Model = options.GetValue(Model),
+            LocalEcho = options.GetValue(LocalEcho) ? true : null,
+            TraceFile = options.GetValue(Trace),
             HostLinkCompatibleMode = options.GetValue(CompatibleMode) switch
             {
                 "a" => HostLinkCompatibleMode.ModeA,
@@ -208,7 +220,16 @@ internal sealed class ConnectionOptions
             throw new UsageException(problem);
         }
 
-        HostLinkClient client = settings.CreateClient(configure);
+        HostLinkClient client;
+        try
+        {
+            client = settings.CreateClient(configure);
+        }
+        catch (ArgumentException e) when (e.ParamName == nameof(HostLinkClientOptions.TraceFile))
+        {
+            throw new UsageException($"--trace: cannot create '{settings.TraceFile}': {e.InnerException?.Message ?? e.Message}", e);
+        }
+
         if (output.Verbose)
         {
             client.FrameObserver = output.FrameTrace();

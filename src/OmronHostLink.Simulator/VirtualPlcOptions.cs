@@ -55,6 +55,13 @@ public sealed class VirtualPlcOptions
     /// <summary>Faults to inject into answers. Default none.</summary>
     public Faults.FaultOptions Faults { get; set; } = new();
 
+    /// <summary>
+    /// Where every frame the PLC's sessions receive and send is logged, with its times (and written to the log's capture
+    /// file, if it has one). Shared, not copied, by <see cref="WithUnits"/>, so the PLCs of a line log to one; a line's
+    /// sessions use its first PLC's. Null (the default): nothing is logged.
+    /// </summary>
+    public SimulatorFrameLog? FrameLog { get; set; }
+
     /// <summary>A copy of these options answering <paramref name="units"/> instead (the fault options are shared, not copied).</summary>
     /// <param name="units">The unit numbers.</param>
     /// <returns>The copy.</returns>

@@ -66,7 +66,7 @@ public class ReadPathBenchmarks
     }
 
     /// <summary>A PLC in a stream: every write is taken as an RD command and answered with a fixed answer of the right size.</summary>
-    private sealed class AnsweringStream : PassThroughStream, IThreadPoolWorkItem
+    internal sealed class AnsweringStream : PassThroughStream, IThreadPoolWorkItem
     {
         private readonly byte[] _answer;
         private readonly bool _onThreadPool;

@@ -36,15 +36,24 @@ internal static class Cli
         return new CliResult(exit, stdout.ToString(), stderr.ToString());
     }
 
+    /// <summary>Runs the command line with serial ports opened by <paramref name="serialPorts"/> (an emulated line), the arguments as given.</summary>
+    public static async Task<CliResult> RunAsync(Func<Transports.SerialLineSettings, Transports.IHostLinkTransport> serialPorts, params string[] args)
+    {
+        var stdout = new StringWriter();
+        var stderr = new StringWriter();
+        int exit = await CliApp.RunAsync(args, TextWriter.Synchronized(stdout), TextWriter.Synchronized(stderr), serialPorts, CancellationToken.None);
+        return new CliResult(exit, stdout.ToString(), stderr.ToString());
+    }
+
     /// <summary>
     /// The command line, with the lossless line's allowance (<see cref="Allowances.LosslessLine"/>) as <c>--timeout</c>
     /// where a command talks to a PLC (<c>--tcp</c> or <c>--port</c>) and the test sets no <c>--timeout</c>: the PLCs
     /// these tests talk to answer every frame, so a deadline must not fail a test because the machine is busy. A scan
-    /// keeps its own short default, since finding the units that do not answer is its job; <c>simulate</c> takes no
-    /// allowance.
+    /// keeps its own short default, since finding the units that do not answer is its job, and so does <c>detect</c>;
+    /// <c>simulate</c> and <c>monitor-line</c> take no allowance.
     /// </summary>
     public static string[] WithAllowance(string[] args)
-        => (args.Contains("--tcp") || args.Contains("--port")) && !args.Contains("--timeout") && args.FirstOrDefault() is not ("scan" or "simulate")
+        => (args.Contains("--tcp") || args.Contains("--port")) && !args.Contains("--timeout") && args.FirstOrDefault() is not ("scan" or "simulate" or "monitor-line" or "detect")
             ? [.. args, "--timeout", Allowances.LosslessLineText]
             : args;
 

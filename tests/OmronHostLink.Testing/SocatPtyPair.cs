@@ -31,6 +31,9 @@ public sealed class SocatPtyPair : IAsyncDisposable
         PathB = pathB;
     }
 
+    /// <summary>socat's process id.</summary>
+    public int ProcessId => _process.Id;
+
     /// <summary>One end: a symbolic link to a /dev/pts/N.</summary>
     public string PathA { get; }
 

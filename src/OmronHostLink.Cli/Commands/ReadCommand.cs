@@ -41,7 +41,7 @@ internal static class ReadCommand
 
     public static Option<string?> AsOption()
     {
-        return OptionValues.OptionalChoice("--as", "word, bcd, int16, uint16, int32, uint32, float, double, string or bit (default: word, or bit for a bit address).", "type", ValueKinds.Names);
+        return OptionValues.OptionalChoice("--as", "word, bcd, int16, uint16, int32, uint32, float, double, string or bit (default: word, or bit for a bit address); real and lreal, as CX-Programmer names them, are float and double.", "type", ValueKinds.Accepted);
     }
 
     /// <summary>The read described by the arguments, checked before anything is sent.</summary>

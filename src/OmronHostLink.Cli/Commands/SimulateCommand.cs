@@ -6,6 +6,7 @@ using OmronHostLink.Protocol.CMode;
 using OmronHostLink.Simulator;
 using OmronHostLink.Simulator.Faults;
 using OmronHostLink.Simulator.Hosting;
+using OmronHostLink.Simulator.Replay;
 using OmronHostLink.Transports;
 
 namespace OmronHostLink.Cli.Commands;
@@ -39,7 +40,10 @@ internal static class SimulateCommand
         var echo = OptionValues.Probability("--fault-echo", "Probability of echoing the command first, as a 2-wire RS-485 line does.");
         Option<TimeSpan?> lateBy = Durations.Option("--fault-late-by", "How late a late answer comes.", TimeSpan.FromSeconds(1), TimeSpan.Zero, TimeSpan.FromMinutes(10));
         Option<int> seed = OptionValues.Integer("--fault-seed", "Seed of the fault generator (same seed, same faults).", 1, int.MinValue, int.MaxValue, "n");
-        foreach (Option o in new Option[] { tcp, port, units, shared, readyFile, mode, memory, baud, dataBits, parity, stopBits, turnaround, model, compatibleMode, drop, corrupt, noise, truncate, late, outOfTurn, lateBy, echo, seed })
+        var capture = new Option<string?>("--capture") { Description = "Write every frame received and sent, with its time and direction, to this file: a pcap for Wireshark (tools/wireshark/omron-hostlink.lua), or JSON lines for a name ending in .jsonl.", HelpName = "file" };
+        var replay = new Option<string?>("--replay") { Description = "Answer as the PLC in this capture did (a pcap from monitor-line --capture, a client's trace or simulate --capture): each command gets the answer recorded for it, in turn; TS is echoed; a command not in the capture gets no answer. Replaces the virtual PLC: --units, --shared-memory, --memory, --model, --mode, --compatible-mode, --turnaround and the faults do not apply.", HelpName = "capture.pcap" };
+        Option[] plcOptions = [units, shared, mode, memory, model, compatibleMode, drop, corrupt, noise, truncate, late, outOfTurn, lateBy, echo, seed, turnaround];
+        foreach (Option o in new Option[] { tcp, port, units, shared, readyFile, mode, memory, baud, dataBits, parity, stopBits, turnaround, model, compatibleMode, drop, corrupt, noise, truncate, late, outOfTurn, lateBy, echo, seed, capture, replay })
         {
             command.Add(o);
         }
@@ -54,6 +58,21 @@ internal static class SimulateCommand
             }
 
             int? baudRate = parse.GetValue(baud);
+            if (parse.GetValue(replay) is { } replayFile)
+            {
+                if (plcOptions.FirstOrDefault(o => parse.GetResult(o) is { Implicit: false }) is { } given)
+                {
+                    throw new UsageException($"--replay answers as the capture does: {given.Name} cannot be combined with it.");
+                }
+
+                if (parse.GetValue(capture) is not null)
+                {
+                    throw new UsageException("--replay answers from a capture: --capture cannot be combined with it.");
+                }
+
+                return await ReplayAsync(parse, output, replayFile, tcpText, portName, baudRate, Serial(parse, portName, baudRate, dataBits, parity, stopBits), parse.GetValue(readyFile), ct).ConfigureAwait(false);
+            }
+
             var options = new VirtualPlcOptions
             {
                 Units = Numbers.ParseUnits(parse.GetValue(units)!, "--units"),
@@ -101,27 +120,25 @@ internal static class SimulateCommand
                 }
             }
 
-            SerialLineSettings? serial = null;
-            if (portName is not null)
+            SerialLineSettings? serial = Serial(parse, portName, baudRate, dataBits, parity, stopBits);
+            if (serial is not null)
             {
-                serial = new SerialLineSettings
-                {
-                    PortName = portName,
-                    BaudRate = baudRate ?? HostLinkSerialSettings.BaudRateSetting.Default!.Value,
-                    DataBits = parse.GetValue(dataBits),
-                    Parity = parse.GetValue(parity) switch { "none" => SerialParity.None, "odd" => SerialParity.Odd, _ => SerialParity.Even },
-                    StopBits = (SerialStopBits)parse.GetValue(stopBits),
-                };
+                options.BitsPerCharacter = serial.BitsPerCharacter;
+            }
+
+            SimulatorFrameLog? log = null;
+            if (parse.GetValue(capture) is { } captureFile)
+            {
                 try
                 {
-                    serial.Validate();
+                    log = new SimulatorFrameLog(captureFile);
                 }
-                catch (ArgumentException e)
+                catch (Exception e) when (e is IOException or UnauthorizedAccessException)
                 {
-                    throw new UsageException(OptionValues.SerialMessage(e), e);
+                    throw new UsageException($"--capture: cannot create '{captureFile}': {e.Message}", e);
                 }
 
-                options.BitsPerCharacter = serial.BitsPerCharacter;
+                options.FrameLog = log;
             }
 
             bool oneCpu = parse.GetValue(shared) || options.Units.Count == 1;
@@ -152,7 +169,8 @@ internal static class SimulateCommand
 
             string unitList = string.Join(",", options.Units.Select(u => u.ToString("D2", CultureInfo.InvariantCulture)));
             VirtualPlc first = line.Plcs[0];
-            string state = $"{StatusCommand.ModeName(first.Mode)} mode, "
+            string memoryText = parse.GetValue(memory) is { } memoryFile ? $"memory from {Path.GetFileName(memoryFile)}" : "memory all zero";
+            string state = $"{StatusCommand.ModeName(first.Mode)} mode, {memoryText}, "
                 + (first.Model is { } emulated ? $"emulating {emulated.WithArticle()} (MM {(emulated.ModelCode is { } mm ? mm.ToString("X2", CultureInfo.InvariantCulture) : "answered IC")})" : $"model code {first.ModelCode:X2}")
                 + (options.HostLinkCompatibleMode is { } compatible ? $", framed as a Serial Communications Unit in Host Link-compatible {CompatibleModeFraming.Of(compatible).Name}" : string.Empty)
                 + (options.Units.Count == 1 ? string.Empty : oneCpu ? ", one PLC answering every unit" : ", each unit a PLC of its own");
@@ -164,6 +182,7 @@ internal static class SimulateCommand
                     await using var host = new SerialSimulatorHost(line, serial, output.Note);
                     await host.StartAsync(ct).ConfigureAwait(false);
                     output.Line($"Simulating units {unitList} ({state}) on {serial}. Ctrl+C stops.");
+                    RunModeNote(output, line, $"--port {serial.PortName}");
                     ReadyFile.Write(ready, serial.PortName);
                     await Task.WhenAny(host.Completion, Task.Delay(Timeout.Infinite, ct)).ConfigureAwait(false);
                     await host.StopAsync(CancellationToken.None).ConfigureAwait(false);
@@ -179,32 +198,141 @@ internal static class SimulateCommand
                 {
                     ReadyFile.Remove(ready);
                 }
+
+                log?.Dispose();
             }
 
-            output.Line("Simulator stopped.");
+            output.Line(log is null ? "Simulator stopped." : $"Simulator stopped; {log.Count} frames captured.");
             return ExitCodes.Success;
         });
         return command;
     }
 
+    /// <summary>Says, when a PLC starts in RUN mode, that C-mode writes are refused and how to get past it.</summary>
+    private static void RunModeNote(OutputWriter output, VirtualPlcLine line, string where)
+    {
+        if (line.Plcs.Any(p => p.Mode == PlcMode.Run))
+        {
+            output.Line($"In RUN mode a CS/CJ refuses C-mode writes (end code 01): switch with 'hostlink mode monitor --yes {where}', or write with --fins.");
+        }
+    }
+
+    /// <summary>The serial port's settings from the options, or null when serving TCP.</summary>
+    private static SerialLineSettings? Serial(ParseResult parse, string? portName, int? baudRate, Option<int> dataBits, Option<string> parity, Option<int> stopBits)
+    {
+        if (portName is null)
+        {
+            return null;
+        }
+
+        var serial = new SerialLineSettings
+        {
+            PortName = portName,
+            BaudRate = baudRate ?? HostLinkSerialSettings.BaudRateSetting.Default!.Value,
+            DataBits = parse.GetValue(dataBits),
+            Parity = parse.GetValue(parity) switch { "none" => SerialParity.None, "odd" => SerialParity.Odd, _ => SerialParity.Even },
+            StopBits = (SerialStopBits)parse.GetValue(stopBits),
+        };
+        try
+        {
+            serial.Validate();
+        }
+        catch (ArgumentException e)
+        {
+            throw new UsageException(OptionValues.SerialMessage(e), e);
+        }
+
+        return serial;
+    }
+
+    /// <summary><c>--replay</c>: serves a PLC that answers as a capture recorded, until Ctrl+C.</summary>
+    private static async Task<int> ReplayAsync(ParseResult parse, OutputWriter output, string file, string? tcpText, string? portName, int? baudRate, SerialLineSettings? serial, string? ready, CancellationToken ct)
+    {
+        CaptureReplay replay;
+        try
+        {
+            replay = CaptureReplay.Load(file, baudRate ?? 0, serial?.BitsPerCharacter ?? 11, output.Note);
+        }
+        catch (Exception e) when (e is FormatException or IOException or UnauthorizedAccessException)
+        {
+            throw new UsageException($"--replay: {e.Message}", e);
+        }
+
+        string units = string.Join(",", replay.Units.Select(u => u.ToString("D2", CultureInfo.InvariantCulture)));
+        string what = $"Replaying {replay.Exchanges} exchanges of {replay.Name} (units {units}: each command gets the answer recorded for it, TS is echoed, others get none)";
+        if (ready is not null)
+        {
+            ReadyFile.Remove(ready);
+        }
+
+        try
+        {
+            if (serial is not null)
+            {
+                await using var host = new SerialSimulatorHost(replay, serial, output.Note);
+                await host.StartAsync(ct).ConfigureAwait(false);
+                output.Line($"{what} on {serial}. Ctrl+C stops.");
+                ReadyFile.Write(ready, serial.PortName);
+                await Task.WhenAny(host.Completion, Task.Delay(Timeout.Infinite, ct)).ConfigureAwait(false);
+                await host.StopAsync(CancellationToken.None).ConfigureAwait(false);
+            }
+            else
+            {
+                (string h, int p) = tcpText is null ? ("127.0.0.1", 9600) : ParseListen(tcpText);
+                IPAddress address = Address(h);
+                await using var host = new TcpSimulatorHost(replay, new IPEndPoint(address, p));
+                await ListenAsync(host, h, p).ConfigureAwait(false);
+                output.Line($"{what} on {host.EndPoint}. Ctrl+C stops.");
+                ReadyFile.Write(ready, host.EndPoint.ToString());
+                await WaitForStopAsync(ct).ConfigureAwait(false);
+                await host.StopAsync(CancellationToken.None).ConfigureAwait(false);
+            }
+        }
+        finally
+        {
+            if (ready is not null)
+            {
+                ReadyFile.Remove(ready);
+            }
+        }
+
+        output.Line(replay.Unmatched == 0 ? "Replay stopped." : $"Replay stopped; {replay.Unmatched} command{(replay.Unmatched == 1 ? " was" : "s were")} not in the capture.");
+        return ExitCodes.Success;
+    }
+
     private static async Task ServeTcpAsync(VirtualPlcLine line, string? tcpText, string unitList, string state, string? ready, OutputWriter output, CancellationToken ct)
     {
         (string h, int p) = tcpText is null ? ("127.0.0.1", 9600) : ParseListen(tcpText);
-        IPAddress address = h is "localhost" ? IPAddress.Loopback : IPAddress.TryParse(h, out IPAddress? ip) ? ip
-            : throw new UsageException($"--tcp: '{h}' is not an IP address to listen on (use 127.0.0.1, 0.0.0.0 or ::).");
+        IPAddress address = Address(h);
         await using var host = new TcpSimulatorHost(line, new IPEndPoint(address, p));
+        await ListenAsync(host, h, p).ConfigureAwait(false);
+
+        // Listening now: a client that connects from here on is served.
+        output.Line($"Simulating units {unitList} ({state}) on {host.EndPoint}. Ctrl+C stops.");
+        RunModeNote(output, line, $"--tcp {host.EndPoint}");
+        ReadyFile.Write(ready, host.EndPoint.ToString());
+        await WaitForStopAsync(ct).ConfigureAwait(false);
+        await host.StopAsync(CancellationToken.None).ConfigureAwait(false);
+    }
+
+    private static IPAddress Address(string h)
+        => h is "localhost" ? IPAddress.Loopback : IPAddress.TryParse(h, out IPAddress? ip) ? ip
+            : throw new UsageException($"--tcp: '{h}' is not an IP address to listen on (use 127.0.0.1, 0.0.0.0 or ::).");
+
+    private static async Task ListenAsync(TcpSimulatorHost host, string h, int p)
+    {
         try
         {
-            await host.StartAsync(ct).ConfigureAwait(false);
+            await host.StartAsync().ConfigureAwait(false);
         }
         catch (SocketException e)
         {
             throw new HostLinkConnectionException($"Cannot listen on {h}:{p}: {e.Message}", e);
         }
+    }
 
-        // Listening now: a client that connects from here on is served.
-        output.Line($"Simulating units {unitList} ({state}) on {host.EndPoint}. Ctrl+C stops.");
-        ReadyFile.Write(ready, host.EndPoint.ToString());
+    private static async Task WaitForStopAsync(CancellationToken ct)
+    {
         try
         {
             await Task.Delay(Timeout.Infinite, ct).ConfigureAwait(false);
@@ -212,8 +340,6 @@ internal static class SimulateCommand
         catch (OperationCanceledException)
         {
         }
-
-        await host.StopAsync(CancellationToken.None).ConfigureAwait(false);
     }
 
     private static (string Host, int Port) ParseListen(string text)

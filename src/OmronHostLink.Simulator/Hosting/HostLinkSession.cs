@@ -1,6 +1,4 @@
-using System.Buffers;
 using System.Diagnostics;
-using System.IO.Pipelines;
 using OmronHostLink.Protocol;
 using OmronHostLink.Simulator.Faults;
 using OmronHostLink.Simulator.Protocol;
@@ -17,6 +15,7 @@ internal sealed class HostLinkSession
     private readonly Dictionary<int, VirtualPlc> _plcs = new();
     private readonly HostLinkExchange _exchange;
     private readonly WirePacer _pacer;
+    private readonly SimulatorFrameLog? _log;
 
     // The line carries one frame at a time: an answer sent out of turn waits for the one being sent, and the other way round.
     private readonly SemaphoreSlim _line = new(1, 1);
@@ -42,70 +41,24 @@ internal sealed class HostLinkSession
 
         _exchange = new HostLinkExchange(responders);
         _pacer = new WirePacer(plcs[0].Options.BaudRate, plcs[0].Options.BitsPerCharacter);
+        _log = plcs[0].Options.FrameLog;
     }
 
-    public async Task RunAsync(Stream stream, CancellationToken cancellationToken)
-    {
-        ArgumentNullException.ThrowIfNull(stream);
-        PipeReader reader = PipeReader.Create(stream, new StreamPipeReaderOptions(leaveOpen: true));
-        try
-        {
-            while (true)
+    public Task RunAsync(Stream stream, CancellationToken cancellationToken)
+        => FrameLoop.RunAsync(
+            stream,
+            () => _exchange.ExpectsFirstFrame,
+            async (received, arrived) =>
             {
-                ReadResult result = await reader.ReadAsync(cancellationToken).ConfigureAwait(false);
-                ReadOnlySequence<byte> buffer = result.Buffer;
-                while (true)
+                _log?.Received(received, arrived);
+                LinkReply reply = _exchange.Receive(received);
+                if (reply.Bytes is not null)
                 {
-                    FrameScanResult scan = FrameReader.TryReadFrame(ref buffer, _exchange.ExpectsFirstFrame, out ReadOnlySequence<byte> frame, out _);
-                    if (scan == FrameScanResult.NeedMoreData)
-                    {
-                        break;
-                    }
-
-                    if (scan == FrameScanResult.Overflow)
-                    {
-                        // No CR within the reception buffer: a real unit discards it silently and starts over.
-                        _exchange.Reset();
-                        if (buffer.Length > FrameReader.MaxFrameLength)
-                        {
-                            buffer = buffer.Slice(buffer.End);
-                        }
-
-                        continue;
-                    }
-
-                    byte[] received = frame.ToArray();
-                    LinkReply reply = _exchange.Receive(received);
-                    if (reply.Bytes is not null)
-                    {
-                        await SendAsync(stream, received, reply, cancellationToken).ConfigureAwait(false);
-                    }
+                    await SendAsync(stream, received, reply, cancellationToken).ConfigureAwait(false);
                 }
-
-                reader.AdvanceTo(buffer.Start, buffer.End);
-                if (result.IsCompleted || result.IsCanceled)
-                {
-                    return;
-                }
-            }
-        }
-        catch (OperationCanceledException) when (cancellationToken.IsCancellationRequested)
-        {
-            // The session was stopped.
-        }
-        catch (IOException)
-        {
-            // The line went away.
-        }
-        catch (ObjectDisposedException)
-        {
-            // The stream was closed under us.
-        }
-        finally
-        {
-            await reader.CompleteAsync().ConfigureAwait(false);
-        }
-    }
+            },
+            _exchange.Reset,
+            cancellationToken);
 
     private static readonly TimeSpan OneMillisecond = TimeSpan.FromMilliseconds(1);
 
@@ -139,7 +92,7 @@ internal sealed class HostLinkSession
         if (plan.Echo)
         {
             // On a 2-wire line the host hears its own command; that happens while it is sent, before the turnaround.
-            await SendOnLineAsync(stream, received, cancellationToken).ConfigureAwait(false);
+            await SendOnLineAsync(stream, received, framed: true, cancellationToken).ConfigureAwait(false);
         }
         else if (_pacer.Enabled)
         {
@@ -196,10 +149,10 @@ internal sealed class HostLinkSession
         {
             if (plan.Noise is { } noise)
             {
-                await _pacer.WriteAsync(stream, noise, cancellationToken).ConfigureAwait(false);
+                await WriteAsync(stream, noise, framed: false, cancellationToken).ConfigureAwait(false);
             }
 
-            await _pacer.WriteAsync(stream, plan.Shape(answer), cancellationToken).ConfigureAwait(false);
+            await WriteAsync(stream, plan.Shape(answer), framed: plan.TruncateTo < 0, cancellationToken).ConfigureAwait(false);
         }
         finally
         {
@@ -207,16 +160,23 @@ internal sealed class HostLinkSession
         }
     }
 
-    private async Task SendOnLineAsync(Stream stream, byte[] bytes, CancellationToken cancellationToken)
+    private async Task SendOnLineAsync(Stream stream, byte[] bytes, bool framed, CancellationToken cancellationToken)
     {
         await _line.WaitAsync(cancellationToken).ConfigureAwait(false);
         try
         {
-            await _pacer.WriteAsync(stream, bytes, cancellationToken).ConfigureAwait(false);
+            await WriteAsync(stream, bytes, framed, cancellationToken).ConfigureAwait(false);
         }
         finally
         {
             _line.Release();
         }
+    }
+
+    /// <summary>Writes bytes at the line's pace and logs them with the times their first and last bytes went out.</summary>
+    private async Task WriteAsync(Stream stream, byte[] bytes, bool framed, CancellationToken cancellationToken)
+    {
+        DateTimeOffset first = await _pacer.WriteAsync(stream, bytes, cancellationToken).ConfigureAwait(false);
+        _log?.Sent(bytes, first, DateTimeOffset.UtcNow, framed);
     }
 }

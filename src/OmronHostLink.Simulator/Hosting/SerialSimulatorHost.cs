@@ -65,6 +65,16 @@ public sealed class SerialSimulatorHost : IAsyncDisposable
     {
     }
 
+    /// <summary>Creates a host that serves a PLC answering as a capture recorded on the serial port <paramref name="settings"/> names, reopening it after it was lost.</summary>
+    /// <param name="replay">The recorded PLC.</param>
+    /// <param name="settings">The port and its line settings.</param>
+    /// <param name="report">Told, in a sentence, when the line is lost and when it is open again; may be null.</param>
+    /// <exception cref="ArgumentException">A setting is not valid.</exception>
+    public SerialSimulatorHost(Replay.CaptureReplay replay, SerialLineSettings settings, Action<string>? report = null)
+        : this((replay ?? throw new ArgumentNullException(nameof(replay))).RunAsync, settings, report)
+    {
+    }
+
     private SerialSimulatorHost(Func<Stream, CancellationToken, Task> serve, SerialLineSettings settings, Action<string>? report)
     {
         ArgumentNullException.ThrowIfNull(settings);

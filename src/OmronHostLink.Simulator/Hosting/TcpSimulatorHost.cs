@@ -39,6 +39,16 @@ public sealed class TcpSimulatorHost : IAsyncDisposable
         _requested = endPoint ?? new IPEndPoint(IPAddress.Loopback, 0);
     }
 
+    /// <summary>Creates the host of a PLC that answers as a capture recorded; it listens once started.</summary>
+    /// <param name="replay">The recorded PLC.</param>
+    /// <param name="endPoint">Where to listen; null for 127.0.0.1 on an ephemeral port. Port 0 picks an ephemeral port.</param>
+    public TcpSimulatorHost(Replay.CaptureReplay replay, IPEndPoint? endPoint = null)
+    {
+        ArgumentNullException.ThrowIfNull(replay);
+        _serve = replay.RunAsync;
+        _requested = endPoint ?? new IPEndPoint(IPAddress.Loopback, 0);
+    }
+
     /// <summary>The bound end point (the actual port when port 0 was asked for); the requested one before <see cref="StartAsync"/>.</summary>
     public IPEndPoint EndPoint => _listener?.LocalEndpoint as IPEndPoint ?? _requested;
 

@@ -42,16 +42,19 @@ internal sealed class WirePacer
 
     private double Step(int count) => count * _secondsPerCharacter / (count - 1);
 
-    public async Task WriteAsync(Stream stream, ReadOnlyMemory<byte> bytes, CancellationToken cancellationToken)
+    /// <summary>Writes <paramref name="bytes"/> at the line's pace.</summary>
+    /// <returns>When the first byte was handed to the stream.</returns>
+    public async Task<DateTimeOffset> WriteAsync(Stream stream, ReadOnlyMemory<byte> bytes, CancellationToken cancellationToken)
     {
         if (!Enabled)
         {
+            DateTimeOffset first = DateTimeOffset.UtcNow;
             await stream.WriteAsync(bytes, cancellationToken).ConfigureAwait(false);
             await stream.FlushAsync(cancellationToken).ConfigureAwait(false);
-            return;
+            return first;
         }
 
-        await Task.Factory.StartNew(
+        return await Task.Factory.StartNew(
             () => Write(stream, bytes.Span, cancellationToken),
             cancellationToken,
             TaskCreationOptions.LongRunning | TaskCreationOptions.DenyChildAttach,
@@ -107,16 +110,17 @@ internal sealed class WirePacer
             TaskScheduler.Default);
     }
 
-    private void Write(Stream stream, ReadOnlySpan<byte> bytes, CancellationToken cancellationToken)
+    private DateTimeOffset Write(Stream stream, ReadOnlySpan<byte> bytes, CancellationToken cancellationToken)
     {
         int n = bytes.Length;
         var clock = Stopwatch.StartNew();
+        DateTimeOffset first = DateTimeOffset.UtcNow;
         if (n <= 1)
         {
             stream.Write(bytes);
             stream.Flush();
             WaitUntil(clock, WireTime(n), cancellationToken);
-            return;
+            return first;
         }
 
         int sent = 0;
@@ -142,5 +146,7 @@ internal sealed class WirePacer
                 SleepUntil(clock, next, cancellationToken);
             }
         }
+
+        return first;
     }
 }

@@ -120,6 +120,15 @@ public sealed class HostLinkClientOptions
     /// </summary>
     public string? LinkName { get; set; }
 
+    /// <summary>
+    /// A file every frame the client sends and receives is written to, with its time and direction, for field
+    /// diagnosis: a pcap (any name not ending in <c>.jsonl</c>, <c>.ndjson</c> or <c>.json</c>) that Wireshark and tshark
+    /// decode with the Host Link dissector in the repository's tools/wireshark folder, or JSON lines (one object a
+    /// frame) for those endings. The file is created (or replaced) when the client is, flushed within a second of each
+    /// frame, and closed with the client. Null (the default): no trace, and the link pays one null check a frame.
+    /// </summary>
+    public string? TraceFile { get; set; }
+
     /// <summary>The clock frame deadlines run on. Default <see cref="TimeProvider.System"/>; tests pass a fake one.</summary>
     public TimeProvider TimeProvider { get; set; } = TimeProvider.System;
 
@@ -182,6 +191,11 @@ public sealed class HostLinkClientOptions
             throw new ArgumentException($"Model {modelProblem}.", nameof(Model));
         }
 
+        if (TraceFile is not null && SettingRules.TraceFile(TraceFile) is { } traceProblem)
+        {
+            throw new ArgumentException($"TraceFile {traceProblem}.", nameof(TraceFile));
+        }
+
         if (LinkName is not null && LinkName.Trim().Length == 0)
         {
             throw new ArgumentException("LinkName is empty; leave it unset (null) to name the link by its port or host:port.", nameof(LinkName));
@@ -220,6 +234,7 @@ public sealed class HostLinkClientOptions
         SendInterval = SendInterval,
         UnitSendIntervals = UnitSendIntervals.Count == 0 ? null : new Dictionary<int, TimeSpan>(UnitSendIntervals),
         TimeProvider = TimeProvider,
+        TraceFile = TraceFile,
         AnswerFraming = HostLinkCompatibleMode is { } mode ? CompatibleModeFraming.Of(mode) : null,
     };
 }

@@ -1,6 +1,7 @@
 using System.Runtime.CompilerServices;
 using System.Threading.Tasks.Sources;
 using Microsoft.Extensions.Logging;
+using OmronHostLink.Capture;
 using OmronHostLink.Protocol;
 using OmronHostLink.Transports;
 
@@ -68,6 +69,8 @@ internal sealed class FrameChannel : IValueTaskSource<bool>
     private CancellationToken _callerToken;
     private CancellationTokenRegistration _callerRegistration;
     private CancellationTokenSource _writeAbort = new();
+    private int _tapUnit = -1;
+    private string? _tapHeader;
 
     public FrameChannel(Stream stream, string description, ILogger logger, TimeProvider time)
     {
@@ -85,8 +88,8 @@ internal sealed class FrameChannel : IValueTaskSource<bool>
         }
     }
 
-    /// <summary>Observes every frame sent and received (for the console's --verbose).</summary>
-    public Action<bool, ReadOnlyMemory<byte>>? FrameObserver { get; set; }
+    /// <summary>The link's frame tap (trace file, frame observer), or null; told of every frame sent and taken.</summary>
+    public FrameTap? Tap { get; set; }
 
     /// <summary>The last frame read by <see cref="ReadFrameAsync"/>.</summary>
     public ReadOnlySpan<byte> Frame(int length) => _frame.AsSpan(0, length);
@@ -132,9 +135,14 @@ internal sealed class FrameChannel : IValueTaskSource<bool>
         ReadLoop();
     }
 
-    /// <summary>Starts a transaction: the caller's token now cancels frame reads and writes.</summary>
-    public void Begin(CancellationToken cancellationToken)
+    /// <summary>
+    /// Starts a transaction: the caller's token now cancels frame reads and writes; <paramref name="unit"/> and
+    /// <paramref name="header"/> name the exchange's later frames to the tap.
+    /// </summary>
+    public void Begin(CancellationToken cancellationToken, int unit = -1, string? header = null)
     {
+        _tapUnit = unit;
+        _tapHeader = header;
         lock (_lock)
         {
             _cancelled = false;
@@ -186,7 +194,7 @@ internal sealed class FrameChannel : IValueTaskSource<bool>
     /// <exception cref="HostLinkTimeoutException">The frame's deadline passed before the bytes were taken.</exception>
     public async ValueTask WriteAsync(ReadOnlyMemory<byte> bytes)
     {
-        FrameObserver?.Invoke(true, bytes);
+        Tap?.OnFrame(new TappedFrame(LineDirection.ToPlc, _time.GetUtcNow(), bytes.Span, _tapUnit, _tapHeader));
         if (_logger.IsEnabled(LogLevel.Trace))
         {
             HostLinkLog.Frame(_logger, _description, ">>", FrameText.Printable(bytes.Span));
@@ -652,7 +660,7 @@ internal sealed class FrameChannel : IValueTaskSource<bool>
 
     private void Observe(int length)
     {
-        FrameObserver?.Invoke(false, _frame.AsMemory(0, length).ToArray());
+        Tap?.OnFrame(new TappedFrame(LineDirection.FromPlc, _time.GetUtcNow(), _frame.AsSpan(0, length), _tapUnit, _tapHeader));
         if (_logger.IsEnabled(LogLevel.Trace))
         {
             HostLinkLog.Frame(_logger, _description, "<<", FrameText.Printable(_frame.AsSpan(0, length)));

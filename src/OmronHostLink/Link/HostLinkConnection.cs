@@ -31,6 +31,8 @@ internal sealed class HostLinkConnection : IAsyncDisposable, IDisposable
     private readonly HostLinkInstruments _instruments;
     private readonly AnswerTiming _answerTiming;
 
+    private readonly CaptureTap? _trace;
+    private ObserverTap? _observer;
     private LinkStatus _status = new(LinkState.Closed);
     private int _sid;
 
@@ -50,6 +52,11 @@ internal sealed class HostLinkConnection : IAsyncDisposable, IDisposable
         };
         _instruments = HostLinkInstruments.For(options.MeterFactory);
         _transport = new LinkTransport(transport, _logger, _time, _instruments, LinkName);
+        if (options.TraceFile is { } traceFile)
+        {
+            _trace = CaptureTap.Create(traceFile);
+            Tap = _trace;
+        }
     }
 
     /// <summary>Where the link stands between transactions.</summary>
@@ -75,8 +82,19 @@ internal sealed class HostLinkConnection : IAsyncDisposable, IDisposable
     /// <summary>The link's name in metrics and traces.</summary>
     public string LinkName { get; }
 
-    /// <summary>Observes every frame sent and received (for the console's --verbose).</summary>
-    public Action<bool, ReadOnlyMemory<byte>>? FrameObserver { get; set; }
+    /// <summary>Observes every frame sent and received (for the console's --verbose); one subscriber of <see cref="Tap"/>.</summary>
+    public Action<bool, ReadOnlyMemory<byte>>? FrameObserver
+    {
+        get => _observer?.Observer;
+        set
+        {
+            _observer = value is null ? null : new ObserverTap(value);
+            Tap = FrameTap.Combine(_trace, _observer);
+        }
+    }
+
+    /// <summary>The link's frame tap: the trace file and the frame observer, told of every frame the link sends and takes.</summary>
+    public FrameTap? Tap { get; private set; }
 
     /// <summary>The next FINS service ID: every FINS exchange carries its own, so an answer to another one is refused.</summary>
     public byte NextSid() => unchecked((byte)Interlocked.Increment(ref _sid));
@@ -162,6 +180,8 @@ internal sealed class HostLinkConnection : IAsyncDisposable, IDisposable
             return;
         }
 
+        _trace?.Dispose();
+
         // Between exchanges the link is tidied here; during one, the exchange does it as it fails.
         if (_gate.Wait(0))
         {
@@ -192,6 +212,7 @@ internal sealed class HostLinkConnection : IAsyncDisposable, IDisposable
             {
                 await _transport.DisposeAsync().ConfigureAwait(false);
                 _status = new LinkStatus(LinkState.Disposed);
+                _trace?.Dispose();
             }
         }
         finally
@@ -228,8 +249,8 @@ internal sealed class HostLinkConnection : IAsyncDisposable, IDisposable
                 _status = new LinkStatus(LinkState.NeedsResync, unit);
             }
 
-            channel.FrameObserver = FrameObserver;
-            channel.Begin(cancellationToken);
+            channel.Tap = Tap;
+            channel.Begin(cancellationToken, unit, header);
             try
             {
                 TResult result = await exchange(this, channel, arg).ConfigureAwait(false);

@@ -38,6 +38,9 @@ internal sealed class HostLinkConnectionOptions
     /// <summary>Sends a TS with a fresh token behind every C-mode answer and takes the answer only when the token comes back next.</summary>
     public bool VerifyAnswers { get; init; }
 
+    /// <summary>A capture file every frame is written to (pcap or JSON lines by its name); null for none.</summary>
+    public string? TraceFile { get; init; }
+
     /// <summary>The clock deadlines run on.</summary>
     public TimeProvider TimeProvider { get; init; } = TimeProvider.System;
 

@@ -97,6 +97,11 @@ internal static class SettingRules
             : name.IndexOf('\0') >= 0 ? "contains a NUL character"
             : null;
 
+    public static string? TraceFile(string path)
+        => path.Trim().Length == 0 ? "is empty; leave it unset for no trace"
+            : path.IndexOf('\0') >= 0 ? "contains a NUL character"
+            : null;
+
     public static string? BaudRate(int baud)
         => Array.IndexOf(StandardBaudRates, baud) < 0 ? $"{baud} is not a standard rate ({string.Join(", ", StandardBaudRates)})" : null;
 

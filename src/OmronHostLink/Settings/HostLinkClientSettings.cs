@@ -72,6 +72,7 @@ public sealed class HostLinkClientSettings
             o => o.HostLinkCompatibleMode,
             (o, v) => o.HostLinkCompatibleMode = v),
         ClientSetting.Value(nameof(SendInterval), s => s.SendInterval, (s, v) => s.SendInterval = v, v => v.Duration(), SettingRules.SendInterval, o => o.SendInterval, (o, v) => o.SendInterval = v),
+        ClientSetting.Reference(nameof(TraceFile), s => s.TraceFile, (s, v) => s.TraceFile = v, v => v.Text(), SettingRules.TraceFile, o => o.TraceFile, (o, v) => o.TraceFile = v),
         ClientSetting.Reference(nameof(UnitSendIntervals), s => s.UnitSendIntervals, (s, v) => s.UnitSendIntervals = v, v => v.UnitDurations(), SettingRules.UnitSendIntervals, o => o.UnitSendIntervals, (o, v) => o.UnitSendIntervals = new Dictionary<int, TimeSpan>(v)),
     ];
 
@@ -142,6 +143,13 @@ public sealed class HostLinkClientSettings
     /// Default none: the CS/CJ sizes only.
     /// </summary>
     public string? Model { get; set; }
+
+    /// <summary>
+    /// A file every frame the client sends and receives is written to, with its time and direction: a pcap for
+    /// Wireshark (see <see cref="HostLinkClientOptions.TraceFile"/>), or JSON lines for a name ending in <c>.jsonl</c>.
+    /// Default none.
+    /// </summary>
+    public string? TraceFile { get; set; }
 
     /// <summary>
     /// The Host Link-compatible device mode of the Serial Communications Unit the client talks to, when it is set to one
