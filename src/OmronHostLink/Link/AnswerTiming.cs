@@ -127,7 +127,7 @@ internal sealed class AnswerTiming
     public bool IsLateWhileOwed(int unit, TimeSpan elapsed, int sent, int received, out TimeSpan usual)
     {
         usual = TimeSpan.Zero;
-        if (!Armed || (uint)unit >= (uint)_observations.Length || _observations[unit] < LeastObservations || Owed(unit) == 0)
+        if (!Armed || (uint)unit >= (uint)_observations.Length || _observations[unit] < LeastObservations || !MayBeOutOfTurn(unit))
         {
             return false;
         }
