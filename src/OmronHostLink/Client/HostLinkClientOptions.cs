@@ -80,7 +80,7 @@ public sealed class HostLinkClientOptions
     /// command fence first, and while a unit's line may be delivering out of turn (an answer of the unit owed after a
     /// timeout, or a frame of it nobody asked for seen within an owed answer's lifetime) its answers get this check
     /// anyway (docs/reliability.md says what each catches). With this on, every C-mode answer is checked, and a read
-    /// carried while an answer is owed is carried twice and taken only when both answers agree; the check costs one TS
+    /// carried while the unit's line may be delivering out of turn is carried twice and taken only when both answers agree; the check costs one TS
     /// exchange per command (about 17 characters each way), and the unit's response time in metrics includes it. FINS
     /// answers carry their command's service ID and need no check.
     /// </summary>

@@ -1,4 +1,5 @@
 using Microsoft.Extensions.Logging;
+using OmronHostLink.Protocol;
 using OmronHostLink.Transports;
 
 namespace OmronHostLink.Link;
@@ -126,7 +127,7 @@ internal sealed class AnswerTiming
     public bool IsLateWhileOwed(int unit, TimeSpan elapsed, int sent, int received, out TimeSpan usual)
     {
         usual = TimeSpan.Zero;
-        if (!Armed || (uint)unit >= (uint)_observations.Length || _observations[unit] < LeastObservations || Owed(unit) == 0)
+        if (!Armed || (uint)unit >= (uint)_observations.Length || _observations[unit] < LeastObservations || !MayBeOutOfTurn(unit))
         {
             return false;
         }
@@ -162,7 +163,11 @@ internal sealed class AnswerTiming
         _owed.Add((unit, _time.GetTimestamp()));
     }
 
-    /// <summary>A frame nobody asked for was seen (discarded, refused or out of turn): it may have been an owed answer.</summary>
+    /// <summary>
+    /// A frame nobody asked for was seen (discarded, refused or out of turn): it may have been an owed answer. An intact
+    /// one (its FCS right) also shows that the unit's line delivers out of turn (<see cref="MayBeOutOfTurn"/>); a damaged
+    /// one may be noise or a damaged answer to the command outstanding.
+    /// </summary>
     /// <param name="frame">The frame, or what is left of it; its unit number is read from <c>@</c> and two digits.</param>
     public void Settled(ReadOnlySpan<byte> frame)
     {
@@ -171,10 +176,19 @@ internal sealed class AnswerTiming
             return;
         }
 
-        Settled(((frame[1] - '0') * 10) + (frame[2] - '0'));
+        int unit = ((frame[1] - '0') * 10) + (frame[2] - '0');
+        int end = frame.IndexOf((byte)'\r');
+        if (end >= 0 && FrameCheck.Of(frame.Slice(0, end + 1)).FcsMatches)
+        {
+            Settled(unit);
+        }
+        else
+        {
+            SettleOwed(unit);
+        }
     }
 
-    /// <summary>A frame of <paramref name="unit"/> nobody asked for was seen, or its answer was refused as a late one: it may have been an owed answer, and the unit's line delivers out of turn.</summary>
+    /// <summary>An intact frame of <paramref name="unit"/> nobody asked for was seen, or its answer was refused as a late one: it may have been an owed answer, and the unit's line delivers out of turn.</summary>
     public void Settled(int unit)
     {
         if ((uint)unit < (uint)_lastUnasked.Length)
@@ -182,6 +196,12 @@ internal sealed class AnswerTiming
             _lastUnasked[unit] = _time.GetTimestamp();
         }
 
+        SettleOwed(unit);
+    }
+
+    /// <summary>Takes a frame of <paramref name="unit"/> as its oldest owed answer, if one is owed.</summary>
+    private void SettleOwed(int unit)
+    {
         int oldest = _owed.FindIndex(o => o.Unit == unit);
         if (oldest >= 0)
         {

@@ -100,8 +100,8 @@ internal sealed class TransactionAttempt
     /// Carries <paramref name="request"/> and decodes its answer. While an earlier command's answer may still come out of
     /// turn (<see cref="AnswerTiming.MayBeOutOfTurn"/>), a C-mode answer is checked with a TS behind it: a late answer
     /// taken for this command's would have this command's own right behind it. With <see cref="VerifyAnswers"/> every C-mode answer is
-    /// so checked, and a read carried while an answer is owed is carried a second time and taken only when both answers
-    /// agree: the owed answer may have stood in for this one's, lost on the line.
+    /// so checked, and a read carried while the unit may be out of turn is carried a second time and taken only when both
+    /// answers agree: a late answer may have stood in for this one's, lost on the line.
     /// </summary>
 #if NET
     [AsyncMethodBuilder(typeof(PoolingAsyncValueTaskMethodBuilder<>))]
@@ -110,8 +110,9 @@ internal sealed class TransactionAttempt
     {
         Reset();
         StartedAt = _time.GetTimestamp();
-        bool shouldVerify = (VerifyAnswers || _answerTiming.MayBeOutOfTurn(request.Unit)) && IsUnmatched(request);
-        bool carryTwice = VerifyAnswers && shouldVerify && request.ReadOnly && _answerTiming.Owed(request.Unit) > 0;
+        bool mayBeOutOfTurn = _answerTiming.MayBeOutOfTurn(request.Unit);
+        bool shouldVerify = (VerifyAnswers || mayBeOutOfTurn) && IsUnmatched(request);
+        bool carryTwice = VerifyAnswers && shouldVerify && request.ReadOnly && mayBeOutOfTurn;
         await CarryOnceAsync(channel, request, shouldVerify).ConfigureAwait(false);
         if (carryTwice)
         {
@@ -300,7 +301,9 @@ internal sealed class TransactionAttempt
     private void CheckArrival(FrameChannel channel, int length, HostLinkRequest request, bool first, bool single)
     {
         TimeSpan elapsed = _time.GetElapsedTime(_sentAt, channel.FrameArrivedAt);
-        if (_answerTiming.IsTooEarly(elapsed, _sentChars, length))
+        // Only a unit that owes an answer, or whose line has lately delivered out of turn, has a late answer to give: an
+        // early answer of any other is the line running faster than configured (or a test host's scheduling), not stale.
+        if (_answerTiming.IsTooEarly(elapsed, _sentChars, length) && _answerTiming.MayBeOutOfTurn(request.Unit))
         {
             _early = $"An answer to {request.Header} from unit {request.Unit:D2} was complete {Math.Max(0, elapsed.TotalMilliseconds):0.0} ms after the command was sent, before the command and its answer could have crossed a {_timing.BaudRate} bps line ({_answerTiming.Earliest(_sentChars + length).TotalMilliseconds:0.0} ms): it is a late answer to an earlier command, not this one.";
             if (!single)

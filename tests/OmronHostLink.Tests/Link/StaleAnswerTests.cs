@@ -34,8 +34,8 @@ public sealed class StaleAnswerTests
     {
         await using var rig = Rig.Start();
 
-        // A read whose answer goes astray: it times out.
-        await rig.TimeOutAsync("D100");
+        // A read whose answer goes astray: it times out, and its answer is owed.
+        await rig.TimeOutAsync("D100", staysOwed: true);
 
         // The next read fences first; the fence's echo, in its wire time, proves the configured speed and arms the check.
         Task<ushort[]> read = rig.Client.ReadWordsAsync("D200", 3);
@@ -153,12 +153,16 @@ public sealed class StaleAnswerTests
     public Task An_early_answer_on_a_line_that_proves_faster_than_configured_stands() => OffContext(async () =>
     {
         await using var rig = Rig.Start();
-        await rig.TimeOutAsync("D100");
+        await rig.TimeOutAsync("D100", staysOwed: true);
         Task<ushort[]> first = rig.Client.ReadWordsAsync("D200", 3);
         await rig.EchoFenceAsync(inWireTime: true);
         await rig.Plc.ReadFrameAsync();
         rig.Time.Advance(Timing.WireTime(17 + RdAnswer.Length));
         await rig.Plc.WriteAsync(RdAnswer);
+        string inTime = await rig.Plc.ReadFrameAsync();
+        inTime.Should().StartWith("@00TS", "an answer is owed: the answer gets a check behind it");
+        rig.Time.Advance(Timing.WireTime(2 * inTime.Length));
+        await rig.Plc.WriteAsync(inTime);
         await first;
 
         // Armed; now an answer comes at once, and so does the check behind it: the line is faster than configured.
@@ -171,6 +175,24 @@ public sealed class StaleAnswerTests
 
         (await read).Should().Equal(RdWords, "the check came back next and as fast: the answer was this command's");
         rig.Logs.WithEvent(8).Should().ContainSingle();
+    });
+
+    [Fact]
+    public Task An_early_answer_of_a_unit_that_owes_nothing_stands_without_a_check() => OffContext(async () =>
+    {
+        await using var rig = Rig.Start();
+
+        // Unit 5 owes an answer and the fence arms the checks; unit 0 owes nothing, so it has no late answer to give.
+        await rig.TimeOutAsync("D100", unit: 5, staysOwed: true);
+        Task<ushort[]> read = rig.Client.ReadWordsAsync("D200", 3);
+        string fence = await rig.Plc.ReadFrameAsync();
+        rig.Time.Advance(Timing.WireTime(2 * fence.Length));
+        await rig.Plc.WriteAsync(fence);
+        (await rig.Plc.ReadFrameAsync()).Should().StartWith("@00RD0200");
+        await rig.Plc.WriteAsync(RdAnswer);
+
+        (await read).Should().Equal(RdWords, "an early answer is stale only where a late one is due");
+        rig.Plc.Received.Should().HaveCount(3, "unit 5's read, its fence and unit 0's read: no check");
     });
 
     [Fact]
