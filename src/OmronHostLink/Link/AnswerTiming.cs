@@ -88,6 +88,11 @@ internal sealed class AnswerTiming
     /// </summary>
     public int Owed(int unit)
     {
+        if (_owed.Count == 0)
+        {
+            return 0;
+        }
+
         TimeSpan lifetime = OwedLifetime;
         _owed.RemoveAll(o => _time.GetElapsedTime(o.At) >= lifetime);
         int count = 0;
