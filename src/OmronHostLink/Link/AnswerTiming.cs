@@ -49,6 +49,13 @@ internal sealed class AnswerTiming
     /// </summary>
     public static readonly TimeSpan LeastOwedLifetime = TimeSpan.FromSeconds(5);
 
+    /// <summary>
+    /// The least wire time of a fence for its echo to arm the checks: 15 ms, a TS fence at up to 19,200 bps. On a faster
+    /// line a busy host's scheduling delays are as long as the characters' time, so an echo that took the line's time
+    /// proves nothing about the line's speed (a stream with no line at all, under load, looks just like it).
+    /// </summary>
+    public static readonly TimeSpan LeastJudgedWireTime = TimeSpan.FromMilliseconds(15);
+
     /// <summary>Owed answers remembered at most (the oldest go first).</summary>
     private const int MostOwed = 64;
 
@@ -247,7 +254,7 @@ internal sealed class AnswerTiming
         TimeSpan earliest = Earliest(sent + received);
         if (elapsed >= earliest)
         {
-            _armed = true;
+            _armed |= _timing.WireTime(sent + received) >= LeastJudgedWireTime;
             Answered(unit, elapsed, sent, received);
             return true;
         }

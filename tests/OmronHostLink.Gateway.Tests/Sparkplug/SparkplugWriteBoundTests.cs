@@ -18,8 +18,9 @@ namespace OmronHostLink.Gateway.Tests.Sparkplug;
 public sealed class SparkplugWriteBoundTests(ITestOutputHelper output, TahuCodecFixture fixture) : IClassFixture<TahuCodecFixture>
 {
     private const int Baud = 38400;
-    // Long enough that a loaded test machine's pauses (measured up to 0.5 s) stay well inside the bound of 2 intervals.
-    private const int PollMs = 1000;
+    // Long enough that a loaded test machine's pauses (measured up to 0.5 s) stay inside the bound of 2 intervals, short
+    // enough that the flood (2 s and more) lasts several.
+    private const int PollMs = 500;
     private const int CommandRefused = 1314;
     private readonly TahuCodec _tahu = fixture.Codec;
 
