@@ -86,7 +86,7 @@ public sealed class HostLinkConfigurationValidationTests
             $"{Line1}:TurnaroundAlowance: not a Host Link client setting; did you mean TurnaroundAllowance?",
             $"{Line1}:BaudRate: not a Host Link client setting; did you mean Serial:BaudRate?",
             $"{Line1}:Unit: not a Host Link client setting; did you mean UnitNumber?",
-            $"{Line1}:Colour: not a Host Link client setting (known: Serial, Tcp, UnitNumber, CommandSet, TurnaroundAllowance, ReadRetries, WriteRetries, WordOrder, LocalEcho, VerifyAnswers, FinsResponseWait, AllowReadModifyWriteBits, UseCompoundRead, Model, HostLinkCompatibleMode, SendInterval, UnitSendIntervals)");
+            $"{Line1}:Colour: not a Host Link client setting (known: Serial, Tcp, UnitNumber, CommandSet, TurnaroundAllowance, ReadRetries, WriteRetries, WordOrder, LocalEcho, VerifyAnswers, FinsResponseWait, AllowReadModifyWriteBits, UseCompoundRead, Model, HostLinkCompatibleMode, SendInterval, TraceFile, UnitSendIntervals)");
     }
 
     [Theory]
