@@ -11,8 +11,9 @@ namespace OmronHostLink.Link;
 /// <list type="bullet">
 /// <item><b>Too early.</b> A frame of N characters that answers M characters sent cannot be complete before (M + N)
 /// characters have crossed the line.</item>
-/// <item><b>Late while an answer is owed.</b> After an exchange timed out with its command sent, its answer may still
-/// come (<see cref="AnswerOwed"/>) until a frame nobody asked for is seen (<see cref="Settled(ReadOnlySpan{byte})"/>). Meanwhile an answer
+/// <item><b>Late while out of turn.</b> After an exchange timed out with its command sent, its answer may still
+/// come (<see cref="AnswerOwed"/>) until a frame nobody asked for is seen (<see cref="Settled(ReadOnlySpan{byte})"/>). Meanwhile, and
+/// for as long after a frame nobody asked for (<see cref="MayBeOutOfTurn"/>), an answer
 /// that comes later than the unit has lately been answering (its recent longest turnaround, two character times and
 /// <see cref="LateMargin"/>) may be that answer standing in for one lost on the line.</item>
 /// </list>
@@ -133,8 +134,9 @@ internal sealed class AnswerTiming
     public bool IsTooEarly(TimeSpan elapsed, int sent, int received) => Armed && elapsed < Earliest(sent + received);
 
     /// <summary>
-    /// Whether an answer from <paramref name="unit"/> came so late, while an answer is owed, that it may be the owed one;
-    /// if so, <paramref name="usual"/> is the latest the unit has lately been answering in.
+    /// Whether an answer from <paramref name="unit"/> came so late, while the unit may be out of turn
+    /// (<see cref="MayBeOutOfTurn"/>), that it may be an earlier command's; if so, <paramref name="usual"/> is the latest
+    /// the unit has lately been answering in.
     /// </summary>
     public bool IsLateWhileOwed(int unit, TimeSpan elapsed, int sent, int received, out TimeSpan usual)
     {
