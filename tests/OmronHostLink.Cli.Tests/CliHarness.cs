@@ -61,7 +61,7 @@ internal static class Cli
     /// The probe wait of a scan that must find the units that are there: a scan tells an absent unit by this deadline,
     /// so each absent one costs it, and a present one must answer within it even on a busy machine.
     /// </summary>
-    public const string ScanTimeout = "1s";
+    public const string ScanTimeout = "2s";
 
     /// <summary>A loopback port nobody listens on.</summary>
     public static int ClosedPort()
