@@ -23,21 +23,21 @@ public sealed class WindowsProgramTests(WineBed bed)
         string exe = Path.Combine(folder, "hostlink.exe");
         await using Simulation simulation = await Simulation.StartAsync();
 
-        ProcessResult read = await bed.RunAsync(bed.Wine64, [exe, "read", "D100", "10", "--json", "--tcp", simulation.Endpoint], Timeout);
+        ProcessResult read = await bed.RunAsync(bed.Wine64, [exe, "read", "D100", "10", "--json", "--tcp", simulation.Endpoint, "--set", Allowance], Timeout);
         read.ExitCode.Should().Be(0, read.Output);
         JsonNode document = JsonNode.Parse(read.Lines.Single())!;
         document["values"]!.AsArray().Select(v => (int)v!).Should().Equal(Enumerable.Range(1000, 10));
 
-        ProcessResult write = await bed.RunAsync(bed.Wine64, [exe, "write", "D200", "1234", "4321", "--tcp", simulation.Endpoint], Timeout);
+        ProcessResult write = await bed.RunAsync(bed.Wine64, [exe, "write", "D200", "1234", "4321", "--tcp", simulation.Endpoint, "--set", Allowance], Timeout);
         write.ExitCode.Should().Be(0, write.Output);
         simulation.Unit0.ReadWords("D200", 2).Should().Equal(1234, 4321);
 
         simulation.Unit0.Mode = PlcMode.Run;
-        ProcessResult refused = await bed.RunAsync(bed.Wine64, [exe, "write", "D200", "1", "--tcp", simulation.Endpoint], Timeout);
+        ProcessResult refused = await bed.RunAsync(bed.Wine64, [exe, "write", "D200", "1", "--tcp", simulation.Endpoint, "--set", Allowance], Timeout);
         refused.ExitCode.Should().Be(3, "exit 3 is a PLC end code: " + refused.Output);
         refused.Output.Should().Contain("RUN mode");
 
-        await using WineProcess monitor = bed.Launch(bed.Wine64, [exe, "monitor", "D100", "--interval", "100ms", "--count", "100", "--json", "--tcp", simulation.Endpoint]);
+        await using WineProcess monitor = bed.Launch(bed.Wine64, [exe, "monitor", "D100", "--interval", "100ms", "--count", "100", "--json", "--tcp", simulation.Endpoint, "--set", Allowance]);
         await monitor.WaitForLineAsync(l => l.Contains("\"values\":[1000]", StringComparison.Ordinal), Timeout, "with D100's first value");
         simulation.Unit0.WriteWords("D100", [555]);
         await monitor.WaitForLineAsync(l => l.Contains("\"values\":[555]", StringComparison.Ordinal), Timeout, "with D100's new value");
@@ -88,6 +88,12 @@ public sealed class WindowsProgramTests(WineBed bed)
         Directory.GetFiles(state).Select(Path.GetFileName).Should().Contain("gw-wine.queue.db", "the durable queue lives in the state folder");
         gateway.HasExited.Should().BeFalse(gateway.Output);
     }
+
+    /// <summary>
+    /// The turnaround allowance hostlink.exe is given: under Wine, on a test machine that builds and tests beside it, an
+    /// answer can wait for a thread longer than the default.
+    /// </summary>
+    private const string Allowance = "TurnaroundAllowance=00:00:02";
 
     /// <summary>docs/install-windows.md's first step: the link, the groups, the broker, the writes; nothing else.</summary>
     private static void EditConfiguration(string path, string endpoint, int brokerPort)
