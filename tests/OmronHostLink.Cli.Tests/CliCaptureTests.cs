@@ -77,11 +77,8 @@ public sealed class CliCaptureTests : IDisposable
         }
 
         long logged = log.Count;
-        for (int i = 0; i < 120 && CaptureRecords(capture) < logged; i++)
-        {
-            // The monitor writes its capture within a second of each frame.
-            await Task.Delay(250);
-        }
+        // The monitor writes its capture within a second of each frame.
+        await Eventually.UntilAsync(() => CaptureRecords(capture) >= logged, "the monitor's capture holds every frame the simulator logged", () => $"It holds {CaptureRecords(capture)} of {logged}.");
 
         (await monitor.StopAsync(TimeSpan.FromSeconds(10))).Should().BeTrue("the monitor stops on SIGTERM: {0}", monitor);
         await host.StopAsync();
@@ -374,14 +371,10 @@ public sealed class CliCaptureTests : IDisposable
 
     private static async Task<string> ReadyAsync(string ready, Task<CliResult> sim)
     {
-        for (int i = 0; i < 400 && !File.Exists(ready); i++)
+        await Eventually.UntilAsync(() => File.Exists(ready) || sim.IsCompleted, "simulate is ready", patience: TimeSpan.FromSeconds(20));
+        if (!File.Exists(ready))
         {
-            if (sim.IsCompleted)
-            {
-                throw new Xunit.Sdk.XunitException("simulate ended before it was ready: " + await sim);
-            }
-
-            await Task.Delay(50);
+            throw new Xunit.Sdk.XunitException("simulate ended before it was ready: " + await sim);
         }
 
         return (await File.ReadAllTextAsync(ready)).Trim();

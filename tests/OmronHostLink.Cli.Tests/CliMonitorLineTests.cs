@@ -109,12 +109,10 @@ public sealed class CliMonitorLineTests : IDisposable
         await ClientAsync(["status", .. port]);
 
         long logged = log.Count;
-        (await WaitUntilAsync(() => FramesIn(monitor.Out) >= logged, TimeSpan.FromSeconds(30))).Should().BeTrue(
-            "the monitor hears the last frames within seconds ({0} of {1} frames, strays and noise: {2}): {3}",
-            FramesIn(monitor.Out),
-            logged,
-            string.Join(" ", monitor.Out.Split('\n').Where(l => l.Contains("\"stray\"", StringComparison.Ordinal) || l.Contains("\"noise\"", StringComparison.Ordinal)).Take(5)),
-            monitor.Err);
+        await Eventually.UntilAsync(
+            () => FramesIn(monitor.Out) >= logged,
+            "the monitor hears the last frames",
+            () => string.Create(CultureInfo.InvariantCulture, $"{FramesIn(monitor.Out)} of {logged} frames; strays and noise: {string.Join(" ", monitor.Out.Split('\n').Where(l => l.Contains("\"stray\"", StringComparison.Ordinal) || l.Contains("\"noise\"", StringComparison.Ordinal)).Take(5))}; {monitor.Err}"));
         (await monitor.StopAsync(TimeSpan.FromSeconds(10))).Should().BeTrue("the monitor stops cleanly on SIGTERM");
         await host.StopAsync();
         string[] documents = monitor.Out.Split('\n', StringSplitOptions.RemoveEmptyEntries);
@@ -140,22 +138,6 @@ public sealed class CliMonitorLineTests : IDisposable
         }
 
         return frames;
-    }
-
-    private static async Task<bool> WaitUntilAsync(Func<bool> condition, TimeSpan timeout)
-    {
-        var clock = Stopwatch.StartNew();
-        while (!condition())
-        {
-            if (clock.Elapsed > timeout)
-            {
-                return false;
-            }
-
-            await Task.Delay(250);
-        }
-
-        return true;
     }
 
     /// <summary>What the simulator logged and what the monitor printed and captured.</summary>

@@ -73,23 +73,19 @@ internal sealed class ServiceProcess : ProgramProcess
 
     private async Task<int> ReadPidAsync(string pidFile)
     {
-        var clock = Stopwatch.StartNew();
-        while (clock.Elapsed < TimeSpan.FromSeconds(10))
+        // The shell writes "<pid>\n"; a read between its open and its write sees an empty file.
+        string? text = null;
+        bool Written() => File.Exists(pidFile) && File.ReadAllText(pidFile) is { Length: > 1 } t && t.EndsWith('\n') && (text = t) is not null;
+        try
         {
-            // The shell writes "<pid>\n"; a read between its open and its write sees an empty file.
-            if (File.Exists(pidFile) && File.ReadAllText(pidFile) is { Length: > 1 } text && text.EndsWith('\n'))
-            {
-                return int.Parse(text, System.Globalization.CultureInfo.InvariantCulture);
-            }
-
-            if (HasExited)
-            {
-                break;
-            }
-
-            await Task.Delay(20);
+            await Eventually.UntilAsync(() => Written() || HasExited, "the worker's process id is written", patience: TimeSpan.FromSeconds(10));
+        }
+        catch (TimeoutException)
+        {
         }
 
-        throw new InvalidOperationException($"The worker's process id did not appear in {pidFile}. {Output}");
+        return text is not null || Written()
+            ? int.Parse(text!, System.Globalization.CultureInfo.InvariantCulture)
+            : throw new InvalidOperationException($"The worker's process id did not appear in {pidFile}. {Output}");
     }
 }

@@ -129,16 +129,7 @@ public sealed class RecordingSimulator : IAsyncDisposable
     public async Task WaitForAnswersAsync(long since, int count, TimeSpan? patience = null)
     {
         TimeSpan limit = patience ?? TimeSpan.FromSeconds(10);
-        var clock = Stopwatch.StartNew();
-        while (Answers < since + count)
-        {
-            if (clock.Elapsed > limit)
-            {
-                throw new Xunit.Sdk.XunitException($"The PLC sent {Answers - since} of {count} answers within {limit.TotalSeconds} s.");
-            }
-
-            await Task.Delay(5);
-        }
+        await Eventually.UntilAsync(() => Answers >= since + count, $"the PLC sends {count} answers", () => $"It sent {Answers - since}.", limit);
     }
 
     /// <inheritdoc/>

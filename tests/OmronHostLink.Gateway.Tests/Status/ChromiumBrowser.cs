@@ -74,32 +74,30 @@ internal sealed class ChromiumBrowser : IDisposable
         Session.GetScreenshot().SaveAsFile(path);
     }
 
-    /// <summary>Waits until <paramref name="condition"/> holds in the page (checking every 100 ms), at most <paramref name="patience"/> (default 60 s).</summary>
+    /// <summary>Waits until <paramref name="condition"/> holds in the page, at most <paramref name="patience"/> (default 60 s).</summary>
     public async Task<T> Until<T>(Func<ChromiumBrowser, T?> condition, string what, TimeSpan? patience = null)
     {
         TimeSpan limit = patience ?? TimeSpan.FromSeconds(60);
-        var clock = System.Diagnostics.Stopwatch.StartNew();
         Exception? last = null;
-        while (clock.Elapsed < limit)
+        T? found = default;
+        bool Holds()
         {
             try
             {
                 T? value = condition(this);
-                if (value is not null && !(value is bool b && !b))
-                {
-                    return value;
-                }
+                found = value;
+                return value is not null && !(value is bool b && !b);
             }
             catch (WebDriverException e)
             {
                 // The page re-rendered the element meanwhile (stale): look again.
                 last = e;
+                return false;
             }
-
-            await Task.Delay(100);
         }
 
-        throw new Xunit.Sdk.XunitException($"Timed out after {limit.TotalSeconds} s waiting until {what}.{(last is null ? "" : " Last: " + last.Message)}{Environment.NewLine}Page: {Text()}");
+        await Eventually.UntilAsync(Holds, what, () => $"{(last is null ? "" : "Last: " + last.Message + Environment.NewLine)}Page: {Text()}", limit);
+        return found!;
     }
 
     /// <summary>The text of the page's visible view.</summary>

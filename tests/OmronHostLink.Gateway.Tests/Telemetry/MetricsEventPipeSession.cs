@@ -61,18 +61,15 @@ internal sealed class MetricsEventPipeSession : IAsyncDisposable
     /// <summary>Waits until a value satisfies <paramref name="predicate"/>; false after <paramref name="timeout"/>.</summary>
     public async Task<bool> WaitForAsync(Func<IReadOnlyList<PublishedValue>, bool> predicate, TimeSpan timeout)
     {
-        using var cts = new CancellationTokenSource(timeout);
-        while (!predicate(Values))
+        try
         {
-            if (cts.IsCancellationRequested || _processing.IsCompleted)
-            {
-                return predicate(Values);
-            }
-
-            await Task.Delay(100, CancellationToken.None);
+            await Eventually.UntilAsync(() => predicate(Values) || _processing.IsCompleted, "the session receives the values", patience: timeout);
+        }
+        catch (TimeoutException)
+        {
         }
 
-        return true;
+        return predicate(Values);
     }
 
     public async ValueTask DisposeAsync()
