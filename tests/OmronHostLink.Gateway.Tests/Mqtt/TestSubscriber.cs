@@ -8,7 +8,7 @@ using MQTTnet.Protocol;
 namespace OmronHostLink.Gateway.Tests.Mqtt;
 
 /// <summary>A message as a test subscriber received it (<see cref="Bytes"/>: the payload as sent, for binary payloads).</summary>
-public sealed record ReceivedMessage(string Topic, string Payload, bool Retain, string? ResponseTopic, byte[]? CorrelationData, byte[]? Bytes = null);
+public sealed record ReceivedMessage(string Topic, string Payload, bool Retain, string? ResponseTopic, byte[]? CorrelationData, byte[]? Bytes = null, bool Duplicate = false);
 
 /// <summary>
 /// An MQTTnet client on the test's side of the broker: records what arrives on its subscriptions and waits for
@@ -36,7 +36,7 @@ public sealed class TestSubscriber : IAsyncDisposable
         {
             MqttApplicationMessage m = e.ApplicationMessage;
             byte[] bytes = m.Payload.ToArray();
-            var received = new ReceivedMessage(m.Topic, Encoding.UTF8.GetString(bytes), m.Retain, m.ResponseTopic, m.CorrelationData, bytes);
+            var received = new ReceivedMessage(m.Topic, Encoding.UTF8.GetString(bytes), m.Retain, m.ResponseTopic, m.CorrelationData, bytes, m.Dup);
             lock (_messages)
             {
                 _messages.Add(received);
@@ -183,7 +183,7 @@ public sealed class TestSubscriber : IAsyncDisposable
     }
 
     /// <summary>Everything received, one line each (for failure messages).</summary>
-    public string Dump() => string.Join(Environment.NewLine, Messages.Select(m => $"  {m.Topic}{(m.Retain ? " (retained)" : "")}: {m.Payload}"));
+    public string Dump() => string.Join(Environment.NewLine, Messages.Select(m => $"  {m.Topic}{(m.Retain ? " (retained)" : "")}{(m.Duplicate ? " (redelivered)" : "")}: {m.Payload}"));
 
     /// <inheritdoc/>
     public async ValueTask DisposeAsync()
