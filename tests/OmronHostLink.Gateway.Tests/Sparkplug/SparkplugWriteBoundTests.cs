@@ -107,7 +107,9 @@ public sealed class SparkplugWriteBoundTests(ITestOutputHelper output, TahuCodec
             watchPolls.Length.Should().BeGreaterThan(2, "the flood lasts several poll intervals");
             TimeSpan longest = watchPolls.Zip(watchPolls.Skip(1), (a, b) => b - a).Max();
             output.WriteLine($"watch polled {watchPolls.Length} times during the flood; longest gap {longest.TotalMilliseconds:0} ms (interval {PollMs} ms)");
-            longest.Should().BeLessThan(TimeSpan.FromMilliseconds(2 * PollMs), "the writes take turns with the polls");
+            // A poll waits for the write on the line at most; a loaded machine may still wake its timer a cycle late.
+            // Writes that did not take turns would hold the polls off for the whole flood (seconds).
+            longest.Should().BeLessThan(TimeSpan.FromMilliseconds(3 * PollMs), "the writes take turns with the polls");
         }
         finally
         {
