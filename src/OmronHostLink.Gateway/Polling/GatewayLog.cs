@@ -105,11 +105,11 @@ internal static partial class GatewayLog
     [LoggerMessage(EventId = Events.LinkPlanned, Level = LogLevel.Information, Message = "link {Link}: {Tags} tag(s) in {Classes} scan class(es) on {Line}: {Reads} read(s) and {Characters} characters a cycle in all, {Load:P0} of the line's time")]
     internal static partial void LinkPlanned(ILogger logger, string link, int tags, int classes, string line, int reads, int characters, double load);
 
-    [LoggerMessage(EventId = Events.ScanPlanned, Level = LogLevel.Information, Message = "link {Link}: unit {Unit} every {Interval}: {Tags} tag(s) in {Plan}{Note}")]
-    internal static partial void ScanPlanned(ILogger logger, string link, int unit, string interval, int tags, string plan, string note);
+    [LoggerMessage(EventId = Events.ScanPlanned, Level = LogLevel.Information, Message = "link {Link}: unit {Unit} every {Interval}: {Tags} tag(s) in {Plan}; {CycleMs:0} ms a cycle on the line ({LineMs:0} ms of its own){Note}")]
+    internal static partial void ScanPlanned(ILogger logger, string link, int unit, string interval, int tags, string plan, double cycleMs, double lineMs, string note);
 
-    [LoggerMessage(EventId = Events.ScanCannotFit, Level = LogLevel.Warning, Message = "link {Link}: unit {Unit}'s {Tags} tag(s) every {Interval} need {EstimatedMs:0} ms a cycle on this line ({Plan}), more than their interval: they will be read every {EstimatedMs:0} ms at best. A longer Interval, fewer tags at this rate, QQ (UseCompoundRead) or a faster line would fit them")]
-    internal static partial void ScanCannotFit(ILogger logger, string link, int unit, int tags, string interval, double estimatedMs, string plan);
+    [LoggerMessage(EventId = Events.ScanCannotFit, Level = LogLevel.Warning, Message = "link {Link}: unit {Unit}'s {Tags} tag(s) every {Interval} need {EstimatedMs:0} ms a cycle on this line ({LineMs:0} ms of their own, {Plan}; the rest waits for the link's other scan classes), more than their interval: they will be read every {EstimatedMs:0} ms at best. A longer Interval, fewer tags at this rate, QQ (UseCompoundRead) or a faster line would fit them")]
+    internal static partial void ScanCannotFit(ILogger logger, string link, int unit, int tags, string interval, double estimatedMs, double lineMs, string plan);
 
     [LoggerMessage(EventId = Events.LinkOverloaded, Level = LogLevel.Warning, Message = "link {Link}: its scan classes need {Load:P0} of the line's time ({Detail}): the line cannot read every tag at its interval, and cycles will overrun")]
     internal static partial void LinkOverloaded(ILogger logger, string link, double load, string detail);

@@ -491,14 +491,20 @@ internal sealed class LinkPoller(string name, LinkOptions options, Func<HostLink
         bool again = scan.Plan is not null;
         bool compoundDropped = again && UsesCompound(scan.Plan!) && !UsesCompound(plan);
         scan.Plan = plan;
-        ScanPlan report = Report(scan);
-        (sink as IScanOutput)?.ScanPlanned(report);
+
+        // A plan changes every class's expected cycle on the shared line: each is reported again.
+        ScanPlan[] reports = Reports();
+        foreach (ScanPlan each in reports)
+        {
+            (sink as IScanOutput)?.ScanPlanned(each);
+        }
+
         if (_planLogged)
         {
             // A later plan: a unit's model became known (MM), QQ was refused, or the scan class was split or joined.
             if (!scan.Isolated)
             {
-                LogScan(report, compoundDropped ? " (planned again: the unit answered QQ with an error, and is read by area from now on)" : again ? " (planned again)" : "");
+                LogScan(ReportOf(reports, scan), compoundDropped ? " (planned again: the unit answered QQ with an error, and is read by area from now on)" : again ? " (planned again)" : "");
             }
 
             return;
@@ -522,25 +528,26 @@ internal sealed class LinkPoller(string name, LinkOptions options, Func<HostLink
     /// <summary>
     /// The link's plan at start: a line for the link, one for each scan class, and what will not fit. A scan class whose
     /// unit is asked its model (MM) before QQ is used is judged by its plan with QQ, which it reads with once the unit
-    /// names a model that has it.
+    /// names a model that has it, on the line as it will be then.
     /// </summary>
     private void LogPlan()
     {
-        (ScanPlan Plan, ReadPlan? Pending)[] plans = _classes.Select(c => (Report(c), ScanPlanReport.PendingCompound(c, options))).ToArray();
-        ScanPlan[] expected = plans.Select(p => p.Pending is { } qq ? p.Plan with { Reads = qq.TransactionCount, Characters = qq.Characters, EstimatedCycle = qq.EstimatedTime + Gaps(qq.TransactionCount) } : p.Plan).ToArray();
+        ScanPlan[] plans = Reports();
+        ReadPlan?[] pending = _classes.Select(c => ScanPlanReport.PendingCompound(c, options)).ToArray();
+        ScanPlan[] expected = Reports(c => ScanPlanReport.PendingCompound(c, options));
         double load = expected.Sum(Load);
         GatewayLog.LinkPlanned(logger, name, _groups.Count, plans.Length, Line(), expected.Sum(p => p.Reads), expected.Sum(p => p.Characters), load);
         for (int i = 0; i < plans.Length; i++)
         {
-            string note = plans[i].Pending is { } qq
-                ? $"; once the unit names its model (MM), and where that model has QQ: {qq}"
+            string note = pending[i] is { } qq
+                ? $"; once the unit names its model (MM), and where that model has QQ: {qq}, {PollScan.Durations(expected[i].EstimatedCycle)} a cycle"
                 : "";
-            LogScan(plans[i].Plan, note, expected[i]);
+            LogScan(plans[i], note, expected[i]);
         }
 
         if (load > 1 && plans.Length > 1)
         {
-            string detail = string.Join("; ", expected.Select(p => $"unit {p.Unit} every {PollScan.Durations(p.Interval)}: {PollScan.Durations(p.EstimatedCycle)} a cycle, {Load(p):P0}"));
+            string detail = string.Join("; ", expected.Select(p => $"unit {p.Unit} every {PollScan.Durations(p.Interval)}: {PollScan.Durations(p.LineTime)} on the line a cycle, {Load(p):P0}"));
             GatewayLog.LinkOverloaded(logger, name, load, detail);
         }
     }
@@ -548,31 +555,67 @@ internal sealed class LinkPoller(string name, LinkOptions options, Func<HostLink
     /// <summary>Logs a scan class's plan, and warns when <paramref name="judged"/> (the plan, or the one it will read with) cannot keep the interval.</summary>
     private void LogScan(ScanPlan plan, string note, ScanPlan? judged = null)
     {
-        GatewayLog.ScanPlanned(logger, name, plan.Unit, PollScan.Durations(plan.Interval), plan.Tags, plan.Description, note);
+        GatewayLog.ScanPlanned(logger, name, plan.Unit, PollScan.Durations(plan.Interval), plan.Tags, plan.Description, plan.EstimatedCycle.TotalMilliseconds, plan.LineTime.TotalMilliseconds, note);
         judged ??= plan;
         if (judged.EstimatedCycle > judged.Interval)
         {
-            GatewayLog.ScanCannotFit(logger, name, judged.Unit, judged.Tags, PollScan.Durations(judged.Interval), judged.EstimatedCycle.TotalMilliseconds, judged.Description == plan.Description ? plan.Description : "with QQ");
+            GatewayLog.ScanCannotFit(logger, name, judged.Unit, judged.Tags, PollScan.Durations(judged.Interval), judged.EstimatedCycle.TotalMilliseconds, judged.LineTime.TotalMilliseconds, judged.Description == plan.Description ? plan.Description : "with QQ");
         }
     }
 
-    private TimeSpan Gaps(int reads) => TimeSpan.FromTicks((options.Client.SendInterval ?? TimeSpan.Zero).Ticks * reads);
+    private TimeSpan Gap => options.Client.SendInterval ?? TimeSpan.Zero;
 
     /// <summary>
-    /// A scan class's plan as the outputs see it: its own reads, and those of its groups read on their own after a
-    /// failure; the least time a cycle takes is the plan's time on the line and the send interval before each command.
+    /// The scan classes' plans as the outputs see them: each class's own reads, and those of its groups read on their
+    /// own after a failure; its own time on the line (the reads' characters at the line's speed and the send interval
+    /// before each); and the cycle it can expect on the line it shares with the link's other classes
+    /// (<see cref="LineSchedule"/>). With <paramref name="instead"/>, a class is reckoned with the plan it gives (the
+    /// one it will read with) where it gives one.
     /// </summary>
-    private ScanPlan Report(PollScan scan)
+    private ScanPlan[] Reports(Func<PollScan, ReadPlan?>? instead = null)
     {
-        PollScan[] parts = _runs.Select(r => r.Scan).Where(s => s.UnitNumber == scan.UnitNumber && s.Interval == scan.Interval).Append(scan).Distinct().ToArray();
-        ReadPlan[] plans = parts.Where(p => p.Plan is not null).Select(p => p.Plan!).ToArray();
-        int reads = plans.Sum(p => p.TransactionCount);
-        TimeSpan estimated = TimeSpan.FromTicks(plans.Sum(p => p.EstimatedTime.Ticks)) + Gaps(reads);
-        string description = string.Join(" + ", plans.Select(p => p.ToString()));
-        return new ScanPlan(name, scan.UnitNumber, scan.Interval, parts.Sum(p => p.Groups.Count), reads, plans.Sum(p => p.Characters), estimated, description);
+        PollScan[] classes = _classes.Where(c => c.Plan is not null).ToArray();
+        var parts = new List<(PollScan Part, ReadPlan Plan)[]>();
+        foreach (PollScan scan in classes)
+        {
+            ReadPlan own = instead?.Invoke(scan) ?? scan.Plan!;
+            parts.Add(_runs.Select(r => r.Scan)
+                .Where(s => s != scan && s.Plan is not null && s.UnitNumber == scan.UnitNumber && s.Interval == scan.Interval)
+                .Select(s => (s, s.Plan!))
+                .Prepend((scan, own))
+                .ToArray());
+        }
+
+        LineSchedule.Watch[] watches = parts.SelectMany(p => p).Select(p => new LineSchedule.Watch(p.Part.Interval, LineSchedule.Reads(p.Plan, Gap))).ToArray();
+        TimeSpan[] cycles = LineSchedule.ExpectedCycles(watches);
+        var reports = new ScanPlan[classes.Length];
+        int w = 0;
+        for (int i = 0; i < classes.Length; i++)
+        {
+            (PollScan Part, ReadPlan Plan)[] own = parts[i];
+            TimeSpan lineTime = TimeSpan.FromTicks(watches.Skip(w).Take(own.Length).Sum(p => p.LineTime.Ticks));
+            reports[i] = new ScanPlan(
+                name,
+                classes[i].UnitNumber,
+                classes[i].Interval,
+                own.Sum(p => p.Part.Groups.Count),
+                own.Sum(p => p.Plan.TransactionCount),
+                own.Sum(p => p.Plan.Characters),
+                lineTime,
+                cycles[w],
+                string.Join(" + ", own.Select(p => p.Plan.ToString())));
+            w += own.Length;
+        }
+
+        return reports;
     }
 
-    private static double Load(ScanPlan plan) => plan.EstimatedCycle.TotalSeconds / plan.Interval.TotalSeconds;
+    /// <summary>The report of <paramref name="scan"/>'s class (a part read on its own belongs to its unit's class at its interval).</summary>
+    private static ScanPlan ReportOf(ScanPlan[] reports, PollScan scan)
+        => reports.First(r => r.Unit == scan.UnitNumber && r.Interval == scan.Interval);
+
+    /// <summary>The class's share of the line's time.</summary>
+    private static double Load(ScanPlan plan) => plan.LineTime.TotalSeconds / plan.Interval.TotalSeconds;
 
     private string Line() => $"{_plc!.LineTiming.BaudRate} bps";
 
@@ -603,7 +646,7 @@ internal sealed class LinkPoller(string name, LinkOptions options, Func<HostLink
 
         if (scan.Overran(period) is { } sustained && !scan.Isolated)
         {
-            ScanPlan plan = Report(scan);
+            ScanPlan plan = ReportOf(Reports(), scan);
             GatewayLog.ScanOverrun(logger, name, scan.UnitNumber, plan.Tags, PollScan.Durations(scan.Interval), sustained.TotalMilliseconds, 10, plan.EstimatedCycle.TotalMilliseconds, scan.LastCycle.TotalMilliseconds);
         }
     }

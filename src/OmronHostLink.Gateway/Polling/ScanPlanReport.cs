@@ -6,8 +6,8 @@ namespace OmronHostLink.Gateway.Polling;
 
 /// <summary>
 /// The gateway's plan without a PLC (<c>OmronHostLink.Gateway --plan</c>): for each enabled link, its scan classes —
-/// the groups and tag-file rows of one unit at one interval — and the reads each makes a cycle, with the least time
-/// they take at the line's speed. The plans are the watches' own (their first, made before any exchange), so they are
+/// the groups and tag-file rows of one unit at one interval — and the reads each makes a cycle, with the time they
+/// take at the line's speed and the cycle the class can expect on the line it shares with the link's others. The plans are the watches' own (their first, made before any exchange), so they are
 /// the ones the gateway starts with.
 /// </summary>
 internal static class ScanPlanReport
@@ -40,22 +40,25 @@ internal static class ScanPlanReport
             }
 
             TimeSpan gap = link.Client.SendInterval ?? TimeSpan.Zero;
-            double load = scans.Sum(s => Expected(s, link, gap).TotalSeconds / s.Interval.TotalSeconds);
+            ReadPlan?[] pending = scans.Select(s => PendingCompound(s, link)).ToArray();
+            LineSchedule.Watch[] now = scans.Select(s => new LineSchedule.Watch(s.Interval, LineSchedule.Reads(s.Plan!, gap))).ToArray();
+            LineSchedule.Watch[] then = scans.Select((s, i) => new LineSchedule.Watch(s.Interval, LineSchedule.Reads(pending[i] ?? s.Plan!, gap))).ToArray();
+            TimeSpan[] cycles = LineSchedule.ExpectedCycles(now);
+            TimeSpan[] cyclesThen = pending.Any(p => p is not null) ? LineSchedule.ExpectedCycles(then) : cycles;
+            double load = then.Sum(w => w.LineTime.TotalSeconds / w.Interval.TotalSeconds);
             output.WriteLine(string.Create(CultureInfo.InvariantCulture, $"link {name}: {link.Groups.Count} tag(s) in {scans.Count} scan class(es) on {client.LineTiming.BaudRate} bps, {load:P0} of the line's time"));
-            foreach (PollScan scan in scans)
+            for (int i = 0; i < scans.Count; i++)
             {
-                ReadPlan plan = scan.Plan!;
-                TimeSpan cycle = plan.EstimatedTime + (gap * plan.TransactionCount);
-                output.WriteLine(string.Create(CultureInfo.InvariantCulture, $"  unit {scan.UnitNumber} every {PollScan.Durations(scan.Interval)}: {scan.Groups.Count} tag(s) in {plan}{Fit(cycle, scan.Interval)}"));
-                foreach (PlannedRead read in plan.Reads)
+                PollScan scan = scans[i];
+                output.WriteLine(string.Create(CultureInfo.InvariantCulture, $"  unit {scan.UnitNumber} every {PollScan.Durations(scan.Interval)}: {scan.Groups.Count} tag(s) in {scan.Plan}{Fit(cycles[i], now[i].LineTime, scan.Interval)}"));
+                foreach (PlannedRead read in scan.Plan!.Reads)
                 {
                     output.WriteLine($"    {read}");
                 }
 
-                if (PendingCompound(scan, link) is { } qq)
+                if (pending[i] is { } qq)
                 {
-                    TimeSpan qqCycle = qq.EstimatedTime + (gap * qq.TransactionCount);
-                    output.WriteLine(string.Create(CultureInfo.InvariantCulture, $"    once the unit names its model (MM), and where that model has QQ: {qq}{Fit(qqCycle, scan.Interval)}"));
+                    output.WriteLine(string.Create(CultureInfo.InvariantCulture, $"    once the unit names its model (MM), and where that model has QQ: {qq}{Fit(cyclesThen[i], then[i].LineTime, scan.Interval)}"));
                 }
             }
         }
@@ -79,14 +82,9 @@ internal static class ScanPlanReport
         return qq.Reads.Any(r => r.Kind == PlannedReadKind.CModeCompound) ? qq : null;
     }
 
-    private static TimeSpan Expected(PollScan scan, LinkOptions link, TimeSpan gap)
-    {
-        ReadPlan plan = PendingCompound(scan, link) ?? scan.Plan!;
-        return plan.EstimatedTime + (gap * plan.TransactionCount);
-    }
-
-    private static string Fit(TimeSpan cycle, TimeSpan interval)
+    /// <summary>The expected cycle on the shared line, the class's own time on it, and how it fits the interval.</summary>
+    private static string Fit(TimeSpan cycle, TimeSpan lineTime, TimeSpan interval)
         => cycle > interval
-            ? string.Create(CultureInfo.InvariantCulture, $" — more than its interval: read every {PollScan.Durations(cycle)} at best")
-            : string.Create(CultureInfo.InvariantCulture, $" — {cycle / interval:P0} of its interval");
+            ? string.Create(CultureInfo.InvariantCulture, $" — {PollScan.Durations(cycle)} a cycle on the line ({PollScan.Durations(lineTime)} of its own), more than its interval: read every {PollScan.Durations(cycle)} at best")
+            : string.Create(CultureInfo.InvariantCulture, $" — {PollScan.Durations(cycle)} a cycle on the line ({PollScan.Durations(lineTime)} of its own), {cycle / interval:P0} of its interval");
 }

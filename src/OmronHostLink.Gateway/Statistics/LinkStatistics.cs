@@ -406,6 +406,7 @@ internal sealed class LinkStatistics : ITagOutput, IScanOutput, IDisposable
             Tags = Plan?.Tags ?? 0,
             Reads = Plan?.Reads ?? 0,
             Characters = Plan?.Characters ?? 0,
+            LineTimeMs = Plan?.LineTime.TotalMilliseconds ?? 0,
             EstimatedCycleMs = Plan?.EstimatedCycle.TotalMilliseconds ?? 0,
             Cycles = Cycles,
             LastCycleMs = Last?.TotalMilliseconds,

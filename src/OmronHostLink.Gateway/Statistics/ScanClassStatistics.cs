@@ -3,8 +3,8 @@ using System.Text.Json.Serialization;
 namespace OmronHostLink.Gateway.Statistics;
 
 /// <summary>
-/// One scan class of a PLC unit — its tags read together at one interval — in the statistics topics: the plan's reads
-/// and the least time a cycle takes on the line, beside the cycle times measured.
+/// One scan class of a PLC unit — its tags read together at one interval — in the statistics topics: the plan's reads,
+/// its own time on the line and the cycle expected on the shared line, beside the cycle times measured.
 /// </summary>
 internal sealed class ScanClassStatistics
 {
@@ -28,7 +28,11 @@ internal sealed class ScanClassStatistics
     [JsonPropertyName("characters")]
     public int Characters { get; init; }
 
-    /// <summary>The least time a cycle takes on the line (its characters at the line's speed, and the send interval before each command), in ms.</summary>
+    /// <summary>The class's own time on the line a cycle (its characters at the line's speed, and the send interval before each command), in ms.</summary>
+    [JsonPropertyName("lineTimeMs")]
+    public double LineTimeMs { get; init; }
+
+    /// <summary>The cycle the plan expects on the line the class shares with the link's other classes (its own time on the line and its waits for theirs), in ms.</summary>
     [JsonPropertyName("estimatedCycleMs")]
     public double EstimatedCycleMs { get; init; }
 

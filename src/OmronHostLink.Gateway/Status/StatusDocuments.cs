@@ -113,7 +113,7 @@ internal sealed class ScanClassView
     /// <summary>The average cycle time, in ms; null before the first cycle.</summary>
     public double? AverageCycleMs { get; init; }
 
-    /// <summary>The least time a cycle takes on the line as planned, in ms; null before the class is planned.</summary>
+    /// <summary>The cycle the plan expects on the line the class shares with the link's others, in ms; null before the class is planned.</summary>
     public double? EstimatedCycleMs { get; init; }
 
     /// <summary>The commands a cycle, as planned; null before the class is planned.</summary>

@@ -173,6 +173,11 @@ public sealed class PlannedPollingTests(ITestOutputHelper output) : IDisposable
             .ToArray();
         partial.Should().BeEmpty("no read takes part of the recipe");
         outputs.Tags.Last(t => t.Tag == "recipe" && t.Quality == TagQuality.Good).Value.Should().BeEquivalentTo(Enumerable.Range(1, 10).Select(i => (ushort)i));
+
+        // The three classes share the line: each expects its own time on it and its waits for the others' reads.
+        ScanClassStatistics[] classes = [.. host.Services.GetRequiredService<LinkStatistics>().Link("plc").ScanClasses];
+        classes.Should().HaveCount(3).And.OnlyContain(c => c.LineTimeMs > 0 && c.EstimatedCycleMs >= c.LineTimeMs);
+        _logs.WithEvent(GatewayLog.Events.ScanPlanned).Should().OnlyContain(e => (double)e["CycleMs"]! >= (double)e["LineMs"]!);
     }
 
     [Fact]

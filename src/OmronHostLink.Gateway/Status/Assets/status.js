@@ -124,7 +124,7 @@
           el('tbody', null, ...link.scanClasses.map(c => el('tr', { 'data-scan-unit': c.unit, 'data-interval-ms': c.intervalMs },
             el('td', { 'data-label': 'Unit' }, c.unit), el('td', { 'data-label': 'Interval' }, interval(c.intervalMs)),
             el('td', { 'data-label': 'Cycle', class: c.measuredCycleMs > c.intervalMs ? 'cycle late' : 'cycle' }, `${ms(c.measuredCycleMs)} / ${ms(c.averageCycleMs)}`),
-            el('td', { 'data-label': 'Planned' }, c.reads === null || c.reads === undefined ? '—' : `${c.reads} read${c.reads === 1 ? '' : 's'}, ≥ ${ms(c.estimatedCycleMs)}`),
+            el('td', { 'data-label': 'Planned' }, c.reads === null || c.reads === undefined ? '—' : `${c.reads} read${c.reads === 1 ? '' : 's'}, ≈ ${ms(c.estimatedCycleMs)}`),
             el('td', { 'data-label': 'Overruns', class: c.overruns > 0 ? 'overruns late' : 'overruns' }, c.overruns),
             el('td', { 'data-label': 'Groups' }, c.groups.join(', '))))))));
     },

@@ -1,0 +1,145 @@
+using OmronHostLink.Planning;
+
+namespace OmronHostLink.Gateway.Polling;
+
+/// <summary>
+/// The cycle each scan class of one line can expect when the classes share it: a deterministic run of the line's
+/// schedule as the gateway polls it. Every class is one watch that comes due one interval after its cycle began (at
+/// once when the cycle overran), from a common start; a cycle makes its reads one after another, each an exchange the
+/// line's gate runs whole; readers that wait for the gate take it in the order they asked (SemaphoreSlim's queue), so
+/// a read waits for at most one read of each other class, and a class's cycle stretches by the reads of the others that
+/// come between its own. A cycle is measured as the watch does: from its start to its last answer.
+/// </summary>
+/// <remarks>
+/// A queueing formula with random phases misses what rules such a line: classes of one interval start together and
+/// stay close to each other's phase, so they wait for each other cycle after cycle, and a class's read waits behind the
+/// reads other classes queued first. Classes due at one instant queue in an order that turns with their cycles: which
+/// of them the host's timers wake first is not fixed. Run for twenty of the longest intervals (or until 200,000 reads,
+/// each class at least one cycle).
+/// </remarks>
+internal static class LineSchedule
+{
+    private const int Horizon = 20;
+    private const long MaxReads = 200_000;
+
+    /// <summary>One scan class on the line: its interval and the time of each of its reads (the send gap included).</summary>
+    public readonly record struct Watch(TimeSpan Interval, IReadOnlyList<TimeSpan> Reads)
+    {
+        /// <summary>The class's own time on the line a cycle.</summary>
+        public TimeSpan LineTime => TimeSpan.FromTicks(Reads.Sum(r => r.Ticks));
+    }
+
+    /// <summary>The reads of <paramref name="plan"/> as times on the line: each one's characters and turnarounds, and the send gap before it.</summary>
+    public static TimeSpan[] Reads(ReadPlan plan, TimeSpan gap)
+        => plan.Reads.Select(r => plan.Cost.Time(r.Characters, r.Exchanges) + gap).ToArray();
+
+    /// <summary>Each watch's expected cycle on the shared line (its own time on the line when it is alone).</summary>
+    public static TimeSpan[] ExpectedCycles(IReadOnlyList<Watch> watches)
+    {
+        int n = watches.Count;
+        var cycles = new TimeSpan[n];
+        if (n == 0)
+        {
+            return cycles;
+        }
+
+        if (n == 1 || watches.All(w => w.Reads.Count == 0))
+        {
+            for (int i = 0; i < n; i++)
+            {
+                cycles[i] = watches[i].LineTime;
+            }
+
+            return cycles;
+        }
+
+        long horizon = watches.Max(w => w.Interval.Ticks) * Horizon;
+        var next = new int[n];
+        var start = new long[n];
+        var count = new long[n];
+        var total = new long[n];
+
+        // Watches by the time they come due; at one instant, in an order that turns with their cycles.
+        var due = new PriorityQueue<int, (long At, int Rank)>();
+        var gate = new Queue<int>();
+        for (int i = 0; i < n; i++)
+        {
+            if (watches[i].Reads.Count > 0)
+            {
+                due.Enqueue(i, (0, i));
+            }
+        }
+
+        long now = 0;
+        long reads = 0;
+        while (true)
+        {
+            Arrive(due, gate, next, start, now, inclusive: true);
+            if (!gate.TryDequeue(out int reader))
+            {
+                // The line is idle until the next watch comes due.
+                if (!due.TryPeek(out _, out (long At, int Rank) first))
+                {
+                    break;
+                }
+
+                now = first.At;
+                continue;
+            }
+
+            now += watches[reader].Reads[next[reader]].Ticks;
+            reads++;
+
+            // Watches that came due during the read asked for the gate before this reader asks again.
+            Arrive(due, gate, next, start, now, inclusive: false);
+            if (++next[reader] < watches[reader].Reads.Count)
+            {
+                gate.Enqueue(reader);
+            }
+            else
+            {
+                count[reader]++;
+                total[reader] += now - start[reader];
+                long at = Math.Max(start[reader] + watches[reader].Interval.Ticks, now);
+                due.Enqueue(reader, (at, (int)(((reader - count[reader]) % n + n) % n)));
+            }
+
+            if ((now >= horizon || reads >= MaxReads) && AllCycled(count, watches))
+            {
+                break;
+            }
+        }
+
+        for (int i = 0; i < n; i++)
+        {
+            cycles[i] = count[i] == 0 ? watches[i].LineTime : TimeSpan.FromTicks(total[i] / count[i]);
+        }
+
+        return cycles;
+    }
+
+    /// <summary>Watches due by <paramref name="now"/> begin a cycle and queue for the gate.</summary>
+    private static void Arrive(PriorityQueue<int, (long At, int Rank)> due, Queue<int> gate, int[] next, long[] start, long now, bool inclusive)
+    {
+        while (due.TryPeek(out int watch, out (long At, int Rank) when) && (when.At < now || (inclusive && when.At == now)))
+        {
+            due.Dequeue();
+            next[watch] = 0;
+            start[watch] = when.At;
+            gate.Enqueue(watch);
+        }
+    }
+
+    private static bool AllCycled(long[] count, IReadOnlyList<Watch> watches)
+    {
+        for (int i = 0; i < count.Length; i++)
+        {
+            if (count[i] == 0 && watches[i].Reads.Count > 0)
+            {
+                return false;
+            }
+        }
+
+        return true;
+    }
+}
