@@ -55,7 +55,7 @@ public sealed class StatusConfigurationTests
         var error = new StringWriter();
 
         Task<int> run = GatewayProgram.RunAsync(args.ToArray(), error);
-        (await Task.WhenAny(run, Task.Delay(TimeSpan.FromSeconds(60)))).Should().BeSameAs(run, "{0} must stop the start", arguments);
+        await Eventually.UntilAsync(() => run.IsCompleted, $"{arguments} stops the start", patience: TimeSpan.FromSeconds(60));
         Directory.Delete(root, recursive: true);
 
         string output = error.ToString();
