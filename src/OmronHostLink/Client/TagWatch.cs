@@ -8,9 +8,14 @@ namespace OmronHostLink;
 /// reported before, outages and overruns as events, retries after a fixed or a capped doubling delay.
 /// </summary>
 /// <remarks>
-/// Cycles are scheduled from their start: the next is due one interval after this one began. When the subscriber
-/// asks for more events later than that (the read was slow, or handling the events was), an overrun is reported and
-/// the next cycle starts at once; the schedule then continues from that cycle, so no backlog of cycles piles up.
+/// Cycles keep a fixed schedule: each is due one interval after the one before was due, not after it began, so a
+/// timer that wakes late does not push the cycles after it later (the phase does not drift), and one that wakes a
+/// little early (the system timer can, by the stopwatch's clock) does not make the next cycle due sooner. When the
+/// subscriber asks for more events after the next cycle was due (the read was slow, or handling the events was), an
+/// overrun is reported and that cycle starts at once, in the place of the latest scheduled time already past; the one
+/// after it is due at the scheduled time after that, so no backlog of cycles piles up. A failed read's retries and a
+/// demoted unit's probes wait their own delays from the failure, and the schedule starts again from the cycle that
+/// reads.
 /// </remarks>
 internal static class TagWatch
 {
@@ -45,9 +50,14 @@ internal static class TagWatch
                 {
                     await Delay(due - now, time, cancellationToken).ConfigureAwait(false);
                 }
-                else if (succeeded && interval > TimeSpan.Zero && now > due)
+                else if (interval > TimeSpan.Zero && now > due)
                 {
-                    yield return WatchEvent.Overrun(now - cycleStart, time.GetUtcNow());
+                    // Late: this cycle takes the latest scheduled time already past, and those skipped are not made up.
+                    due += TimeSpan.FromTicks((now - due).Ticks / interval.Ticks * interval.Ticks);
+                    if (succeeded)
+                    {
+                        yield return WatchEvent.Overrun(now - cycleStart, time.GetUtcNow());
+                    }
                 }
 
                 if (demoted && await ProbeAsync(unit, planned.Current, cancellationToken).ConfigureAwait(false) is { } silent)
@@ -137,7 +147,7 @@ internal static class TagWatch
                 answered = true;
                 silentCycles = 0;
                 demoted = false;
-                due = cycleStart + interval;
+                due += interval;
                 if (outageStart is { } since)
                 {
                     outageStart = null;

@@ -232,16 +232,61 @@ public sealed class WatchTests
         line.FramesSent.Should().Be(2);
         int timers = clock.TimersCreated;
 
-        // The next cycle runs at once; after it the watch waits a whole interval: 3 missed cycles are not made up.
+        // The next cycle runs at once (at 4.5 s, in the place of the one due at 4 s); the one after is due on the
+        // schedule, at 5 s: 3 missed cycles are not made up.
         pending = watch.MoveNextAsync();
         await clock.NextTimerAsync();
         line.FramesSent.Should().Be(3);
         clock.TimersCreated.Should().Be(timers + 1);
+        clock.LastDueTime.Should().Be(TimeSpan.FromSeconds(0.5), "the schedule goes on from where it was: cycles at whole seconds");
         pending.IsCompleted.Should().BeFalse();
         line.Plc.WriteWord(PlcArea.Dm, 100, 9);
-        clock.Advance(Second);
+        clock.Advance(TimeSpan.FromSeconds(0.5));
         (await Completed(pending, watch)).NewValue.Should().Be(PlcValue.FromWord(9));
         line.FramesSent.Should().Be(4);
+    }
+
+    [Fact]
+    public async Task Cycles_keep_their_schedule_when_timers_wake_late_or_early()
+    {
+        await using InProcessLine line = InProcessLine.Start();
+        var clock = new SteppingClock();
+        TimeSpan late = TimeSpan.FromMilliseconds(15);
+        TimeSpan early = TimeSpan.FromMilliseconds(0.9);
+        await using IAsyncEnumerator<WatchEvent> watch = line.Client
+            .WatchAsync(new[] { PlcTag.Parse("D100") }, new WatchOptions { Interval = Second, TimeProvider = clock, ReportEveryCycle = true })
+            .GetAsyncEnumerator();
+        (await Next(watch)).IsInitial.Should().BeTrue();
+        (await Next(watch)).Kind.Should().Be(WatchEventKind.Polled);
+
+        // Each wake comes 15 ms late: the next cycle is still due on the whole second, not an interval after this one began.
+        for (int cycle = 1; cycle <= 5; cycle++)
+        {
+            ValueTask<bool> polled = watch.MoveNextAsync();
+            await clock.NextTimerAsync();
+            clock.LastDueTime.Should().Be(cycle == 1 ? Second : Second - late, "cycle {0} is due at {0} s", cycle);
+            clock.Advance(clock.LastDueTime + late);
+            (await Completed(polled, watch)).Kind.Should().Be(WatchEventKind.Polled);
+        }
+
+        line.FramesSent.Should().Be(6);
+
+        // A wake just before its time by the timestamps: that cycle runs once, and the next is due a whole interval on.
+        ValueTask<bool> pending = watch.MoveNextAsync();
+        await clock.NextTimerAsync();
+        clock.LastDueTime.Should().Be(Second - late);
+        clock.TimestampLag = early;
+        clock.Advance(clock.LastDueTime);
+        (await Completed(pending, watch)).Kind.Should().Be(WatchEventKind.Polled);
+        line.FramesSent.Should().Be(7, "the cycle due at 6 s ran once");
+        pending = watch.MoveNextAsync();
+        await clock.NextTimerAsync();
+        line.FramesSent.Should().Be(7);
+        pending.IsCompleted.Should().BeFalse();
+        clock.LastDueTime.Should().BeCloseTo(Second + early, TimeSpan.FromMilliseconds(1), "the cycle after it is due at 7 s, not again at 6 s (a timer waits whole milliseconds)");
+        clock.Advance(clock.LastDueTime);
+        (await Completed(pending, watch)).Kind.Should().Be(WatchEventKind.Polled);
+        line.FramesSent.Should().Be(8);
     }
 
     [Fact]

@@ -19,9 +19,22 @@ internal sealed class SteppingClock : FakeTimeProvider
     /// <summary>Timers created so far.</summary>
     public int TimersCreated => Volatile.Read(ref _created);
 
+    /// <summary>The wait asked for by the timer created last.</summary>
+    public TimeSpan LastDueTime { get; private set; }
+
+    /// <summary>
+    /// How far the timestamps (<see cref="TimeProvider.GetTimestamp"/>) run behind the timers' clock: a timer then
+    /// fires before its time by the timestamps, as the system timer can by the stopwatch's clock.
+    /// </summary>
+    public TimeSpan TimestampLag { get; set; }
+
+    public override long GetTimestamp()
+        => base.GetTimestamp() - (long)(TimestampLag.Ticks * (double)TimestampFrequency / TimeSpan.TicksPerSecond);
+
     public override ITimer CreateTimer(TimerCallback callback, object? state, TimeSpan dueTime, TimeSpan period)
     {
         ITimer timer = base.CreateTimer(callback, state, dueTime, period);
+        LastDueTime = dueTime;
         Interlocked.Increment(ref _created);
         _timers.Release();
         return timer;
