@@ -4,26 +4,39 @@ namespace OmronHostLink.Gateway.Polling;
 
 /// <summary>
 /// The cycle each scan class of one line can expect when the classes share it: a deterministic run of the line's
-/// schedule as the gateway polls it. Every class is one watch that comes due one interval after its cycle began (at
-/// once when the cycle overran), from a common start; a cycle makes its reads one after another, each an exchange the
-/// line's gate runs whole; readers that wait for the gate take it in the order they asked (SemaphoreSlim's queue), so
-/// a read waits for at most one read of each other class, and a class's cycle stretches by the reads of the others that
-/// come between its own. A cycle is measured as the watch does: from its start to its last answer.
+/// schedule as the gateway polls it. Every class is one watch that starts at its phase (<see cref="Phase"/>) and keeps
+/// a fixed schedule from there: each cycle due one interval after the one before was due, a cycle found late started
+/// at once in the place of the latest scheduled time already past. A cycle makes its reads one after another, each an
+/// exchange the line's gate runs whole; readers that wait for the gate take it in the order they asked (SemaphoreSlim's
+/// queue), so a read waits for at most one read of each other class, and a class's cycle stretches by the reads of the
+/// others that come between its own. A cycle is measured as the watch does: from its start to its last answer.
 /// </summary>
 /// <remarks>
-/// A queueing formula with random phases misses what rules such a line: classes of one interval start together and
-/// stay close to each other's phase, so they wait for each other cycle after cycle, and a class's read waits behind the
-/// reads other classes queued first. Classes due at one instant queue in an order that turns with their cycles: which
-/// of them the host's timers wake first is not fixed. Run for twenty of the longest intervals (or until 200,000 reads,
-/// each class at least one cycle).
+/// A queueing formula with random phases misses what rules such a line: classes of one interval keep their phases, so
+/// they wait for each other the same way cycle after cycle, and a class's read waits behind the reads other classes
+/// queued first. The classes' phases are staggered so that the order in which they come due is fixed (by their
+/// configuration order) rather than left to which of the host's timers wakes first; the run follows that order. Run for
+/// twenty of the longest intervals (or until 200,000 reads, each class at least one cycle).
 /// </remarks>
 internal static class LineSchedule
 {
     private const int Horizon = 20;
     private const long MaxReads = 200_000;
 
-    /// <summary>One scan class on the line: its interval and the time of each of its reads (the send gap included).</summary>
-    public readonly record struct Watch(TimeSpan Interval, IReadOnlyList<TimeSpan> Reads)
+    /// <summary>
+    /// How far apart a link's scan classes start: more than a timer's lateness on a busy host, so the classes come due
+    /// in their configuration order every cycle, and little against the shortest intervals.
+    /// </summary>
+    public static readonly TimeSpan Stagger = TimeSpan.FromMilliseconds(10);
+
+    /// <summary>When the link's scan class at <paramref name="index"/> (configuration order) starts, after the link's start.</summary>
+    public static TimeSpan Phase(int index) => Stagger * index;
+
+    /// <summary>
+    /// One scan class on the line: its interval, the time of each of its reads (the send gap included), and its first
+    /// cycle's start after the link's (<see cref="Phase"/>).
+    /// </summary>
+    public readonly record struct Watch(TimeSpan Interval, IReadOnlyList<TimeSpan> Reads, TimeSpan Start)
     {
         /// <summary>The class's own time on the line a cycle.</summary>
         public TimeSpan LineTime => TimeSpan.FromTicks(Reads.Sum(r => r.Ticks));
@@ -56,17 +69,19 @@ internal static class LineSchedule
         long horizon = watches.Max(w => w.Interval.Ticks) * Horizon;
         var next = new int[n];
         var start = new long[n];
+        var slot = new long[n];
         var count = new long[n];
         var total = new long[n];
 
-        // Watches by the time they come due; at one instant, in an order that turns with their cycles.
+        // Watches by the time they come due; at one instant, in their order.
         var due = new PriorityQueue<int, (long At, int Rank)>();
         var gate = new Queue<int>();
         for (int i = 0; i < n; i++)
         {
             if (watches[i].Reads.Count > 0)
             {
-                due.Enqueue(i, (0, i));
+                slot[i] = watches[i].Start.Ticks;
+                due.Enqueue(i, (slot[i], i));
             }
         }
 
@@ -100,8 +115,20 @@ internal static class LineSchedule
             {
                 count[reader]++;
                 total[reader] += now - start[reader];
-                long at = Math.Max(start[reader] + watches[reader].Interval.Ticks, now);
-                due.Enqueue(reader, (at, (int)(((reader - count[reader]) % n + n) % n)));
+                long interval = watches[reader].Interval.Ticks;
+                long at = slot[reader] + interval;
+                if (at < now)
+                {
+                    // Late: the next cycle starts at once, in the place of the latest scheduled time already past.
+                    at = now;
+                    slot[reader] += interval == 0 ? now - slot[reader] : (now - slot[reader]) / interval * interval;
+                }
+                else
+                {
+                    slot[reader] = at;
+                }
+
+                due.Enqueue(reader, (at, reader));
             }
 
             if ((now >= horizon || reads >= MaxReads) && AllCycled(count, watches))

@@ -79,9 +79,10 @@ internal sealed class LinkPoller(string name, LinkOptions options, Func<HostLink
         GatewayLog.LinkStarted(logger, name, _groups.Count, plc.Description);
         lock (_lock)
         {
+            // Each class at its phase, so that they come due on the shared line in a fixed order (LineSchedule).
             foreach (PollScan scan in _classes)
             {
-                Start(scan);
+                Start(scan, scan.Phase);
             }
         }
 
@@ -105,12 +106,12 @@ internal sealed class LinkPoller(string name, LinkOptions options, Func<HostLink
         GatewayLog.LinkStopped(logger, name, _polls, _failures);
     }
 
-    /// <summary>Starts polling <paramref name="scan"/> (under the lock).</summary>
-    private void Start(PollScan scan)
+    /// <summary>Starts polling <paramref name="scan"/> (under the lock), after <paramref name="delay"/>.</summary>
+    private void Start(PollScan scan, TimeSpan delay = default)
     {
         var run = new ScanRun(scan, CancellationTokenSource.CreateLinkedTokenSource(_stopping));
         _runs.Add(run);
-        run.Task = Task.Run(() => PollAsync(run));
+        run.Task = Task.Run(() => PollAsync(run, delay));
     }
 
     /// <summary>Stops polling <paramref name="scan"/> (under the lock): it is replaced by others.</summary>
@@ -122,7 +123,7 @@ internal sealed class LinkPoller(string name, LinkOptions options, Func<HostLink
         _ = run.Task.ContinueWith(_ => run.Stop.Dispose(), CancellationToken.None, TaskContinuationOptions.ExecuteSynchronously, TaskScheduler.Default);
     }
 
-    private async Task PollAsync(ScanRun run)
+    private async Task PollAsync(ScanRun run, TimeSpan delay)
     {
         PollScan scan = run.Scan;
         var watch = new WatchOptions
@@ -139,6 +140,11 @@ internal sealed class LinkPoller(string name, LinkOptions options, Func<HostLink
         CancellationToken token = run.Stop.Token;
         try
         {
+            if (delay > TimeSpan.Zero)
+            {
+                await Task.Delay(delay, time, token).ConfigureAwait(false);
+            }
+
             while (!token.IsCancellationRequested)
             {
                 Outcome? outcome;
@@ -586,7 +592,7 @@ internal sealed class LinkPoller(string name, LinkOptions options, Func<HostLink
                 .ToArray());
         }
 
-        LineSchedule.Watch[] watches = parts.SelectMany(p => p).Select(p => new LineSchedule.Watch(p.Part.Interval, LineSchedule.Reads(p.Plan, Gap))).ToArray();
+        LineSchedule.Watch[] watches = parts.SelectMany(p => p).Select(p => new LineSchedule.Watch(p.Part.Interval, LineSchedule.Reads(p.Plan, Gap), p.Part.Phase)).ToArray();
         TimeSpan[] cycles = LineSchedule.ExpectedCycles(watches);
         var reports = new ScanPlan[classes.Length];
         int w = 0;
@@ -704,7 +710,7 @@ internal sealed class LinkPoller(string name, LinkOptions options, Func<HostLink
             Retire(scan);
             if (failed.Count == 0)
             {
-                var again = new PollScan(scan.Unit, scan.Interval, scan.Groups, scan.Isolated);
+                var again = new PollScan(scan.Unit, scan.Interval, scan.Groups, scan.Isolated) { Phase = scan.Phase };
                 Replace(scan, again);
                 Start(again);
                 return;
@@ -713,7 +719,7 @@ internal sealed class LinkPoller(string name, LinkOptions options, Func<HostLink
             GatewayLog.ScanSplit(logger, name, scan.UnitNumber, PollScan.Durations(scan.Interval), failed.Count, scan.Groups.Count, string.Join(", ", failed.Select(g => g.Name)));
             if (failed.Count < scan.Groups.Count)
             {
-                var rest = new PollScan(scan.Unit, scan.Interval, scan.Groups.Except(failed).ToList());
+                var rest = new PollScan(scan.Unit, scan.Interval, scan.Groups.Except(failed).ToList()) { Phase = scan.Phase };
                 Replace(scan, rest);
                 Start(rest);
             }
@@ -724,7 +730,7 @@ internal sealed class LinkPoller(string name, LinkOptions options, Func<HostLink
 
             foreach (PollGroup group in failed)
             {
-                Start(new PollScan(scan.Unit, scan.Interval, [group], isolated: true));
+                Start(new PollScan(scan.Unit, scan.Interval, [group], isolated: true) { Phase = scan.Phase });
             }
         }
     }
@@ -746,7 +752,7 @@ internal sealed class LinkPoller(string name, LinkOptions options, Func<HostLink
             IEnumerable<PollGroup> members = owner is null ? [group] : owner.Groups.Append(group);
 
             // Configuration order, as the class was first planned.
-            var joined = new PollScan(isolated.Unit, isolated.Interval, _groups.Where(members.Contains).ToList());
+            var joined = new PollScan(isolated.Unit, isolated.Interval, _groups.Where(members.Contains).ToList()) { Phase = owner?.Phase ?? isolated.Phase };
             if (owner is not null)
             {
                 Retire(owner);

@@ -26,11 +26,14 @@ internal sealed class PollScan
         Tags = groups.SelectMany(g => g.Tags).ToArray();
     }
 
-    /// <summary>One scan class per unit and interval, in the order their first groups are configured.</summary>
+    /// <summary>
+    /// One scan class per unit and interval, in the order their first groups are configured, each starting at its
+    /// place's phase (<see cref="LineSchedule.Phase"/>).
+    /// </summary>
     public static List<PollScan> Classes(IEnumerable<PollGroup> groups, HostLinkUnit client)
         => groups
             .GroupBy(g => (g.UnitNumber, g.Interval))
-            .Select(c => new PollScan(client.Unit(c.Key.UnitNumber), c.Key.Interval, c.ToList()))
+            .Select((c, i) => new PollScan(client.Unit(c.Key.UnitNumber), c.Key.Interval, c.ToList()) { Phase = LineSchedule.Phase(i) })
             .ToList();
 
     /// <summary>The unit's view on the link's client.</summary>
@@ -41,6 +44,12 @@ internal sealed class PollScan
 
     /// <summary>The scan class's interval.</summary>
     public TimeSpan Interval { get; }
+
+    /// <summary>
+    /// When the scan's first cycle starts after the link's: its class's phase on the line. A scan that replaces another
+    /// (a split or a rejoin) keeps the phase of its class and starts at once.
+    /// </summary>
+    public TimeSpan Phase { get; init; }
 
     /// <summary>The groups read, in configuration order.</summary>
     public IReadOnlyList<PollGroup> Groups { get; }
