@@ -37,6 +37,7 @@ internal sealed class LinkPoller(string name, LinkOptions options, Func<HostLink
     private long _polls;
     private long _failures;
     private CancellationToken _stopping;
+    private long _started;
     private HostLinkClient? _plc;
 
     /// <summary>What a scan's watch asks its loop to do when it stops reading.</summary>
@@ -79,10 +80,10 @@ internal sealed class LinkPoller(string name, LinkOptions options, Func<HostLink
         GatewayLog.LinkStarted(logger, name, _groups.Count, plc.Description);
         lock (_lock)
         {
-            // Each class at its phase, so that they come due on the shared line in a fixed order (LineSchedule).
+            _started = time.GetTimestamp();
             foreach (PollScan scan in _classes)
             {
-                Start(scan, scan.Phase);
+                Start(scan);
             }
         }
 
@@ -106,12 +107,12 @@ internal sealed class LinkPoller(string name, LinkOptions options, Func<HostLink
         GatewayLog.LinkStopped(logger, name, _polls, _failures);
     }
 
-    /// <summary>Starts polling <paramref name="scan"/> (under the lock), after <paramref name="delay"/>.</summary>
-    private void Start(PollScan scan, TimeSpan delay = default)
+    /// <summary>Starts polling <paramref name="scan"/> (under the lock).</summary>
+    private void Start(PollScan scan)
     {
         var run = new ScanRun(scan, CancellationTokenSource.CreateLinkedTokenSource(_stopping));
         _runs.Add(run);
-        run.Task = Task.Run(() => PollAsync(run, delay));
+        run.Task = Task.Run(() => PollAsync(run));
     }
 
     /// <summary>Stops polling <paramref name="scan"/> (under the lock): it is replaced by others.</summary>
@@ -123,7 +124,7 @@ internal sealed class LinkPoller(string name, LinkOptions options, Func<HostLink
         _ = run.Task.ContinueWith(_ => run.Stop.Dispose(), CancellationToken.None, TaskContinuationOptions.ExecuteSynchronously, TaskScheduler.Default);
     }
 
-    private async Task PollAsync(ScanRun run, TimeSpan delay)
+    private async Task PollAsync(ScanRun run)
     {
         PollScan scan = run.Scan;
         var watch = new WatchOptions
@@ -136,15 +137,14 @@ internal sealed class LinkPoller(string name, LinkOptions options, Func<HostLink
             DemoteAfter = options.Demotion.After,
             DemotionPeriod = options.Demotion.Period,
             TimeProvider = time,
+
+            // Each class on its phase from the link's start, however late its watch starts, so that the classes come
+            // due on the shared line in a fixed order (LineSchedule); a scan that replaces another keeps its schedule.
+            ScheduleStart = _started + (long)(scan.Phase.Ticks * (double)time.TimestampFrequency / TimeSpan.TicksPerSecond),
         };
         CancellationToken token = run.Stop.Token;
         try
         {
-            if (delay > TimeSpan.Zero)
-            {
-                await Task.Delay(delay, time, token).ConfigureAwait(false);
-            }
-
             while (!token.IsCancellationRequested)
             {
                 Outcome? outcome;

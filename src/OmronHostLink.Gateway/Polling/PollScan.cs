@@ -46,8 +46,9 @@ internal sealed class PollScan
     public TimeSpan Interval { get; }
 
     /// <summary>
-    /// When the scan's first cycle starts after the link's: its class's phase on the line. A scan that replaces another
-    /// (a split or a rejoin) keeps the phase of its class and starts at once.
+    /// Where the scan's schedule lies after the link's start: its class's phase on the line. A scan that replaces
+    /// another (a split or a rejoin) keeps the phase of its class: its first cycle starts at once, the next on the
+    /// class's schedule.
     /// </summary>
     public TimeSpan Phase { get; init; }
 

@@ -73,6 +73,7 @@ public partial class HostLinkUnit
             DemoteAfter = options.DemoteAfter,
             DemotionPeriod = options.DemotionPeriod,
             TimeProvider = options.TimeProvider,
+            ScheduleStart = options.ScheduleStart,
         };
         return TagWatch.RunAsync(this, planned, settings, cancellationToken);
     }

@@ -33,7 +33,7 @@ internal static class TagWatch
         var reported = new PlcValue?[tags.Count];
         long origin = time.GetTimestamp();
         TimeSpan cycleStart = TimeSpan.Zero;
-        TimeSpan due = TimeSpan.Zero;
+        TimeSpan due = options.ScheduleStart is { } start ? time.GetElapsedTime(origin, start) : TimeSpan.Zero;
         bool succeeded = false;
         bool answered = false;
         TimeSpan? outageStart = null;

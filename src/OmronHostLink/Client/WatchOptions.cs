@@ -58,6 +58,14 @@ public sealed class WatchOptions
     /// <summary>The clock for intervals and event timestamps. Default <see cref="TimeProvider.System"/>; tests pass a fake one.</summary>
     public TimeProvider TimeProvider { get; set; } = TimeProvider.System;
 
+    /// <summary>
+    /// Where the schedule is anchored, as a timestamp of <see cref="TimeProvider"/>: cycles are due at it plus whole
+    /// intervals (the first cycle at the first of those times not yet past, or at once in the place of the latest one
+    /// past), so watches started together keep the phases they were given however late each one starts. Null (the
+    /// default): the schedule starts with the watch's first cycle.
+    /// </summary>
+    internal long? ScheduleStart { get; set; }
+
     /// <summary>The retry interval in force: <see cref="RetryInterval"/>, or <see cref="Interval"/> but at least 1 s.</summary>
     internal TimeSpan EffectiveRetryInterval
         => RetryInterval ?? (Interval > TimeSpan.FromSeconds(1) ? Interval : TimeSpan.FromSeconds(1));

@@ -290,6 +290,38 @@ public sealed class WatchTests
     }
 
     [Fact]
+    public async Task A_schedule_anchored_before_the_watch_starts_keeps_its_phase()
+    {
+        await using InProcessLine line = InProcessLine.Start();
+        var clock = new SteppingClock();
+        long anchor = clock.GetTimestamp() - (long)(2.3 * clock.TimestampFrequency);
+        await using IAsyncEnumerator<WatchEvent> watch = line.Client
+            .WatchAsync(new[] { PlcTag.Parse("D100") }, new WatchOptions { Interval = Second, TimeProvider = clock, ReportEveryCycle = true, ScheduleStart = anchor })
+            .GetAsyncEnumerator();
+
+        // Started 2.3 s after the anchor: the first cycle runs at once (no overrun), the next at 3 s after the anchor.
+        (await Next(watch)).IsInitial.Should().BeTrue();
+        (await Next(watch)).Kind.Should().Be(WatchEventKind.Polled);
+        clock.TimersCreated.Should().Be(0);
+        ValueTask<bool> pending = watch.MoveNextAsync();
+        await clock.NextTimerAsync();
+        clock.LastDueTime.Should().BeCloseTo(TimeSpan.FromSeconds(0.7), TimeSpan.FromMilliseconds(1));
+        clock.Advance(clock.LastDueTime);
+        (await Completed(pending, watch)).Kind.Should().Be(WatchEventKind.Polled);
+
+        // Anchored ahead: the first cycle waits for it.
+        await using IAsyncEnumerator<WatchEvent> later = line.Client
+            .WatchAsync(new[] { PlcTag.Parse("D100") }, new WatchOptions { Interval = Second, TimeProvider = clock, ScheduleStart = clock.GetTimestamp() + (clock.TimestampFrequency / 4) })
+            .GetAsyncEnumerator();
+        pending = later.MoveNextAsync();
+        await clock.NextTimerAsync();
+        clock.LastDueTime.Should().Be(TimeSpan.FromSeconds(0.25));
+        pending.IsCompleted.Should().BeFalse();
+        clock.Advance(clock.LastDueTime);
+        (await Completed(pending, later)).IsInitial.Should().BeTrue();
+    }
+
+    [Fact]
     public async Task Interval_zero_polls_back_to_back_without_waiting_on_the_clock()
     {
         await using InProcessLine line = InProcessLine.Start();
