@@ -5,33 +5,41 @@ namespace OmronHostLink;
 /// <summary>
 /// What each unit on one link has registered with QQMR, as far as this client knows: a PLC holds one registration per
 /// unit, so another tag set (another watch, a <c>ReadTagsAsync</c> call) taking its turn replaces it, and a reopened
-/// link or a PLC restart (end code 19 to QQIR) may have lost it. Shared by every unit view of a client; its gate keeps
-/// a registration and the QQIR that relies on it together, so two tag sets never read through each other's registration.
+/// link or a PLC restart (end code 19 to QQIR) may have lost it. Shared by every unit view of a client; each unit's gate
+/// keeps a registration and the QQIR that relies on it together, so two tag sets never read through each other's
+/// registration.
 /// </summary>
+/// <remarks>
+/// The gate is the unit's, not the link's: a registration is the unit's alone, and a compound read of one unit waiting
+/// for another unit's to finish would ask for the line only after reads that asked for it later, so that the link's
+/// reads would no longer take the line in the order they asked (which the gateway's line schedule runs).
+/// </remarks>
 internal sealed class CompoundReadRegistry
 {
-    private readonly Dictionary<int, (CompoundItem[] Items, long Openings)> _registered = new();
-    private readonly bool[] _refused = new bool[32];
+    private const int Units = HostLinkRules.MaxUnitNumber + 1;
+    private readonly Registration?[] _registered = new Registration?[Units];
+    private readonly SemaphoreSlim[] _gates = Enumerable.Range(0, Units).Select(_ => new SemaphoreSlim(1, 1)).ToArray();
+    private readonly bool[] _refused = new bool[Units];
     private readonly List<Claimant> _claims = new();
 
-    /// <summary>Held from the check of a unit's registration to the end of the QQIR that relies on it.</summary>
-    public SemaphoreSlim Gate { get; } = new(1, 1);
+    /// <summary>Held from the check of <paramref name="unit"/>'s registration to the end of the QQIR that relies on it.</summary>
+    public SemaphoreSlim Gate(int unit) => _gates[unit];
 
     /// <summary>Whether <paramref name="unit"/> holds exactly <paramref name="items"/>, registered on the link as it is now open.</summary>
     public bool Holds(int unit, IReadOnlyList<CompoundItem> items, long openings)
-        => _registered.TryGetValue(unit, out (CompoundItem[] Items, long Openings) r)
+        => Volatile.Read(ref _registered[unit]) is { } r
             && r.Openings == openings
             && r.Items.AsSpan().SequenceEqual(items is CompoundItem[] a ? a : items.ToArray());
 
     /// <summary>Whether <paramref name="unit"/> holds another tag set's registration on the link as it is now open (contention).</summary>
     public bool HoldsOther(int unit, IReadOnlyList<CompoundItem> items, long openings)
-        => _registered.TryGetValue(unit, out (CompoundItem[] Items, long Openings) r) && r.Openings == openings && !Holds(unit, items, openings);
+        => Volatile.Read(ref _registered[unit]) is { } r && r.Openings == openings && !Holds(unit, items, openings);
 
     /// <summary>Records that <paramref name="unit"/> now holds <paramref name="items"/>.</summary>
-    public void Registered(int unit, IReadOnlyList<CompoundItem> items, long openings) => _registered[unit] = (items.ToArray(), openings);
+    public void Registered(int unit, IReadOnlyList<CompoundItem> items, long openings) => Volatile.Write(ref _registered[unit], new Registration(items.ToArray(), openings));
 
     /// <summary>Forgets what <paramref name="unit"/> holds (a registration failed or was lost).</summary>
-    public void Forget(int unit) => _registered.Remove(unit);
+    public void Forget(int unit) => Volatile.Write(ref _registered[unit], null);
 
     /// <summary>Whether <paramref name="unit"/> answered QQ with an end code that says it has none: it is read by area for the client's life.</summary>
     public bool Refused(int unit) => Volatile.Read(ref _refused[unit]);
@@ -105,4 +113,7 @@ internal sealed class CompoundReadRegistry
 
     // In the order claimed: the earlier wins a tie.
     private sealed record Claimant(WeakReference<object> Owner, int Unit, double Weight);
+
+    // Replaced whole, never changed: read without the unit's gate (to judge contention) it is one registration or another.
+    private sealed record Registration(CompoundItem[] Items, long Openings);
 }

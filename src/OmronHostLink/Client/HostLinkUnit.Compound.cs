@@ -64,7 +64,7 @@ public partial class HostLinkUnit
     {
         // A model known to have no QQ is not sent one (it would answer IC).
         (await GetModelProfileAsync(cancellationToken).ConfigureAwait(false))?.EnsureCMode("QQ", "compound read");
-        await CompoundReads.Gate.WaitAsync(cancellationToken).ConfigureAwait(false);
+        await CompoundReads.Gate(UnitNumber).WaitAsync(cancellationToken).ConfigureAwait(false);
         try
         {
             bool registeredNow = false;
@@ -88,7 +88,7 @@ public partial class HostLinkUnit
         }
         finally
         {
-            CompoundReads.Gate.Release();
+            CompoundReads.Gate(UnitNumber).Release();
         }
     }
 

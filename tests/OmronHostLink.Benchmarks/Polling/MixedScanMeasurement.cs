@@ -151,7 +151,11 @@ internal static class MixedScanMeasurement
             GC.WaitForPendingFinalizers();
             GC.Collect();
             memory.Add((clockWindow.Elapsed.TotalMinutes, GC.GetTotalMemory(false) / 1048576.0, (ProcessSample.Read(Environment.ProcessId)?.RssKilobytes ?? 0) / 1024.0));
-            await Task.Delay(TimeSpan.FromSeconds(30) < window - clockWindow.Elapsed ? TimeSpan.FromSeconds(30) : window - clockWindow.Elapsed);
+            TimeSpan left = window - clockWindow.Elapsed;
+            if (left > TimeSpan.Zero)
+            {
+                await Task.Delay(left < TimeSpan.FromSeconds(30) ? left : TimeSpan.FromSeconds(30));
+            }
         }
 
         double elapsed = clockWindow.Elapsed.TotalSeconds;

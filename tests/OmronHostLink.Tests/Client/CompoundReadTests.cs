@@ -108,6 +108,48 @@ public sealed class CompoundReadTests : IAsyncDisposable
     }
 
     [Fact]
+    public async Task A_units_compound_read_waits_for_the_line_in_its_turn_not_for_another_units()
+    {
+        // Unit 0's QQIR holds the line (its answer held back); then unit 1 asks for a QQIR, and after it for an RD. The
+        // line takes them in the order they asked: unit 1's registration is its own, so its QQIR does not wait for unit
+        // 0's to end before it asks for the line (which would let the later RD go first).
+        var plc = new VirtualPlc(new VirtualPlcOptions { Units = [0, 1] });
+        plc.WriteWord(PlcArea.Dm, 100, 0x1111);
+        plc.WriteWord(PlcArea.Dm, 5000, 0x2222);
+        (Stream host, Stream plcEnd) = InMemoryLink.CreatePair();
+        var answers = new HeldAnswers(plcEnd);
+        using var stop = new CancellationTokenSource();
+        Task session = plc.RunAsync(answers, stop.Token);
+        var sent = new ConcurrentQueue<string>();
+        await using HostLinkClient client = HostLinkClient.ForStream(host, new HostLinkClientOptions { LineTiming = new LineTiming(115200, 11), TurnaroundAllowance = InProcessLine.InMemoryAllowance });
+        client.FrameObserver = (isSent, frame) =>
+        {
+            if (isSent)
+            {
+                sent.Enqueue(Encoding.ASCII.GetString(frame.Span)[..7]);
+            }
+        };
+        HostLinkUnit other = client.Unit(1);
+        (await client.ReadCompoundAsync(["D100"])).Should().Equal(0x1111);
+        (await other.ReadCompoundAsync(["D5000"])).Should().Equal(0x2222);
+        sent.Clear();
+
+        answers.Hold();
+        Task<ushort[]> first = client.ReadCompoundAsync(["D100"]);
+        await Eventually.UntilAsync(() => sent.Contains("@00QQIR"), "unit 0's QQIR is on the line");
+        Task<ushort[]> second = other.ReadCompoundAsync(["D5000"]);
+        Task<ushort[]> third = other.ReadWordsAsync("D100", 1);
+        answers.Release();
+
+        (await first).Should().Equal(0x1111);
+        (await second).Should().Equal(0x2222);
+        (await third).Should().Equal(0x1111);
+        sent.Should().Equal("@00QQIR", "@01QQIR", "@01RD01");
+        await stop.CancelAsync();
+        await session;
+    }
+
+    [Fact]
     public async Task Bad_input_is_refused_before_anything_is_sent()
     {
         await FluentActions.Awaiting(() => _client.ReadCompoundAsync(Array.Empty<string>())).Should().ThrowAsync<ArgumentException>();
@@ -126,6 +168,26 @@ public sealed class CompoundReadTests : IAsyncDisposable
         registry.Holds(0, items, openings: 2).Should().BeFalse();
         registry.Holds(1, items, openings: 1).Should().BeFalse();
         registry.Holds(0, [CompoundItem.ForWord(CompoundArea.Dm, 2)], openings: 1).Should().BeFalse();
+    }
+
+    /// <summary>The PLC's end of the line, whose answers can be held back until released.</summary>
+    private sealed class HeldAnswers(Stream inner) : PassThroughStream(inner)
+    {
+        private volatile TaskCompletionSource? _held;
+
+        public void Hold() => _held = new TaskCompletionSource(TaskCreationOptions.RunContinuationsAsynchronously);
+
+        public void Release() => _held?.TrySetResult();
+
+        public override async ValueTask WriteAsync(ReadOnlyMemory<byte> buffer, CancellationToken cancellationToken = default)
+        {
+            if (_held is { } held)
+            {
+                await held.Task.WaitAsync(cancellationToken).ConfigureAwait(false);
+            }
+
+            await Inner.WriteAsync(buffer, cancellationToken).ConfigureAwait(false);
+        }
     }
 
     public async ValueTask DisposeAsync()
