@@ -4,7 +4,7 @@ namespace OmronHostLink.Gateway.Polling;
 
 /// <summary>
 /// The cycle each scan class of one line can expect when the classes share it: a deterministic run of the line's
-/// schedule as the gateway polls it. Every class is one watch that starts at its phase (<see cref="Phase"/>) and keeps
+/// schedule as the gateway polls it. Every class is one watch that starts at its phase (<see cref="Phases"/>) and keeps
 /// a fixed schedule from there: each cycle due one interval after the one before was due, a cycle found late started
 /// at once in the place of the latest scheduled time already past. A cycle makes its reads one after another, each an
 /// exchange the line's gate runs whole and the host's hand-over to the next (<see cref="HandOver"/>); readers that wait
@@ -15,9 +15,10 @@ namespace OmronHostLink.Gateway.Polling;
 /// <remarks>
 /// A queueing formula with random phases misses what rules such a line: classes of one interval keep their phases, so
 /// they wait for each other the same way cycle after cycle, and a class's read waits behind the reads other classes
-/// queued first. The classes' phases are staggered so that the order in which they come due is fixed (by their
-/// configuration order) rather than left to which of the host's timers wakes first; the run follows that order. Run for
-/// twenty of the longest intervals (or until 200,000 reads, each class at least one cycle).
+/// queued first. The classes' phases (<see cref="Phases"/>) fix the order in which they come due rather than leave it
+/// to which of the host's timers wakes first; the run follows those phases. Run for
+/// twenty of the longest intervals after the first (or until 200,000 reads, each class at least one cycle after it):
+/// every class reads at once at the start, and cycles begun within the first longest interval are left out.
 /// </remarks>
 internal static class LineSchedule
 {
@@ -25,17 +26,88 @@ internal static class LineSchedule
     private const long MaxReads = 200_000;
 
     /// <summary>
-    /// How far apart a link's scan classes start: more than a timer's lateness on a busy host, so the classes come due
-    /// in their configuration order every cycle, and little against the shortest intervals.
+    /// How far apart any two of a link's scan classes come due at the least (where their phases allow): more than a
+    /// timer's lateness on a busy host, so that the classes come due in a fixed order every cycle, and little against
+    /// the shortest intervals.
     /// </summary>
     public static readonly TimeSpan Stagger = TimeSpan.FromMilliseconds(10);
 
-    /// <summary>When the link's scan class at <paramref name="index"/> (configuration order) starts, after the link's start.</summary>
-    public static TimeSpan Phase(int index) => Stagger * index;
+    private static readonly TimeSpan Step = TimeSpan.FromMilliseconds(1);
+    private const int MaxSteps = 1000;
+
+    /// <summary>
+    /// When each of a link's scan classes (their intervals in configuration order) comes due, after the link's start:
+    /// the classes of one interval spread evenly across it (the second of two every-second classes half a second after
+    /// the first), so that they do not queue for the line together every cycle and hold a faster class up behind all
+    /// of their reads; and each moved on from there, a millisecond at a time, until it comes due at least
+    /// <see cref="Stagger"/> from every class placed before it — on its own cycle and theirs, which meet every
+    /// greatest common divisor of the two intervals — so that no two come due at one instant, which the host's timers
+    /// would order as they happen to wake. Where no place is that far from all (many classes on short intervals), the
+    /// farthest found is taken.
+    /// </summary>
+    public static TimeSpan[] Phases(IReadOnlyList<TimeSpan> intervals)
+    {
+        var phases = new TimeSpan[intervals.Count];
+        for (int i = 0; i < phases.Length; i++)
+        {
+            TimeSpan interval = intervals[i];
+            int alike = intervals.Count(x => x == interval);
+            int before = intervals.Take(i).Count(x => x == interval);
+            TimeSpan spread = alike > 1 ? TimeSpan.FromTicks(interval.Ticks / alike * before) : TimeSpan.Zero;
+            TimeSpan best = spread;
+            long bestDistance = -1;
+            for (int step = 0; step < MaxSteps && interval > TimeSpan.Zero; step++)
+            {
+                TimeSpan candidate = spread + (Step * step);
+                long distance = long.MaxValue;
+                for (int j = 0; j < i; j++)
+                {
+                    if (intervals[j] > TimeSpan.Zero)
+                    {
+                        long meet = Gcd(interval.Ticks, intervals[j].Ticks);
+                        long apart = (((candidate - phases[j]).Ticks % meet) + meet) % meet;
+                        distance = Math.Min(distance, Math.Min(apart, meet - apart));
+                    }
+                }
+
+                if (distance > bestDistance)
+                {
+                    best = candidate;
+                    bestDistance = distance;
+                }
+
+                if (distance >= Stagger.Ticks)
+                {
+                    break;
+                }
+            }
+
+            phases[i] = best;
+        }
+
+        return phases;
+    }
+
+    private static long Gcd(long a, long b)
+    {
+        while (b != 0)
+        {
+            (a, b) = (b, a % b);
+        }
+
+        return a;
+    }
+
+    /// <summary>
+    /// The latest of a class's scheduled times at or before the link's start (its phase less whole intervals): the
+    /// anchor its watch is given, so that its first cycle runs at once, as every class's does, and the next on its phase.
+    /// </summary>
+    public static TimeSpan Anchor(TimeSpan phase, TimeSpan interval)
+        => interval <= TimeSpan.Zero || phase <= TimeSpan.Zero ? TimeSpan.Zero : phase - TimeSpan.FromTicks((phase.Ticks + interval.Ticks - 1) / interval.Ticks * interval.Ticks);
 
     /// <summary>
     /// One scan class on the line: its interval, the time of each of its reads (the send gap included), and its first
-    /// cycle's start after the link's (<see cref="Phase"/>).
+    /// cycle's start after the link's (<see cref="Phases"/>).
     /// </summary>
     public readonly record struct Watch(TimeSpan Interval, IReadOnlyList<TimeSpan> Reads, TimeSpan Start)
     {
@@ -76,7 +148,8 @@ internal static class LineSchedule
             return cycles;
         }
 
-        long horizon = watches.Max(w => w.Interval.Ticks) * Horizon;
+        long warmUp = watches.Max(w => w.Interval.Ticks);
+        long horizon = warmUp * (Horizon + 1);
         var next = new int[n];
         var start = new long[n];
         var slot = new long[n];
@@ -90,8 +163,9 @@ internal static class LineSchedule
         {
             if (watches[i].Reads.Count > 0)
             {
-                slot[i] = watches[i].Start.Ticks;
-                due.Enqueue(i, (slot[i], i));
+                // Every class reads at once at the start, then on its phase's schedule.
+                slot[i] = Anchor(watches[i].Start, watches[i].Interval).Ticks;
+                due.Enqueue(i, (0, i));
             }
         }
 
@@ -123,8 +197,13 @@ internal static class LineSchedule
             }
             else
             {
-                count[reader]++;
-                total[reader] += now - start[reader];
+                // The start, where every class reads at once and the late find their places, is not the schedule's:
+                // cycles begun within the longest interval are left out of the expectation.
+                if (start[reader] >= warmUp)
+                {
+                    count[reader]++;
+                    total[reader] += now - start[reader];
+                }
                 long interval = watches[reader].Interval.Ticks;
                 long at = slot[reader] + interval;
                 if (at < now)
@@ -170,6 +249,7 @@ internal static class LineSchedule
         }
     }
 
+    /// <summary>Whether every watch with reads has a cycle counted.</summary>
     private static bool AllCycled(long[] count, IReadOnlyList<Watch> watches)
     {
         for (int i = 0; i < count.Length; i++)

@@ -138,9 +138,10 @@ internal sealed class LinkPoller(string name, LinkOptions options, Func<HostLink
             DemotionPeriod = options.Demotion.Period,
             TimeProvider = time,
 
-            // Each class on its phase from the link's start, however late its watch starts, so that the classes come
-            // due on the shared line in a fixed order (LineSchedule); a scan that replaces another keeps its schedule.
-            ScheduleStart = _started + (long)(scan.Phase.Ticks * (double)time.TimestampFrequency / TimeSpan.TicksPerSecond),
+            // Each class reads at once, then on its phase from the link's start, however late its watch starts, so
+            // that the classes come due on the shared line in a fixed order (LineSchedule); a scan that replaces
+            // another keeps its schedule.
+            ScheduleStart = _started + (long)(LineSchedule.Anchor(scan.Phase, scan.Interval).Ticks * (double)time.TimestampFrequency / TimeSpan.TicksPerSecond),
         };
         CancellationToken token = run.Stop.Token;
         try

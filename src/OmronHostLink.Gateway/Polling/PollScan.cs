@@ -28,13 +28,14 @@ internal sealed class PollScan
 
     /// <summary>
     /// One scan class per unit and interval, in the order their first groups are configured, each starting at its
-    /// place's phase (<see cref="LineSchedule.Phase"/>).
+    /// place's phase (<see cref="LineSchedule.Phases"/>).
     /// </summary>
     public static List<PollScan> Classes(IEnumerable<PollGroup> groups, HostLinkUnit client)
-        => groups
-            .GroupBy(g => (g.UnitNumber, g.Interval))
-            .Select((c, i) => new PollScan(client.Unit(c.Key.UnitNumber), c.Key.Interval, c.ToList()) { Phase = LineSchedule.Phase(i) })
-            .ToList();
+    {
+        var classes = groups.GroupBy(g => (g.UnitNumber, g.Interval)).ToList();
+        TimeSpan[] phases = LineSchedule.Phases(classes.Select(c => c.Key.Interval).ToArray());
+        return classes.Select((c, i) => new PollScan(client.Unit(c.Key.UnitNumber), c.Key.Interval, c.ToList()) { Phase = phases[i] }).ToList();
+    }
 
     /// <summary>The unit's view on the link's client.</summary>
     public HostLinkUnit Unit { get; }
