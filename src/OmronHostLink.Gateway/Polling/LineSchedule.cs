@@ -6,7 +6,7 @@ namespace OmronHostLink.Gateway.Polling;
 /// The cycle each scan class of one line can expect when the classes share it: a deterministic run of the line's
 /// schedule as the gateway polls it. Every class is one watch that starts at its phase (<see cref="Phases"/>) and keeps
 /// a fixed schedule from there: each cycle due one interval after the one before was due, a cycle found late started
-/// at once in the place of the latest scheduled time already past. A cycle makes its reads one after another, each an
+/// at once in the place of the scheduled time nearest to it. A cycle makes its reads one after another, each an
 /// exchange the line's gate runs whole and the host's hand-over to the next (<see cref="HandOver"/>); readers that wait
 /// for the gate take it in the order they asked (SemaphoreSlim's queue; a QQ read too, whose registration gate is its
 /// unit's alone), so a read waits for at most one read of each other class, and a class's cycle stretches by the reads
@@ -164,7 +164,8 @@ internal static class LineSchedule
             if (watches[i].Reads.Count > 0)
             {
                 // Every class reads at once at the start, then on its phase's schedule.
-                slot[i] = Anchor(watches[i].Start, watches[i].Interval).Ticks;
+                TimeSpan anchor = Anchor(watches[i].Start, watches[i].Interval);
+                slot[i] = (anchor < TimeSpan.Zero ? TagWatch.LatePlace(anchor, TimeSpan.Zero, watches[i].Interval) : anchor).Ticks;
                 due.Enqueue(i, (0, i));
             }
         }
@@ -204,13 +205,14 @@ internal static class LineSchedule
                     count[reader]++;
                     total[reader] += now - start[reader];
                 }
+
                 long interval = watches[reader].Interval.Ticks;
                 long at = slot[reader] + interval;
                 if (at < now)
                 {
-                    // Late: the next cycle starts at once, in the place of the latest scheduled time already past.
+                    // Late: the next cycle starts at once, in its place as the watch gives it (TagWatch.LatePlace).
+                    slot[reader] = interval == 0 ? now : TagWatch.LatePlace(TimeSpan.FromTicks(at), TimeSpan.FromTicks(now), TimeSpan.FromTicks(interval)).Ticks;
                     at = now;
-                    slot[reader] += interval == 0 ? now - slot[reader] : (now - slot[reader]) / interval * interval;
                 }
                 else
                 {

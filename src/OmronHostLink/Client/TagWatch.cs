@@ -12,8 +12,9 @@ namespace OmronHostLink;
 /// timer that wakes late does not push the cycles after it later (the phase does not drift), and one that wakes a
 /// little early (the system timer can, by the stopwatch's clock) does not make the next cycle due sooner. When the
 /// subscriber asks for more events after the next cycle was due (the read was slow, or handling the events was), an
-/// overrun is reported and that cycle starts at once, in the place of the latest scheduled time already past; the one
-/// after it is due at the scheduled time after that, so no backlog of cycles piles up. A failed read's retries and a
+/// overrun is reported and that cycle starts at once, in the place of the scheduled time nearest to it (the latest
+/// already past, or the next); the one after it is due at the scheduled time after that, so no backlog of cycles piles
+/// up and a long cycle is not followed by cycles back to back. A failed read's retries and a
 /// demoted unit's probes wait their own delays from the failure, and the schedule starts again from the cycle that
 /// reads.
 /// </remarks>
@@ -52,8 +53,7 @@ internal static class TagWatch
                 }
                 else if (interval > TimeSpan.Zero && now > due)
                 {
-                    // Late: this cycle takes the latest scheduled time already past, and those skipped are not made up.
-                    due += TimeSpan.FromTicks((now - due).Ticks / interval.Ticks * interval.Ticks);
+                    due = LatePlace(due, now, interval);
                     if (succeeded)
                     {
                         yield return WatchEvent.Overrun(now - cycleStart, time.GetUtcNow());
@@ -179,6 +179,15 @@ internal static class TagWatch
             planned.Release();
         }
     }
+
+    /// <summary>
+    /// The place in the schedule of a cycle found late (due at <paramref name="due"/>, started at <paramref name="now"/>):
+    /// the scheduled time nearest to its start, the latest already past or the next. The cycles skipped are not made
+    /// up, and after a long cycle the next is due about an interval on, not at once again and again while the late
+    /// start is caught up a little each cycle.
+    /// </summary>
+    internal static TimeSpan LatePlace(TimeSpan due, TimeSpan now, TimeSpan interval)
+        => due + TimeSpan.FromTicks(((now - due).Ticks + (interval.Ticks / 2)) / interval.Ticks * interval.Ticks);
 
     /// <summary>
     /// Whether a failed read is an outage to report and outlive: the library's own failures, the stream's, a value that

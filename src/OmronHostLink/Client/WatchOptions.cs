@@ -60,8 +60,8 @@ public sealed class WatchOptions
 
     /// <summary>
     /// Where the schedule is anchored, as a timestamp of <see cref="TimeProvider"/>: cycles are due at it plus whole
-    /// intervals (the first cycle at the first of those times not yet past, or at once in the place of the latest one
-    /// past), so watches started together keep the phases they were given however late each one starts. Null (the
+    /// intervals (the first cycle at the first of those times not yet past, or at once in the place of the one nearest
+    /// to its start), so watches started together keep the phases they were given however late each one starts. Null (the
     /// default): the schedule starts with the watch's first cycle.
     /// </summary>
     internal long? ScheduleStart { get; set; }

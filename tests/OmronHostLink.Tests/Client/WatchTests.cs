@@ -214,7 +214,7 @@ public sealed class WatchTests
             if (slow)
             {
                 slow = false;
-                clock.Advance(TimeSpan.FromSeconds(3.5));
+                clock.Advance(TimeSpan.FromSeconds(3.3));
             }
         };
         await using IAsyncEnumerator<WatchEvent> watch = line.Client
@@ -228,21 +228,61 @@ public sealed class WatchTests
         clock.Advance(Second);
         WatchEvent overrun = await Completed(pending, watch);
         overrun.Kind.Should().Be(WatchEventKind.Overrun);
-        overrun.Duration.Should().Be(TimeSpan.FromSeconds(3.5));
+        overrun.Duration.Should().Be(TimeSpan.FromSeconds(3.3));
         line.FramesSent.Should().Be(2);
         int timers = clock.TimersCreated;
 
-        // The next cycle runs at once (at 4.5 s, in the place of the one due at 4 s); the one after is due on the
-        // schedule, at 5 s: 3 missed cycles are not made up.
+        // The next cycle runs at once (at 4.3 s, in the place of the one due at 4 s, the nearest); the one after is due
+        // on the schedule, at 5 s: 3 missed cycles are not made up.
         pending = watch.MoveNextAsync();
         await clock.NextTimerAsync();
         line.FramesSent.Should().Be(3);
         clock.TimersCreated.Should().Be(timers + 1);
-        clock.LastDueTime.Should().Be(TimeSpan.FromSeconds(0.5), "the schedule goes on from where it was: cycles at whole seconds");
+        clock.LastDueTime.Should().Be(TimeSpan.FromSeconds(0.7), "the schedule goes on from where it was: cycles at whole seconds");
         pending.IsCompleted.Should().BeFalse();
         line.Plc.WriteWord(PlcArea.Dm, 100, 9);
-        clock.Advance(TimeSpan.FromSeconds(0.5));
+        clock.Advance(TimeSpan.FromSeconds(0.7));
         (await Completed(pending, watch)).NewValue.Should().Be(PlcValue.FromWord(9));
+        line.FramesSent.Should().Be(4);
+    }
+
+    [Fact]
+    public async Task A_long_cycle_is_followed_by_one_overrun_not_by_cycles_back_to_back()
+    {
+        await using InProcessLine line = InProcessLine.Start();
+        var clock = new SteppingClock();
+        bool slow = false;
+        line.OnSend = () =>
+        {
+            if (slow)
+            {
+                slow = false;
+                clock.Advance(TimeSpan.FromSeconds(3.8));
+            }
+        };
+        await using IAsyncEnumerator<WatchEvent> watch = line.Client
+            .WatchAsync(new[] { PlcTag.Parse("D100") }, new WatchOptions { Interval = Second, TimeProvider = clock, ReportEveryCycle = true })
+            .GetAsyncEnumerator();
+        (await Next(watch)).IsInitial.Should().BeTrue();
+        (await Next(watch)).Kind.Should().Be(WatchEventKind.Polled);
+
+        ValueTask<bool> pending = watch.MoveNextAsync();
+        await clock.NextTimerAsync();
+        slow = true;
+        clock.Advance(Second);
+        (await Completed(pending, watch)).Kind.Should().Be(WatchEventKind.Polled);
+
+        // The cycle due at 1 s ended at 4.8 s: the next runs at once in the place of the one due at 5 s (the nearest),
+        // so the one after it is due at 6 s, a whole interval on — not at 5 s, right behind it.
+        (await Next(watch)).Kind.Should().Be(WatchEventKind.Overrun);
+        (await Next(watch)).Kind.Should().Be(WatchEventKind.Polled);
+        line.FramesSent.Should().Be(3);
+        pending = watch.MoveNextAsync();
+        await clock.NextTimerAsync();
+        clock.LastDueTime.Should().Be(TimeSpan.FromSeconds(1.2));
+        pending.IsCompleted.Should().BeFalse();
+        clock.Advance(clock.LastDueTime);
+        (await Completed(pending, watch)).Kind.Should().Be(WatchEventKind.Polled);
         line.FramesSent.Should().Be(4);
     }
 
