@@ -203,20 +203,27 @@ public sealed class WatchTests
         first.NewValue.Should().Be(PlcValue.FromBcd(421));
     }
 
-    [Fact]
-    public async Task A_cycle_longer_than_the_interval_is_an_overrun_and_the_next_starts_at_once_without_a_backlog()
+    /// <summary>Returns what makes the next command sent take <paramref name="by"/> on the clock.</summary>
+    private static Action SlowNextSend(InProcessLine line, SteppingClock clock, TimeSpan by)
     {
-        await using InProcessLine line = InProcessLine.Start();
-        var clock = new SteppingClock();
         bool slow = false;
         line.OnSend = () =>
         {
             if (slow)
             {
                 slow = false;
-                clock.Advance(TimeSpan.FromSeconds(3.3));
+                clock.Advance(by);
             }
         };
+        return () => slow = true;
+    }
+
+    [Fact]
+    public async Task A_cycle_longer_than_the_interval_is_an_overrun_and_the_next_starts_at_once_without_a_backlog()
+    {
+        await using InProcessLine line = InProcessLine.Start();
+        var clock = new SteppingClock();
+        Action slowNextSend = SlowNextSend(line, clock, TimeSpan.FromSeconds(3.3));
         await using IAsyncEnumerator<WatchEvent> watch = line.Client
             .WatchAsync(new[] { PlcTag.Parse("D100") }, new WatchOptions { Interval = Second, TimeProvider = clock })
             .GetAsyncEnumerator();
@@ -224,7 +231,7 @@ public sealed class WatchTests
 
         ValueTask<bool> pending = watch.MoveNextAsync();
         await clock.NextTimerAsync();
-        slow = true;
+        slowNextSend();
         clock.Advance(Second);
         WatchEvent overrun = await Completed(pending, watch);
         overrun.Kind.Should().Be(WatchEventKind.Overrun);
@@ -251,15 +258,7 @@ public sealed class WatchTests
     {
         await using InProcessLine line = InProcessLine.Start();
         var clock = new SteppingClock();
-        bool slow = false;
-        line.OnSend = () =>
-        {
-            if (slow)
-            {
-                slow = false;
-                clock.Advance(TimeSpan.FromSeconds(3.8));
-            }
-        };
+        Action slowNextSend = SlowNextSend(line, clock, TimeSpan.FromSeconds(3.8));
         await using IAsyncEnumerator<WatchEvent> watch = line.Client
             .WatchAsync(new[] { PlcTag.Parse("D100") }, new WatchOptions { Interval = Second, TimeProvider = clock, ReportEveryCycle = true })
             .GetAsyncEnumerator();
@@ -268,7 +267,7 @@ public sealed class WatchTests
 
         ValueTask<bool> pending = watch.MoveNextAsync();
         await clock.NextTimerAsync();
-        slow = true;
+        slowNextSend();
         clock.Advance(Second);
         (await Completed(pending, watch)).Kind.Should().Be(WatchEventKind.Polled);
 
@@ -277,13 +276,19 @@ public sealed class WatchTests
         (await Next(watch)).Kind.Should().Be(WatchEventKind.Overrun);
         (await Next(watch)).Kind.Should().Be(WatchEventKind.Polled);
         line.FramesSent.Should().Be(3);
-        pending = watch.MoveNextAsync();
+        await NextCycleAsync(watch, clock, TimeSpan.FromSeconds(1.2), "the one after it is due at 6 s");
+        line.FramesSent.Should().Be(4);
+    }
+
+    /// <summary>The next event is a cycle the watch waits for, <paramref name="due"/> on by the clock (to a millisecond), and it polls.</summary>
+    private static async Task NextCycleAsync(IAsyncEnumerator<WatchEvent> watch, SteppingClock clock, TimeSpan due, string because)
+    {
+        ValueTask<bool> pending = watch.MoveNextAsync();
         await clock.NextTimerAsync();
-        clock.LastDueTime.Should().Be(TimeSpan.FromSeconds(1.2));
-        pending.IsCompleted.Should().BeFalse();
+        pending.IsCompleted.Should().BeFalse(because);
+        clock.LastDueTime.Should().BeCloseTo(due, TimeSpan.FromMilliseconds(1), because);
         clock.Advance(clock.LastDueTime);
         (await Completed(pending, watch)).Kind.Should().Be(WatchEventKind.Polled);
-        line.FramesSent.Should().Be(4);
     }
 
     [Fact]
@@ -319,13 +324,7 @@ public sealed class WatchTests
         clock.Advance(clock.LastDueTime);
         (await Completed(pending, watch)).Kind.Should().Be(WatchEventKind.Polled);
         line.FramesSent.Should().Be(7, "the cycle due at 6 s ran once");
-        pending = watch.MoveNextAsync();
-        await clock.NextTimerAsync();
-        line.FramesSent.Should().Be(7);
-        pending.IsCompleted.Should().BeFalse();
-        clock.LastDueTime.Should().BeCloseTo(Second + early, TimeSpan.FromMilliseconds(1), "the cycle after it is due at 7 s, not again at 6 s (a timer waits whole milliseconds)");
-        clock.Advance(clock.LastDueTime);
-        (await Completed(pending, watch)).Kind.Should().Be(WatchEventKind.Polled);
+        await NextCycleAsync(watch, clock, Second + early, "the cycle after it is due at 7 s, not again at 6 s (a timer waits whole milliseconds)");
         line.FramesSent.Should().Be(8);
     }
 
