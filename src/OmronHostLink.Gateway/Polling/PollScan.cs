@@ -27,8 +27,8 @@ internal sealed class PollScan
     }
 
     /// <summary>
-    /// One scan class per unit and interval, in the order their first groups are configured, each starting at its
-    /// place's phase (<see cref="LineSchedule.Phases"/>).
+    /// One scan class per unit and interval, in the order their first groups are configured, each on the phase of its
+    /// place (<see cref="LineSchedule.Phases"/>).
     /// </summary>
     public static List<PollScan> Classes(IEnumerable<PollGroup> groups, HostLinkUnit client)
     {
