@@ -17,8 +17,9 @@ namespace OmronHostLink.Gateway.Polling;
 /// they wait for each other the same way cycle after cycle, and a class's read waits behind the reads other classes
 /// queued first. The classes' phases (<see cref="Phases"/>) fix the order in which they come due rather than leave it
 /// to which of the host's timers wakes first; the run follows those phases. Run for
-/// twenty of the longest intervals after the first (or until 200,000 reads, each class at least one cycle after it):
-/// every class reads at once at the start, and cycles begun within the first longest interval are left out.
+/// twenty of the longest intervals after the first, each class at least one cycle after it (every class reads at once
+/// at the start, and cycles begun within the first longest interval are left out), or until 200,000 reads, each class
+/// at least one cycle (its cycles at the start counted when it has no other).
 /// </remarks>
 internal static class LineSchedule
 {
@@ -155,6 +156,8 @@ internal static class LineSchedule
         var slot = new long[n];
         var count = new long[n];
         var total = new long[n];
+        var cycled = new long[n];
+        var totalCycled = new long[n];
 
         // Watches by the time they come due; at one instant, in their order.
         var due = new PriorityQueue<int, (long At, int Rank)>();
@@ -206,6 +209,9 @@ internal static class LineSchedule
                     total[reader] += now - start[reader];
                 }
 
+                cycled[reader]++;
+                totalCycled[reader] += now - start[reader];
+
                 long interval = watches[reader].Interval.Ticks;
                 long at = slot[reader] + interval;
                 if (at < now)
@@ -222,7 +228,9 @@ internal static class LineSchedule
                 due.Enqueue(reader, (at, reader));
             }
 
-            if ((now >= horizon || reads >= MaxReads) && AllCycled(count, watches))
+            // Past the horizon once every class has a cycle after the start; at the read limit, once every class has one
+            // at all (a class of a day beside one of milliseconds is not run for a day of reads).
+            if ((now >= horizon && AllCycled(count, watches)) || (reads >= MaxReads && AllCycled(cycled, watches)))
             {
                 break;
             }
@@ -230,7 +238,9 @@ internal static class LineSchedule
 
         for (int i = 0; i < n; i++)
         {
-            cycles[i] = count[i] == 0 ? Alone(watches[i]) : TimeSpan.FromTicks(total[i] / count[i]);
+            cycles[i] = count[i] > 0 ? TimeSpan.FromTicks(total[i] / count[i])
+                : cycled[i] > 0 ? TimeSpan.FromTicks(totalCycled[i] / cycled[i])
+                : Alone(watches[i]);
         }
 
         return cycles;

@@ -100,6 +100,17 @@ public sealed class LineScheduleTests
     }
 
     [Fact]
+    public void A_class_of_a_day_beside_one_of_milliseconds_is_answered_from_the_reads_run()
+    {
+        // Saturated 5 ms reads every millisecond beside one 5 ms read a day: the run stops at its read limit, and the
+        // day's class, which has read only at the start, expects that cycle: its read behind one of the other class's.
+        TimeSpan[] cycles = LineSchedule.ExpectedCycles([Watch(1, 1, 5, startMs: 0), new LineSchedule.Watch(TimeSpan.FromDays(1), [Ms(5)], Ms(10))]);
+
+        cycles[1].Should().Be(Ms(10 + (2 * H)));
+        cycles[0].TotalMilliseconds.Should().BeInRange(5 + H, 10 + (2 * H));
+    }
+
+    [Fact]
     public void Classes_with_nothing_to_read_or_none_at_all_are_answered()
     {
         LineSchedule.ExpectedCycles([]).Should().BeEmpty();
