@@ -107,8 +107,8 @@ internal static class LineSchedule
         => interval <= TimeSpan.Zero || phase <= TimeSpan.Zero ? TimeSpan.Zero : phase - TimeSpan.FromTicks((phase.Ticks + interval.Ticks - 1) / interval.Ticks * interval.Ticks);
 
     /// <summary>
-    /// One scan class on the line: its interval, the time of each of its reads (the send gap included), and its first
-    /// cycle's start after the link's (<see cref="Phases"/>).
+    /// One scan class on the line: its interval, the time of each of its reads (the send gap included), and its phase
+    /// after the link's start (<see cref="Phases"/>), where its schedule lies; its first cycle runs at once.
     /// </summary>
     public readonly record struct Watch(TimeSpan Interval, IReadOnlyList<TimeSpan> Reads, TimeSpan Start)
     {

@@ -593,7 +593,7 @@ internal sealed class LinkPoller(string name, LinkOptions options, Func<HostLink
                 .ToArray());
         }
 
-        LineSchedule.Watch[] watches = parts.SelectMany(p => p).Select(p => new LineSchedule.Watch(p.Part.Interval, LineSchedule.Reads(p.Plan, Gap), p.Part.Phase)).ToArray();
+        LineSchedule.Watch[] watches = parts.SelectMany(p => p).Select(p => p.Part.OnLine(p.Plan, Gap)).ToArray();
         TimeSpan[] cycles = LineSchedule.ExpectedCycles(watches);
         var reports = new ScanPlan[classes.Length];
         int w = 0;

@@ -53,6 +53,9 @@ internal sealed class PollScan
     /// </summary>
     public TimeSpan Phase { get; init; }
 
+    /// <summary>The scan on its line's schedule, reading with <paramref name="plan"/> and <paramref name="gap"/> before each command.</summary>
+    public LineSchedule.Watch OnLine(ReadPlan plan, TimeSpan gap) => new(Interval, LineSchedule.Reads(plan, gap), Phase);
+
     /// <summary>The groups read, in configuration order.</summary>
     public IReadOnlyList<PollGroup> Groups { get; }
 

@@ -41,8 +41,8 @@ internal static class ScanPlanReport
 
             TimeSpan gap = link.Client.SendInterval ?? TimeSpan.Zero;
             ReadPlan?[] pending = scans.Select(s => PendingCompound(s, link)).ToArray();
-            LineSchedule.Watch[] now = scans.Select(s => new LineSchedule.Watch(s.Interval, LineSchedule.Reads(s.Plan!, gap), s.Phase)).ToArray();
-            LineSchedule.Watch[] then = scans.Select((s, i) => new LineSchedule.Watch(s.Interval, LineSchedule.Reads(pending[i] ?? s.Plan!, gap), s.Phase)).ToArray();
+            LineSchedule.Watch[] now = scans.Select(s => s.OnLine(s.Plan!, gap)).ToArray();
+            LineSchedule.Watch[] then = scans.Select((s, i) => s.OnLine(pending[i] ?? s.Plan!, gap)).ToArray();
             TimeSpan[] cycles = LineSchedule.ExpectedCycles(now);
             TimeSpan[] cyclesThen = pending.Any(p => p is not null) ? LineSchedule.ExpectedCycles(then) : cycles;
             double load = then.Sum(w => w.LineTime.TotalSeconds / w.Interval.TotalSeconds);
