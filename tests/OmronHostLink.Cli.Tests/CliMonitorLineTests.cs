@@ -16,8 +16,10 @@ namespace OmronHostLink.Cli.Tests;
 /// </summary>
 /// <remarks>
 /// The session lasts about <c>HOSTLINK_MONITOR_LINE_SECONDS</c> seconds (default 10); the
-/// acceptance run is 600 (docs/field-diagnosis.md). The monitor runs as its own process, as a user runs it; socat and
-/// the line's relay run with real-time scheduling where Linux allows it, as the monitor's reader does.
+/// acceptance run is 600 (docs/field-diagnosis.md). The monitor runs as its own process, as a user runs it, on taps this
+/// process writes directly (<see cref="PseudoTerminal"/>); the host's socat and the line's relay run with real-time
+/// scheduling where Linux allows it, as the monitor's reader does. The five exchanges furthest from the simulator's
+/// latency are printed with the figures.
 /// </remarks>
 [Collection(TimingCollection.Name)]
 public sealed class CliMonitorLineTests : IDisposable
@@ -196,6 +198,11 @@ public sealed class CliMonitorLineTests : IDisposable
             double[] sorted = differences.Select(d => Math.Abs(d.Ms)).Order().ToArray();
             double bound = LatencyBound.TotalMilliseconds;
             Console.WriteLine($"monitor-line: {expected.Count} exchanges, {Logged.Count} frames; after {WarmUp} warm-up exchanges, |monitor - simulator| latency: median {sorted[sorted.Length / 2]:0.000} ms, 99th percentile {sorted[(int)(sorted.Length * 0.99)]:0.000} ms, worst {sorted[^1]:0.000} ms, over 1 ms: {sorted.Count(d => d > 1)}");
+            foreach ((double ms, string what) in differences.OrderByDescending(d => Math.Abs(d.Ms)).Take(5))
+            {
+                Console.WriteLine($"  {ms:+0.000;-0.000} ms: {what}");
+            }
+
             sorted[sorted.Length / 2].Should().BeLessThanOrEqualTo(MedianBound.TotalMilliseconds, "a typical answer latency the monitor heard is within a millisecond of the simulator's own");
             differences.Where(d => Math.Abs(d.Ms) > bound).Select(d => d.What).Should().BeEmpty("every answer latency the monitor heard is within {0} ms of the simulator's own (see LatencyBound)", bound);
         }

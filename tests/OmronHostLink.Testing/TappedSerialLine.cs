@@ -9,7 +9,8 @@ namespace OmronHostLink.Testing;
 /// of a socat pty pair) as any serial port, the PLC (a simulator) is served on <see cref="PlcStream"/>, and everything
 /// either side sends is copied, as it crosses, to a tap port that hears both directions (a half-duplex RS-485 line) and,
 /// if asked, to two that hear one direction each (the receive taps of a full-duplex RS-232 line). A monitor listens on
-/// the taps.
+/// the taps. Each tap is a <see cref="PseudoTerminal"/> this process writes to directly: a tap's bytes cross one pty
+/// and no other process, so a listener hears them when they crossed, not when a relay process next ran.
 /// </summary>
 /// <remarks>
 /// Both sides' bytes cross at the line's character rate (in batches about a millisecond apart, each holding what the
@@ -20,11 +21,11 @@ namespace OmronHostLink.Testing;
 /// </remarks>
 public sealed class TappedSerialLine : IAsyncDisposable
 {
-    private readonly List<SocatPtyPair> _pairs;
+    private readonly SocatPtyPair _hostPair;
     private readonly FileStream _hostInner;
-    private readonly FileStream? _tapInner;
-    private readonly FileStream? _hostTapInner;
-    private readonly FileStream? _plcTapInner;
+    private readonly PseudoTerminal? _tap;
+    private readonly PseudoTerminal? _hostTap;
+    private readonly PseudoTerminal? _plcTap;
     private readonly object _tapGate = new();
     private readonly double _secondsPerCharacter;
     private readonly Thread _relay;
@@ -34,24 +35,29 @@ public sealed class TappedSerialLine : IAsyncDisposable
     private long _bytesToPlc;
     private long _bytesToHost;
 
-    private TappedSerialLine(List<SocatPtyPair> pairs, int baudRate, int bitsPerCharacter, bool bothDirections, bool eachDirection)
+    private TappedSerialLine(SocatPtyPair hostPair, int baudRate, int bitsPerCharacter, bool bothDirections, bool eachDirection)
     {
-        _pairs = pairs;
+        _hostPair = hostPair;
         _secondsPerCharacter = baudRate > 0 ? (double)bitsPerCharacter / baudRate : 0;
-        _hostInner = Open(pairs[0].PathB);
-        int next = 1;
-        if (bothDirections)
+        _hostInner = Open(hostPair.PathB);
+        try
         {
-            TapPort = pairs[next].PathA;
-            _tapInner = Open(pairs[next++].PathB);
-        }
+            if (bothDirections)
+            {
+                _tap = PseudoTerminal.Open();
+            }
 
-        if (eachDirection)
+            if (eachDirection)
+            {
+                _hostTap = PseudoTerminal.Open();
+                _plcTap = PseudoTerminal.Open();
+            }
+        }
+        catch
         {
-            HostTapPort = pairs[next].PathA;
-            _hostTapInner = Open(pairs[next++].PathB);
-            PlcTapPort = pairs[next].PathA;
-            _plcTapInner = Open(pairs[next].PathB);
+            DisposeTaps();
+            _hostInner.Dispose();
+            throw;
         }
 
         PlcStream = new PlcEnd(this);
@@ -59,19 +65,19 @@ public sealed class TappedSerialLine : IAsyncDisposable
     }
 
     /// <summary>The host's end of the line: a pty to open as a serial port.</summary>
-    public string HostPort => _pairs[0].PathA;
+    public string HostPort => _hostPair.PathA;
 
     /// <summary>The PLC's end of the line, for a simulator to serve (one session).</summary>
     public Stream PlcStream { get; }
 
     /// <summary>The tap that hears both directions, interleaved as they crossed (null unless asked for).</summary>
-    public string? TapPort { get; }
+    public string? TapPort => _tap?.Path;
 
     /// <summary>The tap that hears the host only (null unless asked for).</summary>
-    public string? HostTapPort { get; }
+    public string? HostTapPort => _hostTap?.Path;
 
     /// <summary>The tap that hears the PLC only (null unless asked for).</summary>
-    public string? PlcTapPort { get; }
+    public string? PlcTapPort => _plcTap?.Path;
 
     /// <summary>Bytes carried from the host to the PLC so far.</summary>
     public long BytesToPlc => Interlocked.Read(ref _bytesToPlc);
@@ -86,53 +92,42 @@ public sealed class TappedSerialLine : IAsyncDisposable
     /// </summary>
     public static async Task<TappedSerialLine> StartAsync(int baudRate, int bitsPerCharacter, bool bothDirections = true, bool eachDirection = false)
     {
-        var pairs = new List<SocatPtyPair>();
+        SocatPtyPair hostPair = await SocatPtyPair.StartAsync().ConfigureAwait(false);
+        TappedSerialLine line;
         try
         {
-            for (int i = 0; i < 1 + (bothDirections ? 1 : 0) + (eachDirection ? 2 : 0); i++)
-            {
-                pairs.Add(await SocatPtyPair.StartAsync().ConfigureAwait(false));
-            }
-
-            var line = new TappedSerialLine(pairs, baudRate, bitsPerCharacter, bothDirections, eachDirection);
-            foreach (SocatPtyPair pair in pairs)
-            {
-                RealTimeScheduling.TryRaise(pair.ProcessId);
-            }
-
-            line._relay.Start();
-            return line;
+            line = new TappedSerialLine(hostPair, baudRate, bitsPerCharacter, bothDirections, eachDirection);
         }
         catch
         {
-            foreach (SocatPtyPair pair in pairs)
-            {
-                await pair.DisposeAsync().ConfigureAwait(false);
-            }
-
+            await hostPair.DisposeAsync().ConfigureAwait(false);
             throw;
         }
+
+        RealTimeScheduling.TryRaise(hostPair.ProcessId);
+        line._relay.Start();
+        return line;
     }
 
-    /// <summary>Ends socat (the relay's read ends with it), ends the PLC's stream and closes the far ends. Idempotent.</summary>
+    /// <summary>
+    /// Ends socat (the relay's read ends with it) and the taps (a write to a tap nobody reads ends with them), ends the
+    /// PLC's stream and closes the host's far end. Idempotent.
+    /// </summary>
     public async ValueTask DisposeAsync()
     {
-        foreach (SocatPtyPair pair in _pairs)
-        {
-            await pair.CloseAsync().ConfigureAwait(false);
-        }
-
+        await _hostPair.CloseAsync().ConfigureAwait(false);
+        DisposeTaps();
         _relay.Join(TimeSpan.FromSeconds(5));
         await _toPlc.Writer.CompleteAsync().ConfigureAwait(false);
-        foreach (FileStream? stream in new[] { _hostInner, _tapInner, _hostTapInner, _plcTapInner })
-        {
-            stream?.Dispose();
-        }
+        _hostInner.Dispose();
+        await _hostPair.DisposeAsync().ConfigureAwait(false);
+    }
 
-        foreach (SocatPtyPair pair in _pairs)
-        {
-            await pair.DisposeAsync().ConfigureAwait(false);
-        }
+    private void DisposeTaps()
+    {
+        _tap?.Dispose();
+        _hostTap?.Dispose();
+        _plcTap?.Dispose();
     }
 
     private static FileStream Open(string path) => new(path, FileMode.Open, FileAccess.ReadWrite, FileShare.ReadWrite, bufferSize: 0);
@@ -157,7 +152,7 @@ public sealed class TappedSerialLine : IAsyncDisposable
 
                 Pace(buffer.AsSpan(0, n).ToArray(), clock, ref lineFreeAt, bytes =>
                 {
-                    Tap(bytes, _hostTapInner);
+                    Tap(bytes, _hostTap);
                     Interlocked.Add(ref _bytesToPlc, bytes.Length);
                     _toPlc.Writer.Write(bytes);
                     _ = _toPlc.Writer.FlushAsync().AsTask().GetAwaiter().GetResult();
@@ -175,7 +170,7 @@ public sealed class TappedSerialLine : IAsyncDisposable
     {
         Pace(written.ToArray(), _plcClock, ref _plcLineFreeAt, bytes =>
         {
-            Tap(bytes, _plcTapInner);
+            Tap(bytes, _plcTap);
             Interlocked.Add(ref _bytesToHost, bytes.Length);
             _hostInner.Write(bytes);
         });
@@ -207,14 +202,14 @@ public sealed class TappedSerialLine : IAsyncDisposable
         lineFreeAt = start + (n * _secondsPerCharacter);
     }
 
-    private void Tap(ReadOnlySpan<byte> bytes, FileStream? oneWayTap)
+    private void Tap(ReadOnlySpan<byte> bytes, PseudoTerminal? oneWayTap)
     {
         lock (_tapGate)
         {
-            _tapInner?.Write(bytes);
+            _tap?.Master.Write(bytes);
         }
 
-        oneWayTap?.Write(bytes);
+        oneWayTap?.Master.Write(bytes);
     }
 
     /// <summary>The PLC's end: reads what the relay hands over (on the relay's thread), writes through to the taps and the host.</summary>
