@@ -17,7 +17,7 @@ namespace OmronHostLink.Cli.Tests;
 /// <remarks>
 /// The session lasts about <c>HOSTLINK_MONITOR_LINE_SECONDS</c> seconds (default 10); the
 /// acceptance run is 600 (docs/field-diagnosis.md). The monitor runs as its own process, as a user runs it, on taps this
-/// process writes directly (<see cref="PseudoTerminal"/>); the host's socat and the line's relay run with real-time
+/// process writes directly (<see cref="PseudoTerminalMaster"/>); the host's socat and the line's relay run with real-time
 /// scheduling where Linux allows it, as the monitor's reader does. The five exchanges furthest from the simulator's
 /// latency are printed with the figures.
 /// </remarks>

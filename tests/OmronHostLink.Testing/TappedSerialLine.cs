@@ -9,7 +9,7 @@ namespace OmronHostLink.Testing;
 /// of a socat pty pair) as any serial port, the PLC (a simulator) is served on <see cref="PlcStream"/>, and everything
 /// either side sends is copied, as it crosses, to a tap port that hears both directions (a half-duplex RS-485 line) and,
 /// if asked, to two that hear one direction each (the receive taps of a full-duplex RS-232 line). A monitor listens on
-/// the taps. Each tap is a <see cref="PseudoTerminal"/> this process writes to directly: a tap's bytes cross one pty
+/// the taps. Each tap is a <see cref="PseudoTerminalMaster"/> this process writes to directly: a tap's bytes cross one pty
 /// and no other process, so a listener hears them when they crossed, not when a relay process next ran.
 /// </summary>
 /// <remarks>
@@ -23,9 +23,9 @@ public sealed class TappedSerialLine : IAsyncDisposable
 {
     private readonly SocatPtyPair _hostPair;
     private readonly FileStream _hostInner;
-    private readonly PseudoTerminal? _tap;
-    private readonly PseudoTerminal? _hostTap;
-    private readonly PseudoTerminal? _plcTap;
+    private readonly PseudoTerminalMaster? _tap;
+    private readonly PseudoTerminalMaster? _hostTap;
+    private readonly PseudoTerminalMaster? _plcTap;
     private readonly object _tapGate = new();
     private readonly double _secondsPerCharacter;
     private readonly Thread _relay;
@@ -44,13 +44,13 @@ public sealed class TappedSerialLine : IAsyncDisposable
         {
             if (bothDirections)
             {
-                _tap = PseudoTerminal.Open();
+                _tap = PseudoTerminalMaster.Open();
             }
 
             if (eachDirection)
             {
-                _hostTap = PseudoTerminal.Open();
-                _plcTap = PseudoTerminal.Open();
+                _hostTap = PseudoTerminalMaster.Open();
+                _plcTap = PseudoTerminalMaster.Open();
             }
         }
         catch
@@ -110,14 +110,23 @@ public sealed class TappedSerialLine : IAsyncDisposable
     }
 
     /// <summary>
-    /// Ends socat (the relay's read ends with it) and the taps (a write to a tap nobody reads ends with them), ends the
-    /// PLC's stream and closes the host's far end. Idempotent.
+    /// Ends socat (the relay's read ends with it), the relay and the taps, ends the PLC's stream and closes the host's far
+    /// end. Idempotent.
     /// </summary>
     public async ValueTask DisposeAsync()
     {
         await _hostPair.CloseAsync().ConfigureAwait(false);
+
+        // A tap whose listener stopped reading may hold the relay in a write: drain the taps until it ends.
+        var patience = Stopwatch.StartNew();
+        while (!_relay.Join(TimeSpan.FromMilliseconds(10)) && patience.Elapsed < TimeSpan.FromSeconds(5))
+        {
+            _tap?.Drain();
+            _hostTap?.Drain();
+            _plcTap?.Drain();
+        }
+
         DisposeTaps();
-        _relay.Join(TimeSpan.FromSeconds(5));
         await _toPlc.Writer.CompleteAsync().ConfigureAwait(false);
         _hostInner.Dispose();
         await _hostPair.DisposeAsync().ConfigureAwait(false);
@@ -202,7 +211,7 @@ public sealed class TappedSerialLine : IAsyncDisposable
         lineFreeAt = start + (n * _secondsPerCharacter);
     }
 
-    private void Tap(ReadOnlySpan<byte> bytes, PseudoTerminal? oneWayTap)
+    private void Tap(ReadOnlySpan<byte> bytes, PseudoTerminalMaster? oneWayTap)
     {
         lock (_tapGate)
         {

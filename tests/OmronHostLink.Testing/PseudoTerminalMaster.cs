@@ -12,19 +12,20 @@ namespace OmronHostLink.Testing;
 /// </summary>
 /// <remarks>
 /// The terminal is put in raw mode, without echo, before anyone else opens it, and this process keeps it open, so bytes
-/// written before its reader sets its own mode are neither echoed nor lost to a hang-up. Writes block while the
-/// terminal's buffer is full (about 64 KiB nobody has read); <see cref="Dispose"/> ends such a write with an
-/// <see cref="IOException"/>.
+/// written before its reader sets its own mode are neither echoed nor lost to a hang-up. A write blocks while the
+/// terminal's buffer is full (its reader has stopped reading), and neither closing the terminal nor the master ends it:
+/// <see cref="Drain"/> reads what is waiting, so the write goes on.
 /// </remarks>
-public sealed class PseudoTerminal : IDisposable
+public sealed class PseudoTerminalMaster : IDisposable
 {
     private const int ReadWrite = 0x2;
     private const int NoControllingTerminal = 0x100;
+    private const int NonBlocking = 0x800;
     private const int SetNow = 0;
 
     private readonly SafeFileHandle _device;
 
-    private PseudoTerminal(FileStream master, SafeFileHandle device, string path)
+    private PseudoTerminalMaster(FileStream master, SafeFileHandle device, string path)
     {
         Master = master;
         _device = device;
@@ -39,7 +40,7 @@ public sealed class PseudoTerminal : IDisposable
 
     /// <summary>Makes a pseudo-terminal in raw mode.</summary>
     /// <exception cref="Win32Exception">The system refused one of the steps (the message names it).</exception>
-    public static PseudoTerminal Open()
+    public static PseudoTerminalMaster Open()
     {
         var master = new SafeFileHandle(Check(OpenMaster(ReadWrite | NoControllingTerminal), "posix_openpt"), ownsHandle: true);
         SafeFileHandle? device = null;
@@ -55,12 +56,12 @@ public sealed class PseudoTerminal : IDisposable
             }
 
             string path = Encoding.ASCII.GetString(name, 0, Array.IndexOf(name, (byte)0));
-            device = new SafeFileHandle(Check(OpenDevice(path, ReadWrite | NoControllingTerminal), "open " + path), ownsHandle: true);
+            device = new SafeFileHandle(Check(OpenDevice(path, ReadWrite | NoControllingTerminal | NonBlocking), "open " + path), ownsHandle: true);
             var termios = new byte[256];
             Check(GetAttributes(device, termios), "tcgetattr");
             MakeRaw(termios);
             Check(SetAttributes(device, SetNow, termios), "tcsetattr");
-            return new PseudoTerminal(new FileStream(master, FileAccess.Write, bufferSize: 0), device, path);
+            return new PseudoTerminalMaster(new FileStream(master, FileAccess.Write, bufferSize: 0), device, path);
         }
         catch
         {
@@ -70,7 +71,16 @@ public sealed class PseudoTerminal : IDisposable
         }
     }
 
-    /// <summary>Closes the terminal: a reader's port hangs up and a write blocked on a full buffer fails.</summary>
+    /// <summary>Reads and drops whatever is waiting to be read from the terminal, without waiting for more.</summary>
+    public void Drain()
+    {
+        var buffer = new byte[4096];
+        while (ReadDevice(_device, buffer, (nuint)buffer.Length) > 0)
+        {
+        }
+    }
+
+    /// <summary>Closes the terminal and the master: a reader's port hangs up.</summary>
     public void Dispose()
     {
         _device.Dispose();
@@ -94,6 +104,9 @@ public sealed class PseudoTerminal : IDisposable
 
     [DllImport("libc", EntryPoint = "open", SetLastError = true)]
     private static extern int OpenDevice([MarshalAs(UnmanagedType.LPStr)] string path, int flags);
+
+    [DllImport("libc", EntryPoint = "read", SetLastError = true)]
+    private static extern nint ReadDevice(SafeFileHandle device, byte[] buffer, nuint count);
 
     [DllImport("libc", EntryPoint = "tcgetattr", SetLastError = true)]
     private static extern int GetAttributes(SafeFileHandle device, byte[] termios);
