@@ -11,10 +11,10 @@ namespace OmronHostLink.Testing;
 /// cross one pty and no other process, so they reach the reader as soon as the kernel hands them over.
 /// </summary>
 /// <remarks>
-/// The terminal is put in raw mode, without echo, before anyone else opens it, and this process keeps it open, so bytes
-/// written before its reader sets its own mode are neither echoed nor lost to a hang-up. A write blocks while the
-/// terminal's buffer is full (its reader has stopped reading), and neither closing the terminal nor the master ends it:
-/// <see cref="Drain"/> reads what is waiting, so the write goes on.
+/// The terminal is put in raw mode, without echo, before anyone else opens it, so bytes written before its reader sets
+/// its own mode are not echoed back. A write blocks while the terminal's buffer is full (its reader has stopped reading),
+/// and closing the terminal does not end it: <see cref="Drain"/>, on a descriptor of the terminal this process keeps,
+/// reads what is waiting, so the write goes on.
 /// </remarks>
 public sealed class PseudoTerminalMaster : IDisposable
 {
