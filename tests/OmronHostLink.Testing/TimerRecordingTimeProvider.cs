@@ -11,6 +11,7 @@ namespace OmronHostLink.Testing;
 public sealed class TimerRecordingTimeProvider : FakeTimeProvider
 {
     private readonly ConcurrentQueue<TimeSpan> _armed = new();
+    private long _unrunTicks;
 
     /// <summary>Every due time armed so far, in order (infinite ones left out).</summary>
     public IReadOnlyList<TimeSpan> Armed => _armed.ToArray();
@@ -26,6 +27,17 @@ public sealed class TimerRecordingTimeProvider : FakeTimeProvider
 
         return timer;
     }
+
+    /// <summary>
+    /// Moves the timestamp clock forward by <paramref name="delta"/> without running the timers due meanwhile: a busy host,
+    /// where the code reads the later time before a due timer's callback has run. Those timers run at the next
+    /// <see cref="FakeTimeProvider.Advance"/> that reaches them on the fake clock, which this does not move.
+    /// </summary>
+    public void AdvanceWithoutTimers(TimeSpan delta) => Interlocked.Add(ref _unrunTicks, delta.Ticks);
+
+    /// <inheritdoc/>
+    public override long GetTimestamp()
+        => base.GetTimestamp() + (Interlocked.Read(ref _unrunTicks) * TimestampFrequency / TimeSpan.TicksPerSecond);
 
     /// <summary>Waits until <paramref name="count"/> timers with a finite due time have been armed (created with one).</summary>
     public Task ArmedAsync(int count) => Eventually.UntilAsync(() => _armed.Count >= count, $"{count} timers are armed on the fake clock");

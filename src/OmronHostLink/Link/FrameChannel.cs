@@ -380,11 +380,20 @@ internal sealed class FrameChannel : IValueTaskSource<bool>
             {
                 ThrowIfAbortedLocked();
                 ThrowIfCancelledLocked();
-                taken = echo.IsEmpty ? _received.TakeFrame(expectStart, _frame, out error) : _received.TakeEcho(echo.Span, out error);
-                FrameArrivedAt = _receivedAt;
+                // Bytes that came after the deadline are left in the buffer: the resynchronisation that follows a timeout
+                // discards them and settles what they answer.
+                bool late = ArrivedAfterDeadlineLocked();
+                taken = 0;
+                error = null;
+                if (!late)
+                {
+                    taken = echo.IsEmpty ? _received.TakeFrame(expectStart, _frame, out error) : _received.TakeEcho(echo.Span, out error);
+                    FrameArrivedAt = _receivedAt;
+                }
+
                 if (taken == 0 && error is null)
                 {
-                    if (_deadlinePassed)
+                    if (_deadlinePassed || late)
                     {
                         error = new HostLinkTimeoutException(
                             echo.IsEmpty ? $"No answer from {_description} within {timeout.TotalMilliseconds:0} ms." : $"The line did not echo our frame (LocalEcho is on) within {timeout.TotalMilliseconds:0} ms.",
@@ -425,6 +434,14 @@ internal sealed class FrameChannel : IValueTaskSource<bool>
             await new ValueTask<bool>(this, _waiter.Version).ConfigureAwait(false);
         }
     }
+
+    /// <summary>
+    /// Whether bytes arrived after the frame's deadline by the link's clock. A frame is judged by when its bytes came,
+    /// not by when the deadline's timer callback ran: on a busy host the callback can run after bytes that came later,
+    /// and an answer after the deadline is a timeout however soon the link gets to it.
+    /// </summary>
+    private bool ArrivedAfterDeadlineLocked()
+        => _deadlineTimeout >= TimeSpan.Zero && _receivedAt > _deadlineArmedAt && _time.GetElapsedTime(_deadlineArmedAt, _receivedAt) > _deadlineTimeout;
 
     private void ArmDeadline(TimeSpan timeout)
     {

@@ -106,4 +106,43 @@ public sealed class LinkDeadlineTests
         var e = await FluentActions.Awaiting(() => next).Should().ThrowAsync<HostLinkTimeoutException>();
         e.Which.InnerException!.Message.Should().Contain("TS check", "the link fences after a cancelled exchange");
     });
+
+    [Fact]
+    public Task An_answer_that_came_after_its_deadline_is_a_timeout_even_before_the_deadline_timer_has_run() => OffContext(async () =>
+    {
+        const string Ms = "@00MS5E*\r";
+        byte[] answer = System.Text.Encoding.ASCII.GetBytes(TestFrames.Final("@00MS00" + "0000"));
+        var time = new TimerRecordingTimeProvider();
+        (Stream host, Stream plcEnd) = InMemoryLink.CreatePair();
+        await using var plc = new ScriptedPlc(plcEnd, f => f == Ms ? Reply.None : null); // MS answered below; TS echoed
+        await using var client = HostLinkClient.ForStream(host, new HostLinkClientOptions
+        {
+            LineTiming = Timing,
+            TurnaroundAllowance = Allowance,
+            ReadRetries = 0,
+            TimeProvider = time,
+        });
+
+        // The link's clock runs on while its timers wait (a busy host): only when the answer came decides.
+        Task<PlcStatus> onTime = client.ReadStatusAsync();
+        await Eventually.UntilAsync(() => plc.ReceivedCount(f => f == Ms) == 1, "the PLC received the first MS");
+        time.AdvanceWithoutTimers(StatusDeadline - TimeSpan.FromMilliseconds(1));
+        await plcEnd.WriteAsync(answer);
+        (await onTime).Mode.Should().Be(PlcMode.Program, "the answer came 1 ms before its deadline");
+
+        Task<PlcStatus> late = client.ReadStatusAsync();
+        await Eventually.UntilAsync(() => plc.ReceivedCount(f => f == Ms) == 2, "the PLC received the second MS");
+        time.AdvanceWithoutTimers(StatusDeadline + TimeSpan.FromMilliseconds(1));
+        await plcEnd.WriteAsync(answer);
+        var e = await FluentActions.Awaiting(() => late).Should().ThrowAsync<HostLinkTimeoutException>("the answer came 1 ms after its deadline");
+        e.Which.Message.Should().Contain("No answer");
+
+        // The late answer was left for the fence before the next command to discard: it is not taken for that command's.
+        Task<PlcStatus> next = client.ReadStatusAsync();
+        await Eventually.UntilAsync(() => plc.ReceivedCount(f => f == Ms) == 3, "the PLC received the third MS");
+        plc.Received.Should().Contain(f => f.StartsWith("@00TS", StringComparison.Ordinal), "the link fenced after the timeout");
+        next.IsCompleted.Should().BeFalse("the late answer was discarded by the fence");
+        await plcEnd.WriteAsync(answer);
+        (await next).Mode.Should().Be(PlcMode.Program);
+    });
 }
