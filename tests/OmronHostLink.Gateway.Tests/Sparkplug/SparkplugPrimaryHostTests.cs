@@ -61,7 +61,9 @@ public sealed class SparkplugPrimaryHostTests(ITestOutputHelper output, TahuCode
         ((string?)Metric(await DecodeAsync(app, NBirth), "bdSeq")["value"]).Should().Be("0");
         Value(await DecodeAsync(app, Device("DBIRTH", "plc-0")), "level").Should().Be("6", "the birth carries the value read while the host was away");
         logs.WithEvent(HostOnline).Should().ContainSingle();
-        host.Services.GetRequiredService<SparkplugEdgeNode>().IsOnline.Should().BeTrue();
+        // The node counts itself online once its births are published, which can be after the subscriber has received them.
+        SparkplugEdgeNode edgeNode = host.Services.GetRequiredService<SparkplugEdgeNode>();
+        await MqttGatewayConfig.Eventually(() => edgeNode.IsOnline, "the node is online once its births are published", logs);
     }
 
     [Fact]
@@ -137,7 +139,9 @@ public sealed class SparkplugPrimaryHostTests(ITestOutputHelper output, TahuCode
 
         await app.WaitUntilAsync(ms => Has(ms, NBirth) && Has(ms, Device("DBIRTH", "plc-0")), "the births follow ONLINE");
         logs.WithEvent(HostOnline).Should().ContainSingle();
-        host.Services.GetRequiredService<SparkplugEdgeNode>().IsOnline.Should().BeTrue();
+        // The node counts itself online once its births are published, which can be after the subscriber has received them.
+        SparkplugEdgeNode edgeNode = host.Services.GetRequiredService<SparkplugEdgeNode>();
+        await MqttGatewayConfig.Eventually(() => edgeNode.IsOnline, "the node is online once its births are published", logs);
 
         await app.PublishAsync("STATE/" + hostId, "OFFLINE", retain: true);
 
